@@ -1,0 +1,1 @@
+"""EzSkiROS: ontology-typed SkiROS2 skill descriptions with early checks."""

@@ -1,0 +1,1 @@
+"""The EzSkiROS DSL: kind markers, symbolic parameters, condition expressions, tracing."""

@@ -1,0 +1,1 @@
+"""The ontology: loading (rdflib), the index of classes and properties, and prefix namespaces."""
