@@ -1,0 +1,1 @@
+"""The codemod's machinery: IR, name resolution, rule registry, replay, writing code."""

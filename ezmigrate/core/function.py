@@ -1,0 +1,203 @@
+"""Build the EzSkiROS ``description`` method that replaces a legacy ``createDescription``.
+
+Layout follows the paper (one parameter per line, aligned under the opening parenthesis).
+The method is assembled from libcst nodes around the original ones: the original ``def``
+keeps its leading comments and header, kept statements and the docstring are the original
+nodes, and the comments of each legacy statement move with what replaces it (onto the
+parameter in the signature, or onto the ``+=`` line).
+"""
+
+from __future__ import annotations
+
+import keyword
+import re
+
+import libcst as cst
+
+from ..rules.add_param import annotation
+from ..rules.condition_lists import condition_statement
+from .ir import (
+    AddCondition,
+    CommentOnly,
+    Comments,
+    CondSpec,
+    ElementValue,
+    ExtractedSkill,
+    KeptStatement,
+    ParamOp,
+)
+from .writer import EmitContext
+
+ALIGN = " " * len("def description(")
+ROBOT = "Robot"
+
+
+def referenced_keys(spec: CondSpec) -> list[str]:
+    """Every key a condition (and its children) mentions."""
+    keys = [k for k in (spec.subject, spec.object) if k is not None]
+    for child in spec.children:
+        keys += referenced_keys(child)
+    return keys
+
+
+def with_automatic_robot(skill: ExtractedSkill) -> list[ParamOp]:
+    """The parameters, plus SkiROS2's automatic ``Robot`` when conditions use it undeclared.
+
+    ``Robot: INFERRED[sumo.Agent]`` as the last parameter is exactly what
+    ``generateDefParams`` appends (legacy-skiros2-api.md §8.1), so the model is unchanged.
+    """
+    params = skill.params()
+    declared = {op.key for op in params}
+    used = {k for add in skill.conditions() for k in referenced_keys(add.condition)}
+    if ROBOT in used and ROBOT not in declared:
+        params = [*params, ParamOp(ROBOT, ElementValue("sumo:Agent"), "Inferred", [], None, 0)]
+    return params
+
+
+def _identifier(key: str) -> str:
+    name = re.sub(r"\W+", "_", key).strip("_") or "param"
+    if name[0].isdigit():
+        name = "_" + name
+    return name + "_" if keyword.iskeyword(name) else name
+
+
+def assign_names(params: list[ParamOp], ctx: EmitContext) -> list[str]:
+    """One Python name per parameter; the first declaration of a key names the key."""
+    taken = set(ctx.reserved)
+    names: list[str] = []
+    for op in params:
+        usable = op.key.isidentifier() and not keyword.iskeyword(op.key) and op.key not in taken
+        name = op.key if usable else _identifier(op.key)
+        base, counter = name, 2
+        while name in taken:
+            name = f"{base}_{counter}"
+            counter += 1
+        taken.add(name)
+        names.append(name)
+        ctx.param_names.setdefault(op.key, name)
+    return names
+
+
+def _comment_lines(comments: Comments, indent_ws: str) -> list[cst.EmptyLine]:
+    texts = [line.comment.value for line in comments.leading if line.comment is not None]
+    return [cst.EmptyLine(indent=True, whitespace=cst.SimpleWhitespace(indent_ws),
+                          comment=cst.Comment(text)) for text in texts + comments.inner]
+
+
+def _line_break(comment: cst.Comment | None, lines: list[cst.EmptyLine]) -> cst.ParenthesizedWhitespace:
+    return cst.ParenthesizedWhitespace(
+        first_line=cst.TrailingWhitespace(
+            whitespace=cst.SimpleWhitespace("  " if comment else ""), comment=comment),
+        empty_lines=lines, indent=True, last_line=cst.SimpleWhitespace(ALIGN))
+
+
+def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[str],
+                     ctx: EmitContext) -> tuple[cst.Parameters, cst.Comment | None]:
+    """The signature; also returns the last parameter's end-of-line comment (for the header).
+
+    Each comma carries the line break before the next item together with that item's
+    comments, and the end-of-line comment of the item it follows.
+    """
+    self_param = func.params.params[0].with_changes(comma=cst.MaybeSentinel.DEFAULT)
+    entries: list[tuple[cst.Param, Comments]] = []
+    for op, name in zip(params, names):
+        annotation_text, default = annotation(op, name, ctx)
+        entries.append((cst.Param(
+            name=cst.Name(name),
+            annotation=cst.Annotation(cst.parse_expression(annotation_text)),
+            equal=cst.AssignEqual() if default is not None else cst.MaybeSentinel.DEFAULT,
+            default=cst.parse_expression(default) if default is not None else None),
+            op.comments))
+    star_at = _keyword_only_from([param for param, _ in entries])
+    items: list[tuple[cst.Param | cst.ParamStar, Comments]] = [(self_param, Comments())]
+    for index, entry in enumerate(entries):
+        if index == star_at:
+            items.append((cst.ParamStar(), Comments()))
+        items.append(entry)
+    linked: list[cst.Param | cst.ParamStar] = []
+    for (item, own), (_, following) in zip(items, items[1:]):
+        comma = cst.Comma(whitespace_after=_line_break(own.trailing,
+                                                        _comment_lines(following, ALIGN)))
+        linked.append(item.with_changes(comma=comma))
+    linked.append(items[-1][0])
+    star = next((i for i, item in enumerate(linked) if isinstance(item, cst.ParamStar)), None)
+    positional = [p for p in linked[:star] if isinstance(p, cst.Param)]
+    if star is None:
+        return cst.Parameters(params=positional), items[-1][1].trailing
+    star_node = linked[star]
+    assert isinstance(star_node, cst.ParamStar)
+    kwonly = [p for p in linked[star + 1:] if isinstance(p, cst.Param)]
+    return (cst.Parameters(params=positional, star_arg=star_node, kwonly_params=kwonly),
+            items[-1][1].trailing)
+
+
+def _keyword_only_from(params: list[cst.Param]) -> int | None:
+    """Index of the first defaulted parameter when a non-defaulted one follows it."""
+    first_default = None
+    for index, param in enumerate(params):
+        if param.default is not None and first_default is None:
+            first_default = index
+        elif param.default is None and first_default is not None:
+            return first_default
+    return None
+
+
+def build_body(func: cst.FunctionDef, skill: ExtractedSkill, ctx: EmitContext,
+               config: cst.PartialParserConfig,
+               header_comment: cst.Comment | None) -> cst.IndentedBlock:
+    """The method body: docstring, then conditions and kept statements in legacy order."""
+    statements: list[cst.BaseStatement] = []
+    if skill.docstring is not None:
+        statements.append(skill.docstring)
+    pending: list[cst.EmptyLine] = []
+    for op in skill.operations:
+        if isinstance(op, ParamOp):
+            continue
+        lines = pending + list(op.comments.leading) + [
+            cst.EmptyLine(comment=cst.Comment(text)) for text in op.comments.inner]
+        if isinstance(op, CommentOnly):
+            trailing = [cst.EmptyLine(comment=op.comments.trailing)] if op.comments.trailing \
+                else []
+            pending = lines + trailing
+            continue
+        pending = []
+        trailing_ws = cst.TrailingWhitespace(
+            whitespace=cst.SimpleWhitespace("  " if op.comments.trailing else ""),
+            comment=op.comments.trailing)
+        if isinstance(op, AddCondition):
+            parsed = cst.parse_statement(condition_statement(op, ctx) + "\n", config=config)
+            assert isinstance(parsed, cst.SimpleStatementLine)
+            node: cst.SimpleStatementLine = parsed
+        else:
+            assert isinstance(op, KeptStatement)
+            node = cst.SimpleStatementLine(body=[op.node])
+        statements.append(node.with_changes(leading_lines=lines, trailing_whitespace=trailing_ws))
+    footer = pending + list(skill.footer)
+    if not statements or statements == [skill.docstring]:
+        statements.append(cst.SimpleStatementLine(body=[cst.Pass()], leading_lines=footer))
+        footer = []
+    first = statements[0]
+    if isinstance(first, cst.SimpleStatementLine):
+        leading = list(first.leading_lines)
+        while leading and leading[0].comment is None:
+            leading.pop(0)
+        statements[0] = first.with_changes(leading_lines=leading)
+    original = func.body
+    indent = original.indent if isinstance(original, cst.IndentedBlock) else None
+    header = original.header if isinstance(original, cst.IndentedBlock) else \
+        cst.TrailingWhitespace()
+    if header_comment is not None and header.comment is None:
+        header = header.with_changes(whitespace=cst.SimpleWhitespace("  "),
+                                     comment=header_comment)
+    return cst.IndentedBlock(body=statements, header=header, indent=indent, footer=footer)
+
+
+def build_description(func: cst.FunctionDef, skill: ExtractedSkill, ctx: EmitContext,
+                      config: cst.PartialParserConfig) -> cst.FunctionDef:
+    """The complete ``description`` method for ``skill``."""
+    params = with_automatic_robot(skill)
+    names = assign_names(params, ctx)
+    parameters, last_comment = build_parameters(func, params, names, ctx)
+    body = build_body(func, skill, ctx, config, last_comment)
+    return func.with_changes(name=cst.Name("description"), params=parameters, body=body,
+                             whitespace_before_params=cst.SimpleWhitespace(""))

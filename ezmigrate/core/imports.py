@@ -1,0 +1,195 @@
+"""Imports after migration: ``ezskiros_runtime`` names added once, legacy ones removed when unused.
+
+A legacy import is removed only when nothing left in the module uses its local name
+(implementation classes usually still need ``SkillBase`` or ``ParamTypes``). Comments that
+stood above a removed import move to the statement that takes its place, so banners like
+``# SkiROS2 imports`` survive.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+
+import libcst as cst
+
+from .legacy_names import dotted_name, is_legacy_module
+
+RUNTIME = "ezskiros_runtime"
+ONTOLOGY = "ezskiros_runtime.ontology"
+RUNTIME_ORDER = ("SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY",
+                 "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output")
+
+
+class _Usage(cst.CSTVisitor):
+    """Names loaded anywhere outside import statements."""
+
+    def __init__(self) -> None:
+        self.names: set[str] = set()
+
+    def visit_Import(self, node: cst.Import) -> bool:
+        return False
+
+    def visit_ImportFrom(self, node: cst.ImportFrom) -> bool:
+        return False
+
+    def visit_Name(self, node: cst.Name) -> None:
+        self.names.add(node.value)
+
+
+def used_names(module: cst.Module) -> set[str]:
+    """Every identifier the module mentions outside its imports (a safe over-approximation)."""
+    usage = _Usage()
+    module.visit(usage)
+    return usage.names
+
+
+def module_bindings(module: cst.Module) -> set[str]:
+    """Names bound at module level by anything but an import (for conflict checks)."""
+    bound: set[str] = set()
+    for stmt in module.body:
+        if isinstance(stmt, (cst.ClassDef, cst.FunctionDef)):
+            bound.add(stmt.name.value)
+        elif isinstance(stmt, cst.SimpleStatementLine):
+            for small in stmt.body:
+                targets: list[cst.BaseExpression] = []
+                if isinstance(small, cst.Assign):
+                    targets = [t.target for t in small.targets]
+                elif isinstance(small, (cst.AnnAssign, cst.AugAssign)):
+                    targets = [small.target]
+                for target in targets:
+                    if isinstance(target, cst.Name):
+                        bound.add(target.value)
+    return bound
+
+
+def imported_names(module: cst.Module) -> dict[str, str]:
+    """Local name -> module it is imported from, for every top-level ``from`` import."""
+    found: dict[str, str] = {}
+    for stmt in module.body:
+        if not isinstance(stmt, cst.SimpleStatementLine):
+            continue
+        for small in stmt.body:
+            if isinstance(small, cst.ImportFrom) and small.module is not None \
+                    and not small.relative and not isinstance(small.names, cst.ImportStar):
+                source = dotted_name(small.module) or ""
+                for alias in small.names:
+                    found[_local(alias)] = source
+            elif isinstance(small, cst.Import):
+                for alias in small.names:
+                    found[_local(alias)] = dotted_name(alias.name) or ""
+    return found
+
+
+def _local(alias: cst.ImportAlias) -> str:
+    if alias.asname is not None and isinstance(alias.asname.name, cst.Name):
+        return alias.asname.name.value
+    name = dotted_name(alias.name) or ""
+    return name.split(".")[0]
+
+
+def _prune(small: cst.BaseSmallStatement, used: set[str]) -> cst.BaseSmallStatement | None:
+    """A legacy import without its unused names; ``None`` when nothing is left."""
+    if isinstance(small, cst.ImportFrom):
+        module = dotted_name(small.module) if small.module is not None else None
+        if module is None or small.relative or not is_legacy_module(module) \
+                or isinstance(small.names, cst.ImportStar):
+            return small
+        kept = [a for a in small.names if _local(a) in used]
+        if len(kept) == len(small.names):
+            return small
+        if not kept:
+            return None
+        kept[-1] = kept[-1].with_changes(comma=cst.MaybeSentinel.DEFAULT)
+        return small.with_changes(names=kept, rpar=small.rpar if len(kept) > 1 else None,
+                                  lpar=small.lpar if len(kept) > 1 else None)
+    if isinstance(small, cst.Import):
+        kept_plain = [a for a in small.names
+                      if not is_legacy_module(dotted_name(a.name) or "") or _local(a) in used]
+        if len(kept_plain) == len(small.names):
+            return small
+        if not kept_plain:
+            return None
+        kept_plain[-1] = kept_plain[-1].with_changes(comma=cst.MaybeSentinel.DEFAULT)
+        return small.with_changes(names=kept_plain)
+    return small
+
+
+def _import_line(module: str, names: Sequence[tuple[str, str]],
+                 config: cst.PartialParserConfig) -> cst.SimpleStatementLine:
+    parts = ", ".join(name if alias == name else f"{name} as {alias}" for name, alias in names)
+    parsed = cst.parse_statement(f"from {module} import {parts}\n", config=config)
+    assert isinstance(parsed, cst.SimpleStatementLine)
+    return parsed
+
+
+def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
+                   prefixes: Iterable[tuple[str, str]]) -> cst.Module:
+    """Add the runtime and namespace imports, drop legacy imports nothing uses any more.
+
+    ``runtime`` and ``prefixes`` hold ``(name, local alias)`` pairs. The new imports go where the first
+    legacy import was (or after the last top-level import, or after the docstring).
+    """
+    used = used_names(module)
+    existing = imported_names(module)
+    order = {name: i for i, name in enumerate(RUNTIME_ORDER)}
+    wanted = sorted({pair for pair in runtime if existing.get(pair[1]) != RUNTIME},
+                    key=lambda pair: order.get(pair[0], len(order)))
+    spaces = sorted(pair for pair in set(prefixes) if existing.get(pair[1]) != ONTOLOGY)
+    config = module.config_for_parsing
+    additions = ([_import_line(RUNTIME, wanted, config)] if wanted else []) + (
+        [_import_line(ONTOLOGY, spaces, config)] if spaces else [])
+
+    body: list[cst.BaseStatement] = []
+    anchor: int | None = None
+    carried: list[cst.EmptyLine] = []
+    last_import: int | None = None
+    for stmt in module.body:
+        if isinstance(stmt, cst.SimpleStatementLine) and all(
+                isinstance(s, (cst.Import, cst.ImportFrom)) for s in stmt.body):
+            is_legacy = any(_is_legacy_import(s) for s in stmt.body)
+            kept = [k for k in (_prune(s, used) for s in stmt.body) if k is not None]
+            if is_legacy and anchor is None:
+                anchor = len(body) + (1 if kept else 0)
+                if not kept and additions:  # our import takes its place and its comments
+                    additions[0] = additions[0].with_changes(leading_lines=stmt.leading_lines)
+                    continue
+            if not kept:
+                carried += list(stmt.leading_lines)
+                continue
+            stmt = stmt.with_changes(body=_fix_semicolons(kept))
+            last_import = len(body)
+        if carried:
+            stmt = stmt.with_changes(leading_lines=carried + list(stmt.leading_lines))
+            carried = []
+        body.append(stmt)
+    if not additions:
+        return module.with_changes(body=body)
+    if anchor is None:
+        anchor = last_import + 1 if last_import is not None else _after_docstring(body)
+    return module.with_changes(body=body[:anchor] + additions + body[anchor:])
+
+
+def _fix_semicolons(kept: list[cst.BaseSmallStatement]) -> list[cst.BaseSmallStatement]:
+    if kept:
+        kept[-1] = kept[-1].with_changes(semicolon=cst.MaybeSentinel.DEFAULT)
+    return kept
+
+
+def _is_legacy_import(small: cst.BaseSmallStatement) -> bool:
+    if isinstance(small, cst.ImportFrom) and small.module is not None and not small.relative:
+        return is_legacy_module(dotted_name(small.module) or "")
+    if isinstance(small, cst.Import):
+        return any(is_legacy_module(dotted_name(a.name) or "") for a in small.names)
+    return False
+
+
+def _after_docstring(body: list[cst.BaseStatement]) -> int:
+    index = 0
+    if body and isinstance(body[0], cst.SimpleStatementLine) and isinstance(
+            body[0].body[0], cst.Expr) and isinstance(body[0].body[0].value, cst.SimpleString):
+        index = 1
+    while index < len(body) and isinstance(body[index], cst.SimpleStatementLine) and any(
+            isinstance(s, cst.ImportFrom) and s.module is not None
+            and dotted_name(s.module) == "__future__" for s in body[index].body):  # type: ignore[attr-defined]
+        index += 1
+    return index

@@ -1,0 +1,151 @@
+"""Which local names of a module mean which part of the legacy SkiROS2 API.
+
+Legacy files import the API in many styles (legacy-skiros2-api.md §1): plain, aliased, as a
+module (``import skiros2_common.core.params as params``) or re-exported from
+``skiros2_skill.core.skill``. Every rule asks this one resolver instead of matching names.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+import libcst as cst
+
+LEGACY_EXPORTS: dict[str, frozenset[str]] = {
+    "skiros2_common.core.abstract_skill": frozenset({"SkillDescription", "ParamOptions"}),
+    "skiros2_skill.core.skill": frozenset(
+        {"SkillDescription", "ParamOptions", "SkillBase", "ParamTypes", "Element"}),
+    "skiros2_common.core.params": frozenset({"ParamTypes", "Param", "ParamHandler"}),
+    "skiros2_common.core.world_element": frozenset({"Element"}),
+    "skiros2_common.core.conditions": frozenset({
+        "ConditionRelation", "AbstractConditionRelation", "ConditionProperty",
+        "ConditionHasProperty", "ConditionIsSpecified", "ConditionGenerate", "ConditionOnType",
+        "ConditionOr", "ConditionFunction"}),
+    "skiros2_common.core.primitive": frozenset({"PrimitiveBase"}),
+}
+LEGACY_ROOTS = ("skiros2_common", "skiros2_skill")
+
+
+def dotted_name(node: cst.BaseExpression) -> str | None:
+    """``a.b.c`` as text for a Name/Attribute chain, else ``None``."""
+    if isinstance(node, cst.Name):
+        return node.value
+    if isinstance(node, cst.Attribute):
+        base = dotted_name(node.value)
+        return None if base is None else f"{base}.{node.attr.value}"
+    return None
+
+
+def _import_name(node: cst.BaseExpression) -> str:
+    name = dotted_name(node)
+    assert name is not None
+    return name
+
+
+def is_legacy_module(module: str) -> bool:
+    """True for ``skiros2_common...`` / ``skiros2_skill...`` modules."""
+    return module.split(".")[0] in LEGACY_ROOTS
+
+
+class LegacyNames:
+    """Resolves expressions like ``PT.Required`` to ``("ParamTypes", "Required")``.
+
+    Built once per module from its top-level imports (and imports anywhere, since legacy
+    files sometimes import inside ``try`` blocks).
+    """
+
+    def __init__(self) -> None:
+        self.symbols: dict[str, str] = {}
+        self.modules: dict[str, str] = {}
+
+    @classmethod
+    def of_module(cls, module: cst.Module) -> LegacyNames:
+        names = cls()
+        visitor = _ImportCollector(names)
+        module.visit(visitor)
+        return names
+
+    def add_from_import(self, module: str, aliases: Iterable[tuple[str, str]] | None) -> None:
+        """Record ``from module import name as alias`` (``aliases`` None means ``*``)."""
+        exported = LEGACY_EXPORTS.get(module)
+        if exported is None:
+            return
+        if aliases is None:
+            for name in exported:
+                self.symbols[name] = name
+            return
+        for name, alias in aliases:
+            if name in exported:
+                self.symbols[alias] = name
+            elif f"{module}.{name}" in LEGACY_EXPORTS:
+                self.modules[alias] = f"{module}.{name}"
+
+    def add_import(self, module: str, alias: str | None) -> None:
+        """Record ``import module [as alias]``."""
+        if not is_legacy_module(module):
+            return
+        if alias is not None:
+            self.modules[alias] = module
+        else:
+            root = module.split(".")[0]
+            self.modules[root] = root
+
+    def symbol(self, node: cst.BaseExpression) -> str | None:
+        """The legacy API symbol (``"ParamTypes"``, ``"Element"``) an expression names."""
+        name = dotted_name(node)
+        if name is None:
+            return None
+        if name in self.symbols:
+            return self.symbols[name]
+        head, _, attr = name.rpartition(".")
+        if head:
+            module = self._module(head)
+            if module is not None and attr in LEGACY_EXPORTS.get(module, ()):
+                return attr
+        return None
+
+    def member(self, node: cst.BaseExpression, symbol: str) -> str | None:
+        """For ``PT.Required`` with ``symbol="ParamTypes"``: ``"Required"``."""
+        if isinstance(node, cst.Attribute) and self.symbol(node.value) == symbol:
+            return node.attr.value
+        return None
+
+    def _module(self, dotted: str) -> str | None:
+        head, *rest = dotted.split(".")
+        base = self.modules.get(head)
+        if base is None:
+            return None
+        return ".".join([base, *rest])
+
+    def local_names_for(self, symbol: str) -> set[str]:
+        """Every local name bound directly to ``symbol``."""
+        return {alias for alias, sym in self.symbols.items() if sym == symbol}
+
+
+class _ImportCollector(cst.CSTVisitor):
+    def __init__(self, names: LegacyNames) -> None:
+        self.names = names
+
+    def visit_Import(self, node: cst.Import) -> None:
+        for alias in node.names:
+            asname = alias.asname
+            local = None
+            if asname is not None and isinstance(asname.name, cst.Name):
+                local = asname.name.value
+            self.names.add_import(_import_name(alias.name), local)
+
+    def visit_ImportFrom(self, node: cst.ImportFrom) -> None:
+        if node.module is None or node.relative:
+            return
+        module = _import_name(node.module)
+        if isinstance(node.names, cst.ImportStar):
+            self.names.add_from_import(module, None)
+            return
+        pairs = []
+        for alias in node.names:
+            name = _import_name(alias.name)
+            local = name
+            if alias.asname is not None and isinstance(alias.asname.name, cst.Name):
+                local = alias.asname.name.value
+            pairs.append((name, local))
+        self.names.add_from_import(module, pairs)

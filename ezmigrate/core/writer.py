@@ -1,0 +1,101 @@
+"""What emission rules consult: which names to import, how a key or a term is spelled.
+
+The short forms (``Object: skiros.Product``, ``A.contain(B)``) are used only when the
+ontology given to the migration knows the term under exactly that prefix and, for a
+relation, under no other prefix; otherwise the verbatim string forms are written
+(``ELEMENT(":Location")``, ``A.relation("turtlebot:docked", B)``), which lower to the same
+legacy strings whatever ontology is loaded later. Meaning never depends on the ontology.
+"""
+
+from __future__ import annotations
+
+import json
+import keyword
+import re
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.ontology.index import OntologyIndex
+
+SYMBOL_METHODS = frozenset(
+    {"relation", "property", "has", "is_specified", "generated", "is_a", "named", "key"})
+"""Methods of a symbolic parameter: never usable as a short relation/property name."""
+
+DSL_NAMES = frozenset({
+    "SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "abstract",
+    "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output"})
+
+_QNAME = re.compile(r"([A-Za-z][A-Za-z0-9_]*):([A-Za-z][A-Za-z0-9_]*)\Z")
+
+
+def quote(text: str) -> str:
+    """A double-quoted Python string literal for ``text``."""
+    return json.dumps(text, ensure_ascii=False)
+
+
+@dataclass
+class EmitContext:
+    """Per-skill emission state: key names, and what the file must import."""
+
+    index: OntologyIndex | None
+    self_name: str = "self"
+    param_names: dict[str, str] = field(default_factory=dict)
+    runtime_names: set[str] = field(default_factory=set)
+    prefixes: set[str] = field(default_factory=set)
+    reserved: set[str] = field(default_factory=set)
+    aliases: dict[str, str] = field(default_factory=dict)
+
+    def use(self, name: str) -> str:
+        """Note that ``name`` must be imported from ``ezskiros_runtime``; its local name."""
+        self.runtime_names.add(name)
+        return self.aliases.get(name, name)
+
+    def namespace(self, prefix: str) -> str:
+        """Note that the namespace ``prefix`` must be imported; its local name."""
+        self.prefixes.add(prefix)
+        return self.aliases.get(prefix, prefix)
+
+    def subject(self, key: str) -> str:
+        """The expression for a key inside ``description``: its parameter, else ``self.param``."""
+        name = self.param_names.get(key)
+        return name if name is not None else f"{self.self_name}.param({quote(key)})"
+
+    def _qname(self, text: str) -> tuple[str, str, str] | None:
+        """``(prefix, local, iri)`` when ``text`` is a plain ``prefix:Local`` the index knows."""
+        match = _QNAME.match(text)
+        if match is None or self.index is None:
+            return None
+        prefix, local = match.groups()
+        if keyword.iskeyword(prefix) or keyword.iskeyword(local):
+            return None
+        if prefix not in self.index.prefixes:
+            return None
+        iri = self.index.expand(text)
+        return None if iri is None else (prefix, local, iri)
+
+    def class_ref(self, type_string: str) -> str | None:
+        """``skiros.Product`` for ``"skiros:Product"`` when the ontology has that class."""
+        found = self._qname(type_string)
+        if found is None or not self.index or not self.index.is_class(found[2]):
+            return None
+        return f"{self.namespace(found[0])}.{found[1]}"
+
+    def property_ref(self, vocabulary: str) -> str | None:
+        """``skiros.Position`` for a property the ontology has under that prefix."""
+        found = self._qname(vocabulary)
+        if found is None or not self.index or self.index.property(found[2]) is None:
+            return None
+        return f"{self.namespace(found[0])}.{found[1]}"
+
+    def short_property(self, vocabulary: str) -> str | None:
+        """``contain`` for ``"skiros:contain"`` when that local name is unambiguous."""
+        found = self._qname(vocabulary)
+        if found is None or not self.index:
+            return None
+        prefix, local, iri = found
+        if local in SYMBOL_METHODS or local.startswith("_"):
+            return None
+        if self.index.property(iri) is None or self.index.properties_named(local) != [iri]:
+            return None
+        return local

@@ -1,0 +1,71 @@
+"""Findings about a skill that migration keeps as they were, for the reviewer's attention.
+
+Equivalence says the migrated skill means what the legacy one meant; these say where that
+meaning is probably not what the author intended (a condition on a key nobody declares,
+vocabulary no loaded ontology defines, an Element type spelt without its prefix).
+"""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING
+
+from ezskiros_runtime.model import Condition, SkillModel
+
+from .results import Finding
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.ontology.index import OntologyIndex
+
+_CANONICAL = re.compile(r"[A-Za-z][\w.-]*:[A-Za-z_][\w.-]*\Z")
+
+
+def _walk(conditions: tuple[Condition, ...]) -> list[Condition]:
+    out: list[Condition] = []
+    for c in conditions:
+        out.append(c)
+        out += _walk(c.children)
+    return out
+
+
+def skill_findings(model: SkillModel, index: OntologyIndex | None) -> list[Finding]:
+    """Findings from the static model of one skill (line 0: the skill as a whole)."""
+    found: list[Finding] = []
+    keys = {p.key for p in model.params}
+    conditions = [c for which in ("pre", "hold", "post") for c in _walk(model.conditions(which))]
+    for cond in conditions:
+        for key in (cond.subject, cond.object):
+            if key is not None and key not in keys:
+                found.append(Finding("undeclared-key", 0, f"a {cond.kind} condition "
+                                     f"({cond.label!r}) refers to {key!r}, which no addParam "
+                                     "declares (SkiROS2 accepts this silently)"))
+    types = [p.element_type for p in model.params if p.element_type is not None]
+    for type_string in types:
+        if not _CANONICAL.match(type_string):
+            found.append(Finding("element-type-spelling", 0, f"Element type {type_string!r} is "
+                                 "not written as prefix:Name; SkiROS2 stores it verbatim "
+                                 "(kept as is)"))
+    if index is not None:
+        vocabulary = [(t, "class") for t in types] + [
+            (c.vocabulary, "class" if c.kind == "on_type" else "property")
+            for c in conditions if c.vocabulary and c.kind != "or"]
+        for term, what in vocabulary:
+            iri = index.expand(term)
+            known = iri is not None and (index.is_class(iri) if what == "class"
+                                         else index.property(iri) is not None)
+            if not known and term != "Unknown":
+                hint = index.suggest(term, ("class",) if what == "class" else ("object", "data"))
+                extra = f"; did you mean {', '.join(hint)}?" if hint else ""
+                found.append(Finding("unknown-vocabulary", 0,
+                                     f"{what} {term!r} is not in the loaded ontology{extra}"))
+    return _unique(found)
+
+
+def _unique(findings: list[Finding]) -> list[Finding]:
+    seen: set[tuple[str, str]] = set()
+    out = []
+    for f in findings:
+        if (f.kind, f.message) not in seen:
+            seen.add((f.kind, f.message))
+            out.append(f)
+    return out

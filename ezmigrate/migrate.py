@@ -1,0 +1,253 @@
+"""The pure core: ``migrate(source, settings) -> FileResult``. No I/O, no user code runs.
+
+For each legacy description class: extract its ``createDescription`` into IR (rules in
+``ezmigrate/rules``), replay the IR through the legacy backend in legacy order and in the
+order the EzSkiROS form lowers to (they must give the same model, or the skill is skipped),
+write the ``description`` method, then fix the module's imports. A skill converts whole or
+not at all; a class whose base description was not converted is not converted either.
+"""
+
+from __future__ import annotations
+
+import traceback
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import libcst as cst
+
+from ezskiros_runtime.compare import compare
+from ezskiros_runtime.model import SkillModel
+
+from .core.classes import DescriptionClass, description_classes
+from .core.context import ExtractContext, positions_of
+from .core.function import build_description
+from .core.imports import (
+    ONTOLOGY,
+    RUNTIME,
+    imported_names,
+    module_bindings,
+    update_imports,
+    used_names,
+)
+from .core.ir import ExtractedSkill, Operation, Unsupported
+from .core.legacy_names import LegacyNames, is_legacy_module
+from .core.reader import find_create_description, read_operations, self_parameter
+from .core.registry import load_rules
+from .core.replay import lowered_order, replay
+from .core.writer import DSL_NAMES, EmitContext
+from .findings import skill_findings
+from .results import FileResult, Finding, SkillResult
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.ontology.index import OntologyIndex
+
+PLACEHOLDER = "__ezmigrate_skill_description__"
+DEFAULT_PREFIXES = ("skiros", "sumo", "cora", "corax", "rparts")
+
+
+@dataclass(frozen=True)
+class Settings:
+    """What a migration needs besides the source: the ontology, and the package around it.
+
+    ``index`` decides between short forms (``skiros.Product``) and verbatim forms
+    (``ELEMENT("scalable:Ur5")``). ``external`` maps names of description classes defined in
+    other files of the same package to their operations (for bases imported by name).
+    """
+
+    index: OntologyIndex | None = None
+    external: Mapping[str, list[Operation]] = field(default_factory=dict)
+
+
+@dataclass
+class _Plan:
+    """Per-class outcome while a module is being migrated."""
+
+    cls: DescriptionClass
+    result: SkillResult
+    operations: list[Operation] = field(default_factory=list)
+    new_function: cst.FunctionDef | None = None
+    old_function: cst.FunctionDef | None = None
+    runtime: set[str] = field(default_factory=set)
+    prefixes: set[str] = field(default_factory=set)
+
+
+def migrate(source: bytes | str, settings: Settings | None = None,
+            path: str = "<string>") -> FileResult:
+    """Migrate one module's text. ``result.new_source`` is set only if something changed."""
+    settings = settings or Settings()
+    load_rules()
+    result = FileResult(path=path)
+    try:
+        module = cst.parse_module(source)
+    except cst.ParserSyntaxError as error:
+        result.error = f"cannot parse: {error.message} (line {error.raw_line}, column " \
+                       f"{error.raw_column + 1})"
+        result.error_line = error.raw_line
+        return result
+    except (UnicodeDecodeError, LookupError, SyntaxError) as error:
+        result.error = f"cannot decode: {error}"
+        return result
+    names = LegacyNames.of_module(module)
+    classes = description_classes(module, names, settings.external.keys())
+    if not classes:
+        return result
+    module, positions = positions_of(module)  # same tree: the class nodes stay valid
+    aliases = _aliases(module, settings.index)
+    plans: list[_Plan] = []
+    effective: dict[str, list[Operation]] = dict(settings.external)
+    converted: set[str] = set(settings.external)
+    runtime: set[str] = set()
+    prefixes: set[str] = set()
+    for cls in classes:
+        plan = _plan(cls, module, names, positions, settings, aliases, effective, converted)
+        plans.append(plan)
+        if plan.result.status in ("converted", "unchanged"):
+            converted.add(cls.name)
+            runtime |= plan.runtime
+            prefixes |= plan.prefixes
+    result.skills = [p.result for p in plans]
+    if not any(p.result.status == "converted" for p in plans):
+        return result
+    new_module = _rewrite(module, plans)
+    base_name = "EzSkillDescription" if _legacy_still_used(new_module, names) else \
+        "SkillDescription"
+    runtime_pairs = {(n, aliases.get(n, n)) for n in runtime} | {("SkillDescription", base_name)}
+    new_module = update_imports(new_module, runtime_pairs,
+                                {(p, aliases.get(p, p)) for p in prefixes})
+    new_module = new_module.visit(_Rename(PLACEHOLDER, base_name))
+    try:
+        cst.parse_module(new_module.code)
+    except cst.ParserSyntaxError as error:  # a bug of ours: never write such a file
+        result.error = f"internal error: migrated code does not parse ({error.message})"
+        for skill in result.skills:
+            if skill.status == "converted":
+                skill.status, skill.reason = "failed", result.error
+        return result
+    result.new_source = new_module.bytes if isinstance(source, bytes) else new_module.code
+    return result
+
+
+def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
+          positions: Mapping[cst.CSTNode, object], settings: Settings, aliases: dict[str, str],
+          effective: dict[str, list[Operation]], converted: set[str]) -> _Plan:
+    line = getattr(positions.get(cls.node), "start", None)
+    line_no = line.line if line is not None else 0
+    plan = _Plan(cls, SkillResult(cls.name, line_no, "skipped"))
+    func = find_create_description(cls.node)
+    plan.old_function = func
+    try:
+        if cls.other_bases:
+            raise Unsupported(f"{cls.name} derives from several classes; a migration could "
+                              "change its method resolution order")
+        if cls.base is not None and cls.base not in converted:
+            raise Unsupported(f"its base class {cls.base} was not converted")
+        if func is None:
+            effective[cls.name] = effective.get(cls.base or "", []) if cls.base else []
+            model = replay(cls.name, effective[cls.name])
+            plan.result.model = model.to_json()
+            plan.result.status = "converted" if cls.base is None else "unchanged"
+            return plan
+        skill = ExtractedSkill(cls.name, line_no)
+        ctx = ExtractContext(module=module, names=names, positions=positions, skill=skill,
+                             self_name=self_parameter(func), class_name=cls.name,
+                             base_names=[cls.base] if cls.base else [],
+                             parent_operations=lambda base: effective[base])
+        read_operations(func, ctx)
+        model = _checked_model(cls.name, skill.operations)
+        emit = EmitContext(index=settings.index, self_name=ctx.self_name, aliases=aliases,
+                           reserved=_reserved(func, settings.index, ctx.self_name))
+        plan.new_function = build_description(func, skill, emit, module.config_for_parsing)
+        effective[cls.name] = skill.operations
+        plan.operations = skill.operations
+        plan.result.status = "converted"
+        plan.result.model = model.to_json()
+        plan.result.findings = [Finding(k, ln, m) for k, ln, m in skill.findings] + \
+            skill_findings(model, settings.index)
+        plan.runtime, plan.prefixes = emit.runtime_names, emit.prefixes
+    except Unsupported as unsupported:
+        plan.result.status = "skipped"
+        plan.result.reason = unsupported.reason
+    except Exception as error:  # the legacy backend rejects what SkiROS2 rejects
+        plan.result.status = "skipped"
+        plan.result.reason = f"SkiROS2 would reject this description: {error}"
+        if not isinstance(error, (ValueError, TypeError, KeyError)):
+            plan.result.reason += "\n" + traceback.format_exc(limit=3)
+    return plan
+
+
+def _checked_model(name: str, operations: list[Operation]) -> SkillModel:
+    """The static legacy model; refused when the EzSkiROS lowering order would change it."""
+    legacy = replay(name, operations)
+    lowered = replay(name, lowered_order(operations))
+    differences = compare(legacy, lowered)
+    if differences:
+        raise Unsupported(
+            "ParamOptions expand at the point of addParam, after conditions added earlier; "
+            "EzSkiROS declares all parameters first, which would reorder conditions ("
+            + str(differences[0]).splitlines()[0] + "). Move the addParam calls above the "
+            "conditions by hand if the order does not matter to you, then migrate")
+    return legacy
+
+
+def _reserved(func: cst.FunctionDef, index: OntologyIndex | None, self_name: str) -> set[str]:
+    """Names a parameter must not take because the body of ``description`` uses them."""
+    used: set[str] = set()
+
+    class _Names(cst.CSTVisitor):
+        def visit_Name(self, node: cst.Name) -> None:
+            used.add(node.value)
+
+    func.body.visit(_Names())
+    prefixes = set(index.prefixes) if index is not None else set(DEFAULT_PREFIXES)
+    return used | prefixes | {self_name, "abstract", "any_of"}
+
+
+def _aliases(module: cst.Module, index: OntologyIndex | None) -> dict[str, str]:
+    """Local names for our imports that would clash with names the module already binds."""
+    taken = module_bindings(module) | {
+        local for local, source in imported_names(module).items()
+        if source not in (RUNTIME, ONTOLOGY) and not is_legacy_module(source)}
+    prefixes = set(index.prefixes) if index is not None else set(DEFAULT_PREFIXES)
+    aliases = {}
+    for name in (DSL_NAMES - {"SkillDescription"}) | prefixes:
+        if name in taken:
+            aliases[name] = f"Ez{name}" if name[:1].isupper() else f"{name}_ns"
+    return aliases
+
+
+def _rewrite(module: cst.Module, plans: list[_Plan]) -> cst.Module:
+    """Swap base and method of every converted class (top-level statements, by position)."""
+    by_class = {id(p.cls.node): p for p in plans if p.result.status == "converted"}
+    body: list[cst.BaseStatement] = []
+    for stmt in module.body:
+        plan = by_class.get(id(stmt))
+        if plan is not None:
+            assert isinstance(stmt, cst.ClassDef)
+            stmt = _convert_class(stmt, plan)
+        body.append(stmt)
+    return module.with_changes(body=body)
+
+
+def _convert_class(node: cst.ClassDef, plan: _Plan) -> cst.ClassDef:
+    bases = [arg.with_changes(value=cst.Name(PLACEHOLDER))
+             if arg is plan.cls.base_arg and plan.cls.base is None else arg
+             for arg in node.bases]
+    body = node.body
+    if plan.new_function is not None and isinstance(body, cst.IndentedBlock):
+        body = body.with_changes(body=[
+            plan.new_function if stmt is plan.old_function else stmt for stmt in body.body])
+    return node.with_changes(bases=bases, body=body)
+
+
+def _legacy_still_used(module: cst.Module, names: LegacyNames) -> bool:
+    """Whether unconverted code still needs the legacy ``SkillDescription`` name."""
+    return bool(names.local_names_for("SkillDescription") & used_names(module))
+
+
+class _Rename(cst.CSTTransformer):
+    def __init__(self, old: str, new: str) -> None:
+        self.old, self.new = old, new
+
+    def leave_Name(self, original: cst.Name, updated: cst.Name) -> cst.Name:
+        return updated.with_changes(value=self.new) if updated.value == self.old else updated

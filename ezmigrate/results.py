@@ -1,0 +1,59 @@
+"""Picklable result types that workers return and reports read.
+
+Like LibCST's codemod results: a file is changed, unchanged, or failed with a message, and
+each skill in it is converted, skipped (with a reason a user can act on), failed (with the
+difference or the error), or unchanged. Plain dataclasses of builtins so that they cross
+process boundaries cheaply and serialize to the JSON report directly.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from typing import Any, Literal
+
+SkillStatus = Literal["converted", "skipped", "failed", "unchanged"]
+
+
+@dataclass
+class Finding:
+    """Something a reviewer should see that migration keeps as it was (a latent bug...)."""
+
+    kind: str
+    line: int
+    message: str
+
+    def to_json(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+@dataclass
+class SkillResult:
+    """The verdict on one description class."""
+
+    name: str
+    line: int
+    status: SkillStatus
+    reason: str | None = None
+    findings: list[Finding] = field(default_factory=list)
+    model: dict[str, Any] | None = None
+    equivalent: bool | None = None
+    diff: list[dict[str, Any]] | None = None
+
+
+@dataclass
+class FileResult:
+    """What happened to one file. ``new_source`` is set only when it should change."""
+
+    path: str
+    skills: list[SkillResult] = field(default_factory=list)
+    new_source: bytes | None = None
+    error: str | None = None
+    error_line: int | None = None
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def changed(self) -> bool:
+        return self.new_source is not None
+
+    def count(self, status: str) -> int:
+        return sum(1 for s in self.skills if s.status == status)

@@ -1,0 +1,175 @@
+"""``self.addParam(key, value, param_type, options=[], description="")`` <-> a signature entry.
+
+Legacy (legacy-skiros2-api.md §3, §8)           EzSkiROS (docs/dsl.md)
+``addParam("O", Element("skiros:P"), Required)``  ``O: skiros.P``
+``addParam("S", 0.5, ParamTypes.Optional)``      ``S: OPTIONAL[float] = 0.5``
+``addParam("S", float, 0, "m/s")``               ``S: float``  (quirk: "m/s" lands in options)
+``addParam("C", Element(":Cam"), 2, [Lock])``    ``C: INFERRED[ELEMENT(":Cam"), Lock]``
+``addParam("On/Off", True, Required)``           ``On_Off: REQUIRED[bool, KEY("On/Off")] = True``
+"""
+
+from __future__ import annotations
+
+import libcst as cst
+
+from ..core.context import ExtractContext, bind_arguments
+from ..core.ir import ElementValue, Literal, OpaqueValue, ParamOp, ParamValue, TypeValue, Unsupported
+from ..core.registry import statement_rule
+from ..core.writer import EmitContext, quote
+
+ARGUMENTS = ("key", "value", "param_type", "options", "description")
+KINDS = ("Required", "Optional", "Inferred")
+MARKERS = {"Required": "REQUIRED", "Optional": "OPTIONAL", "Inferred": "INFERRED"}
+OPTIONS = ("Consume", "Unspecify", "Lock", "RespectType", "Output")
+TYPE_OBJECTS = ("float", "int", "str", "bool", "dict", "list", "tuple")
+DEFAULT_TYPES = (bool, int, float, str, dict, tuple)
+
+
+@statement_rule
+def add_param(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[ParamOp] | None:
+    """Read one ``addParam`` call into a ``ParamOp``."""
+    if not isinstance(stmt, cst.Expr) or ctx.self_method(stmt.value) != "addParam":
+        return None
+    call = stmt.value
+    assert isinstance(call, cst.Call)
+    args = bind_arguments(call, ARGUMENTS, 3, "addParam", ctx)
+    line = ctx.line(call)
+    key = ctx.string(args["key"], f"the key of addParam at line {line}")
+    options, options_text = _options(args.get("options"), ctx)
+    description = code = None
+    if "description" in args:
+        description = ctx.string(args["description"], f"the description of {key!r}")
+        code = ctx.code(args["description"]).strip()
+    op = ParamOp(key, _value(args["value"], ctx), _kind(args["param_type"], ctx), options,
+                 description, line, options_text=options_text, description_code=code)
+    _findings(op, ctx)
+    return [op]
+
+
+def _value(node: cst.BaseExpression, ctx: ExtractContext) -> ParamValue:
+    if isinstance(node, cst.Call) and ctx.names.symbol(node.func) == "Element":
+        return _element(node, ctx)
+    if ctx.names.symbol(node) == "Element":
+        raise Unsupported(f"addParam at line {ctx.line(node)} passes the Element class itself; "
+                          "declare an element type, e.g. Element(\"sumo:Object\")", node)
+    if isinstance(node, cst.Name) and node.value in TYPE_OBJECTS and node.value not in ctx.locals:
+        return TypeValue(node.value)
+    literal = ctx.literal(node)
+    if literal is not None:
+        return literal
+    if isinstance(node, (cst.Name, cst.Attribute)):
+        root = node
+        while isinstance(root, cst.Attribute):
+            root = root.value
+        if isinstance(root, cst.Name) and root.value not in (ctx.self_name, *ctx.locals, *ctx.opaque_locals):
+            return OpaqueValue(ctx.code(node).strip())
+    raise Unsupported(f"the value of addParam at line {ctx.line(node)} is "
+                      f"`{ctx.code(node).strip()}`, computed at run time", node)
+
+
+def _element(call: cst.Call, ctx: ExtractContext) -> ElementValue:
+    args = bind_arguments(call, ("etype",), 0, "Element", ctx)
+    if "etype" not in args:
+        return ElementValue("Unknown")
+    return ElementValue(ctx.string(args["etype"], f"the Element type at line {ctx.line(call)}"))
+
+
+def _kind(node: cst.BaseExpression, ctx: ExtractContext) -> str:
+    member = ctx.names.member(node, "ParamTypes")
+    if member in KINDS:
+        return member
+    if member is not None:
+        raise Unsupported(f"ParamTypes.{member} at line {ctx.line(node)} is not upstream "
+                          "SkiROS2 API (a fork's extension)", node)
+    literal = ctx.literal(node)
+    if literal is not None and type(literal.value) is int and 0 <= literal.value < len(KINDS):
+        return KINDS[literal.value]
+    raise Unsupported(f"the parameter type `{ctx.code(node).strip()}` at line {ctx.line(node)} "
+                      "is not ParamTypes.Required/Optional/Inferred", node)
+
+
+def _options(node: cst.BaseExpression | None, ctx: ExtractContext) -> tuple[list[str], str | None]:
+    if node is None:
+        return [], None
+    literal = ctx.literal(node)
+    if literal is not None and isinstance(literal.value, str):
+        return [], literal.value  # SkiROS2 iterates the characters and matches nothing
+    if isinstance(node, (cst.List, cst.Tuple)):
+        names = []
+        for element in node.elements:
+            member = ctx.names.member(element.value, "ParamOptions")
+            if member not in OPTIONS or not isinstance(element, cst.Element):
+                break
+            names.append(member)
+        else:
+            return names, None
+    raise Unsupported(f"the options `{ctx.code(node).strip()}` at line {ctx.line(node)} are not "
+                      "a list of ParamOptions members", node)
+
+
+def _findings(op: ParamOp, ctx: ExtractContext) -> None:
+    if op.options_text is not None:
+        ctx.skill.finding("description-in-options", op.line,
+                          f"addParam({op.key!r}) passes {op.options_text!r} in the options slot:"
+                          " SkiROS2 ignores it and the description stays empty (kept as is; "
+                          "pass it as description=... to fix)")
+    if op.options and not (isinstance(op.value, ElementValue) and not op.value.is_class):
+        ctx.skill.finding("options-ignored", op.line,
+                          f"ParamOptions on {op.key!r} have no effect: SkiROS2 only expands "
+                          "them for Element values (dropped, meaning unchanged)")
+
+
+def annotation(op: ParamOp, python_name: str, ctx: EmitContext) -> tuple[str, str | None]:
+    """The annotation and default source text of a parameter (``None``: no default).
+
+    ``python_name`` is the name the signature gives it; when it is not the key itself
+    (a key that is no identifier, or a key declared twice) a ``KEY(...)`` item says the key.
+    """
+    extras: list[str] = []
+    if op.description:
+        extras.append(op.description_code or quote(op.description))
+    if isinstance(op.value, ElementValue):
+        extras += [ctx.use(o) for o in op.options]
+    if python_name != op.key:
+        extras.append(f"{ctx.use('KEY')}({quote(op.key)})")
+    marker = MARKERS[op.kind]
+    if isinstance(op.value, OpaqueValue):
+        if extras:
+            raise Unsupported(f"parameter {op.key!r} at line {op.line} has a default known "
+                              "only at run time and a description, option or key escape")
+        return ctx.use(marker), op.value.code
+    type_text, default = _type_and_default(op, ctx)
+    if op.kind == "Required" and not extras:
+        return type_text, default
+    return f"{ctx.use(marker)}[{', '.join([type_text, *extras])}]", default
+
+
+def _type_and_default(op: ParamOp, ctx: EmitContext) -> tuple[str, str | None]:
+    value = op.value
+    if isinstance(value, ElementValue):
+        if value.type_string == "Unknown":
+            return f"{ctx.use('ELEMENT')}()", None
+        assert value.type_string is not None
+        ref = ctx.class_ref(value.type_string)
+        return (ref or f"{ctx.use('ELEMENT')}({quote(value.type_string)})"), None
+    if isinstance(value, TypeValue):
+        return value.name, None
+    assert isinstance(value, Literal)
+    return _literal_type(value, op), value.code
+
+
+def _literal_type(value: Literal, op: ParamOp) -> str:
+    items = value.value
+    if isinstance(items, list):
+        if not items:
+            raise Unsupported(f"parameter {op.key!r} at line {op.line} has the default [], "
+                              "which SkiROS2 rejects when the skill loads")
+        first = type(items[0])
+        if first not in DEFAULT_TYPES or any(type(x) is not first for x in items):
+            raise Unsupported(f"parameter {op.key!r} at line {op.line} has a list default of "
+                              "mixed or unsupported types, which SkiROS2 rejects")
+        return f"list[{first.__name__}]"
+    if type(items) not in DEFAULT_TYPES:
+        raise Unsupported(f"parameter {op.key!r} at line {op.line} has a default of type "
+                          f"{type(items).__name__}, which SkiROS2 parameters do not support")
+    return type(items).__name__

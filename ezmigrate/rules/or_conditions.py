@@ -1,0 +1,74 @@
+"""``getOrCond`` + ``addCondition`` <-> ``c1 | c2``.
+
+Legacy (legacy-skiros2-api.md §4, §8.7)         EzSkiROS (docs/dsl.md)
+``o = self.getOrCond(True)``                     ``self.pre_conditions += A.contain(B) | C.at(D)``
+``o.addCondition(self.getRelationCond(...))``
+``o.addCondition(self.getRelationCond(...))``
+``self.addPreCondition(o)``
+``getOrCond(False)``                             ``~(c1 | c2)``
+an or whose first child is itself an or         ``any_of(any_of(c1, c2), c3)`` (no flattening)
+Or-conditions are always labelled "or", so no ``.named`` is ever written for them.
+"""
+
+from __future__ import annotations
+
+import libcst as cst
+
+from ..core.context import ExtractContext, bind_arguments
+from ..core.ir import CommentOnly, CondSpec, Literal, Unsupported
+from ..core.registry import condition_emitter, condition_rule, statement_rule
+from ..core.writer import EmitContext
+from .condition_lists import condition_of, emit_condition, statement_comments
+
+
+@condition_rule
+def or_condition(node: cst.BaseExpression, ctx: ExtractContext) -> CondSpec | None:
+    """``self.getOrCond(desired)`` or ``ConditionOr(desired)``: an empty disjunction."""
+    if not isinstance(node, cst.Call):
+        return None
+    if ctx.self_method(node) != "getOrCond" and ctx.names.symbol(node.func) != "ConditionOr":
+        return None
+    args = bind_arguments(node, ("desired_state",), 0, "getOrCond", ctx)
+    desired = Literal(True, "True")
+    if "desired_state" in args:
+        found = ctx.literal(args["desired_state"])
+        if found is None:
+            raise Unsupported(f"getOrCond at line {ctx.line(node)} has a computed desired state")
+        desired = found
+    return CondSpec(kind="or", label=Literal("or", '"or"'), line=ctx.line(node), desired=desired)
+
+
+@statement_rule
+def add_child(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[CommentOnly] | None:
+    """``o.addCondition(cond)`` on a local or-condition."""
+    if not (isinstance(stmt, cst.Expr) and isinstance(stmt.value, cst.Call)
+            and isinstance(stmt.value.func, cst.Attribute)
+            and stmt.value.func.attr.value == "addCondition"):
+        return None
+    call = stmt.value
+    target = call.func.value  # type: ignore[attr-defined]
+    holder = ctx.locals.get(target.value) if isinstance(target, cst.Name) else None
+    if not isinstance(holder, CondSpec) or holder.kind != "or":
+        raise Unsupported(f"addCondition at line {ctx.line(stmt)} is not called on a local "
+                          "or-condition", stmt)
+    args = bind_arguments(call, ("condition",), 1, "addCondition", ctx)
+    holder.children.append(condition_of(args["condition"], ctx))
+    return [CommentOnly(statement_comments(stmt, ctx))]
+
+
+@condition_emitter("or")
+def emit_or(spec: CondSpec, ctx: EmitContext) -> str:
+    if len(spec.children) < 1:
+        raise Unsupported(f"the or-condition made at line {spec.line} has no children; "
+                          "EzSkiROS has no form for an empty disjunction")
+    children = [emit_condition(child, ctx) for child in spec.children]
+    if spec.children[0].kind == "or" or len(children) == 1:
+        text = f"{ctx.use('any_of')}({', '.join(children)})"
+    else:
+        text = "(" + " | ".join(children) + ")"
+    desired = spec.desired.value if spec.desired is not None else True
+    if desired is True:
+        return text
+    if desired is False:
+        return f"~{text}"
+    raise Unsupported(f"the or-condition at line {spec.line} has desired state {desired!r}")
