@@ -1,6 +1,138 @@
+"""The ``ezmigrate`` command line. It parses options and prints; decisions live elsewhere.
+
+Conventions of black and ruff: diffs and reports go to stdout only when asked, progress and
+the summary to stderr; exit 0 when nothing needs attention, 1 when something does (``--check``
+found changes, a skill was skipped or failed verification, a file could not be processed),
+2 for usage or internal errors.
+"""
+
+from __future__ import annotations
+
+import sys
+import traceback
+from pathlib import Path
+from typing import Any, NoReturn
+
 import click
 
+from . import __version__
+from .config import load_project_config
+from .diffs import colour, unified_diff
+from .report import MarkdownOptions, Summary, json_report, markdown_report
+from .results import FileResult
+from .session import RewriteOptions, run_rewrite
 
-@click.group()
+EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
+
+
+def _fail(message: str, debug: bool) -> NoReturn:
+    click.echo(f"ezmigrate: error: {message}", err=True)
+    if debug:
+        traceback.print_exc()
+    else:
+        click.echo("ezmigrate: rerun with --debug for details", err=True)
+    sys.exit(EXIT_ERROR)
+
+
+def _load_index(ontology: tuple[Path, ...], start: Path, debug: bool) -> Any:
+    from ezskiros_runtime.ontology.config import resolve_ontology_paths
+    from ezskiros_runtime.ontology.errors import OntologyError
+    from ezskiros_runtime.ontology.index import load_index
+
+    try:
+        source = resolve_ontology_paths(list(ontology) or None, start=start)
+        return load_index(list(source.paths) or None)
+    except OntologyError as error:
+        click.echo(f"ezmigrate: error: {error}", err=True)
+        sys.exit(EXIT_ERROR)
+
+
+def _write_report(path: Path, results: list[FileResult], options: MarkdownOptions) -> None:
+    text = markdown_report(results, options) if path.suffix == ".md" else json_report(results)
+    if str(path) == "-":
+        click.echo(text, nl=False)
+    else:
+        path.write_text(text, encoding="utf-8")
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="ezmigrate")
 def main() -> None:
-    """ezmigrate."""
+    """Migrate SkiROS2 skill descriptions to EzSkiROS, and prove nothing changed."""
+
+
+@main.command()
+@click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path, allow_dash=True))
+@click.option("--dry-run", is_flag=True, help="Write nothing; print a unified diff per file.")
+@click.option("--check", is_flag=True, help="Write nothing; exit 1 if any file would change.")
+@click.option("--report", type=click.Path(path_type=Path, dir_okay=False),
+              help="Write a report: Markdown for .md, JSON otherwise.")
+@click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
+@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
+              help="Ontology file or folder (repeatable).")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
+@click.option("--output-dir", type=click.Path(path_type=Path, file_okay=False),
+              help="Write migrated copies here instead of in place.")
+@click.option("--verify/--no-verify", default=True, show_default=True,
+              help="Load both versions and demand equivalence before writing.")
+@click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file when verifying.")
+@click.option("--ignore-order", is_flag=True, help="Verification ignores declaration order.")
+@click.option("--ignore-labels", is_flag=True, help="Verification ignores condition labels.")
+@click.option("--color/--no-color", default=None, help="Colour diffs (default: on a terminal).")
+@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | None,
+            exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
+            output_dir: Path | None, verify: bool, timeout: float | None, ignore_order: bool,
+            ignore_labels: bool, color: bool | None, debug: bool) -> None:
+    """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin)."""
+    try:
+        if [str(p) for p in paths] == ["-"]:
+            from .stdin import rewrite_stdin
+
+            sys.exit(rewrite_stdin(ontology, verify, check, dry_run, debug))
+        start = paths[0]
+        project = load_project_config(start)
+        index = _load_index(ontology, start, debug)
+        options = RewriteOptions(
+            paths=list(paths), dry_run=dry_run, check=check,
+            exclude=tuple(exclude) + project.exclude, output_dir=output_dir, verify=verify,
+            timeout=timeout or project.timeout or 20.0, ignore_order=ignore_order,
+            ignore_labels=ignore_labels)
+        if jobs or project.jobs:
+            options.jobs = jobs or project.jobs or 1
+        from .verify.rewrite import verify_migrated
+
+        outcome = run_rewrite(options, index, verifier=verify_migrated)
+    except SystemExit:
+        raise
+    except Exception as error:  # never a raw traceback for the user
+        _fail(f"internal error: {error}", debug)
+    use_colour = sys.stdout.isatty() if color is None else color
+    results = [m.result for m in outcome.migrated]
+    for note in outcome.notes:
+        click.echo(f"ezmigrate: {note}", err=True)
+    for item in outcome.migrated:
+        result = item.result
+        if result.error:
+            click.echo(f"{item.candidate.path}: {result.error}", err=True)
+        for skill in result.skills:
+            if skill.status in ("skipped", "failed"):
+                click.echo(f"{item.candidate.path}:{skill.line}: {skill.name}: {skill.status}: "
+                           f"{(skill.reason or '').splitlines()[0] if skill.reason else ''}",
+                           err=True)
+        if result.changed and dry_run:
+            assert isinstance(result.new_source, bytes)
+            diff = unified_diff(item.candidate.relative, item.original, result.new_source)
+            click.echo(colour(diff) if use_colour else diff, nl=False)
+        elif result.changed and check:
+            click.echo(f"would rewrite {item.candidate.path}")
+    for refused in outcome.refused:
+        click.echo(f"ezmigrate: {refused}", err=True)
+    if report is not None:
+        _write_report(report, results, MarkdownOptions(verified=verify, ignore_order=ignore_order,
+                                                       ignore_labels=ignore_labels))
+    summary = Summary.of(results)
+    click.echo(f"ezmigrate: {summary.line(dry=not options.writes)}", err=True)
+    would_change = summary.changed_files > 0 and check
+    sys.exit(EXIT_ATTENTION if would_change or summary.needs_attention() or outcome.refused
+             else EXIT_OK)

@@ -20,8 +20,8 @@ from ezskiros_runtime.compare import compare
 from ezskiros_runtime.model import SkillModel
 
 from .core.classes import DescriptionClass, description_classes
-from .core.context import ExtractContext, positions_of
-from .core.function import build_description
+from .core.context import ExtractContext, module_constants, positions_of
+from .core.function import build_description, emitted_params
 from .core.imports import (
     ONTOLOGY,
     RUNTIME,
@@ -30,11 +30,11 @@ from .core.imports import (
     update_imports,
     used_names,
 )
-from .core.ir import ExtractedSkill, Operation, Unsupported
+from .core.ir import AddCondition, ExtractedSkill, Literal, Operation, ParamOp, Unsupported
 from .core.legacy_names import LegacyNames, is_legacy_module
 from .core.reader import find_create_description, read_operations, self_parameter
 from .core.registry import load_rules
-from .core.replay import lowered_order, replay
+from .core.replay import replay
 from .core.writer import DSL_NAMES, EmitContext
 from .findings import skill_findings
 from .results import FileResult, Finding, SkillResult
@@ -94,13 +94,15 @@ def migrate(source: bytes | str, settings: Settings | None = None,
         return result
     module, positions = positions_of(module)  # same tree: the class nodes stay valid
     aliases = _aliases(module, settings.index)
+    constants = module_constants(module)
     plans: list[_Plan] = []
     effective: dict[str, list[Operation]] = dict(settings.external)
     converted: set[str] = set(settings.external)
     runtime: set[str] = set()
     prefixes: set[str] = set()
     for cls in classes:
-        plan = _plan(cls, module, names, positions, settings, aliases, effective, converted)
+        plan = _plan(cls, module, names, positions, settings, aliases, effective, converted,
+                     constants)
         plans.append(plan)
         if plan.result.status in ("converted", "unchanged"):
             converted.add(cls.name)
@@ -130,7 +132,8 @@ def migrate(source: bytes | str, settings: Settings | None = None,
 
 def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
           positions: Mapping[cst.CSTNode, object], settings: Settings, aliases: dict[str, str],
-          effective: dict[str, list[Operation]], converted: set[str]) -> _Plan:
+          effective: dict[str, list[Operation]], converted: set[str],
+          constants: Mapping[str, Literal]) -> _Plan:
     line = getattr(positions.get(cls.node), "start", None)
     line_no = line.line if line is not None else 0
     plan = _Plan(cls, SkillResult(cls.name, line_no, "skipped"))
@@ -150,14 +153,18 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
             return plan
         skill = ExtractedSkill(cls.name, line_no)
         ctx = ExtractContext(module=module, names=names, positions=positions, skill=skill,
+                             constants=constants,
                              self_name=self_parameter(func), class_name=cls.name,
                              base_names=[cls.base] if cls.base else [],
                              parent_operations=lambda base: effective[base])
         read_operations(func, ctx)
-        model = _checked_model(cls.name, skill.operations)
+        params = emitted_params(skill)
+        model = _checked_model(cls.name, skill.operations, params)
         emit = EmitContext(index=settings.index, self_name=ctx.self_name, aliases=aliases,
-                           reserved=_reserved(func, settings.index, ctx.self_name))
-        plan.new_function = build_description(func, skill, emit, module.config_for_parsing)
+                           reserved=_reserved(func, settings.index, ctx.self_name),
+                           column=_body_column(func, positions))
+        plan.new_function = build_description(func, skill, params, emit,
+                                              module.config_for_parsing)
         effective[cls.name] = skill.operations
         plan.operations = skill.operations
         plan.result.status = "converted"
@@ -176,10 +183,14 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
     return plan
 
 
-def _checked_model(name: str, operations: list[Operation]) -> SkillModel:
-    """The static legacy model; refused when the EzSkiROS lowering order would change it."""
+def _checked_model(name: str, operations: list[Operation], params: list[ParamOp]) -> SkillModel:
+    """The static legacy model; refused when the EzSkiROS form would lower to another one.
+
+    The EzSkiROS form declares ``params`` first, then the conditions in order.
+    """
     legacy = replay(name, operations)
-    lowered = replay(name, lowered_order(operations))
+    conditions = [op for op in operations if isinstance(op, AddCondition)]
+    lowered = replay(name, [*params, *conditions])
     differences = compare(legacy, lowered)
     if differences:
         raise Unsupported(
@@ -188,6 +199,12 @@ def _checked_model(name: str, operations: list[Operation]) -> SkillModel:
             + str(differences[0]).splitlines()[0] + "). Move the addParam calls above the "
             "conditions by hand if the order does not matter to you, then migrate")
     return legacy
+
+
+def _body_column(func: cst.FunctionDef, positions: Mapping[cst.CSTNode, object]) -> int:
+    """Column where the body of ``func`` starts (its ``def`` column plus one indent)."""
+    start = getattr(positions.get(func), "start", None)
+    return (start.column if start is not None else 4) + 4
 
 
 def _reserved(func: cst.FunctionDef, index: OntologyIndex | None, self_name: str) -> set[str]:

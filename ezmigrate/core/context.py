@@ -30,6 +30,7 @@ class ExtractContext:
     self_name: str = "self"
     class_name: str = ""
     base_names: Sequence[str] = ()
+    constants: Mapping[str, Literal] = field(default_factory=dict)
     locals: dict[str, Literal | CondSpec] = field(default_factory=dict)
     opaque_locals: set[str] = field(default_factory=set)
     parent_operations: Callable[[str], list[Operation]] | None = None
@@ -49,14 +50,7 @@ class ExtractContext:
             found = self.locals[node.value]
             assert isinstance(found, Literal)
             return found
-        if not _is_literal_shape(node):
-            return None
-        code = self.code(node)
-        try:
-            value = ast.literal_eval(code.strip())
-        except (ValueError, SyntaxError, TypeError, MemoryError, RecursionError):
-            return None
-        return Literal(value, code.strip())
+        return literal_of(node, self.module)
 
     def string(self, node: cst.BaseExpression, what: str) -> str:
         """A string literal, or ``Unsupported`` naming ``what`` it should have been."""
@@ -75,6 +69,57 @@ class ExtractContext:
                 and node.func.value.value == self.self_name):
             return node.func.attr.value
         return None
+
+
+def literal_of(node: cst.BaseExpression, module: cst.Module) -> Literal | None:
+    """The literal value of an expression written with literal syntax only."""
+    if not _is_literal_shape(node):
+        return None
+    code = module.code_for_node(node).strip()
+    try:
+        value = ast.literal_eval(code)
+    except (ValueError, SyntaxError, TypeError, MemoryError, RecursionError):
+        return None
+    return Literal(value, code)
+
+
+def module_constants(module: cst.Module) -> dict[str, Literal]:
+    """Module-level names bound exactly once, to a literal (``MAX_SPEED = 0.5``)."""
+    bound: dict[str, int] = {}
+    found: dict[str, Literal] = {}
+
+    class _Bindings(cst.CSTVisitor):
+        def visit_AssignTarget(self, node: cst.AssignTarget) -> None:
+            for name in _target_names(node.target):
+                bound[name] = bound.get(name, 0) + 1
+
+        def visit_AugAssign(self, node: cst.AugAssign) -> None:
+            for name in _target_names(node.target):
+                bound[name] = bound.get(name, 0) + 2
+
+        def visit_Global(self, node: cst.Global) -> None:
+            for item in node.names:
+                bound[item.name.value] = bound.get(item.name.value, 0) + 2
+
+    module.visit(_Bindings())
+    for stmt in module.body:
+        if isinstance(stmt, cst.SimpleStatementLine) and len(stmt.body) == 1:
+            small = stmt.body[0]
+            if isinstance(small, cst.Assign) and len(small.targets) == 1 \
+                    and isinstance(small.targets[0].target, cst.Name):
+                name = small.targets[0].target.value
+                value = literal_of(small.value, module)
+                if value is not None:
+                    found[name] = value
+    return {name: value for name, value in found.items() if bound.get(name) == 1}
+
+
+def _target_names(node: cst.BaseExpression) -> list[str]:
+    if isinstance(node, cst.Name):
+        return [node.value]
+    if isinstance(node, (cst.Tuple, cst.List)):
+        return [n for e in node.elements for n in _target_names(e.value)]
+    return []
 
 
 def _is_literal_shape(node: cst.BaseExpression) -> bool:

@@ -40,13 +40,28 @@ def referenced_keys(spec: CondSpec) -> list[str]:
     return keys
 
 
-def with_automatic_robot(skill: ExtractedSkill) -> list[ParamOp]:
-    """The parameters, plus SkiROS2's automatic ``Robot`` when conditions use it undeclared.
+def _expands_options(op: ParamOp) -> bool:
+    return bool(op.options) and isinstance(op.value, ElementValue) and not op.value.is_class
 
-    ``Robot: INFERRED[sumo.Agent]`` as the last parameter is exactly what
-    ``generateDefParams`` appends (legacy-skiros2-api.md §8.1), so the model is unchanged.
+
+def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
+    """The signature's parameters, in order.
+
+    A key declared again replaces the first declaration in its position (§8.3), so when
+    the first one expanded no options the second is simply written in the first's place;
+    otherwise both are kept (the second with a ``KEY``), as SkiROS2 would run them.
+    SkiROS2's automatic ``Robot`` is written as ``Robot: INFERRED[sumo.Agent]`` last when
+    conditions use it undeclared: exactly what ``generateDefParams`` appends (§8.1).
+    The caller replays the result to prove the model is unchanged.
     """
-    params = skill.params()
+    params: list[ParamOp] = []
+    for op in skill.params():
+        earlier = next((i for i, p in enumerate(params) if p.key == op.key), None)
+        if earlier is not None and not _expands_options(params[earlier]) \
+                and not any(p.key == op.key for p in params[earlier + 1:]):
+            params[earlier] = op
+        else:
+            params.append(op)
     declared = {op.key for op in params}
     used = {k for add in skill.conditions() for k in referenced_keys(add.condition)}
     if ROBOT in used and ROBOT not in declared:
@@ -173,7 +188,7 @@ def build_body(func: cst.FunctionDef, skill: ExtractedSkill, ctx: EmitContext,
             node = cst.SimpleStatementLine(body=[op.node])
         statements.append(node.with_changes(leading_lines=lines, trailing_whitespace=trailing_ws))
     footer = pending + list(skill.footer)
-    if not statements or statements == [skill.docstring]:
+    if not statements:
         statements.append(cst.SimpleStatementLine(body=[cst.Pass()], leading_lines=footer))
         footer = []
     first = statements[0]
@@ -192,10 +207,9 @@ def build_body(func: cst.FunctionDef, skill: ExtractedSkill, ctx: EmitContext,
     return cst.IndentedBlock(body=statements, header=header, indent=indent, footer=footer)
 
 
-def build_description(func: cst.FunctionDef, skill: ExtractedSkill, ctx: EmitContext,
-                      config: cst.PartialParserConfig) -> cst.FunctionDef:
-    """The complete ``description`` method for ``skill``."""
-    params = with_automatic_robot(skill)
+def build_description(func: cst.FunctionDef, skill: ExtractedSkill, params: list[ParamOp],
+                      ctx: EmitContext, config: cst.PartialParserConfig) -> cst.FunctionDef:
+    """The complete ``description`` method for ``skill`` with the signature ``params``."""
     names = assign_names(params, ctx)
     parameters, last_comment = build_parameters(func, params, names, ctx)
     body = build_body(func, skill, ctx, config, last_comment)

@@ -13,6 +13,7 @@ from collections.abc import Iterable, Sequence
 import libcst as cst
 
 from .legacy_names import dotted_name, is_legacy_module
+from .writer import LINE_LIMIT
 
 RUNTIME = "ezskiros_runtime"
 ONTOLOGY = "ezskiros_runtime.ontology"
@@ -116,8 +117,11 @@ def _prune(small: cst.BaseSmallStatement, used: set[str]) -> cst.BaseSmallStatem
 
 def _import_line(module: str, names: Sequence[tuple[str, str]],
                  config: cst.PartialParserConfig) -> cst.SimpleStatementLine:
-    parts = ", ".join(name if alias == name else f"{name} as {alias}" for name, alias in names)
-    parsed = cst.parse_statement(f"from {module} import {parts}\n", config=config)
+    items = [name if alias == name else f"{name} as {alias}" for name, alias in names]
+    text = f"from {module} import {', '.join(items)}"
+    if len(text) > LINE_LIMIT:
+        text = f"from {module} import (\n" + "".join(f"    {item},\n" for item in items) + ")"
+    parsed = cst.parse_statement(text + "\n", config=config)
     assert isinstance(parsed, cst.SimpleStatementLine)
     return parsed
 

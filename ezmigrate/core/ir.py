@@ -50,9 +50,14 @@ class TypeValue:
 
 @dataclass
 class OpaqueValue:
-    """A value known only by its expression (a module constant): passed on as written."""
+    """A value written as an expression (a module constant): passed on as written.
+
+    ``known`` is the literal a module-level constant is bound to, when it is bound once;
+    its type then gives the parameter's annotation.
+    """
 
     code: str
+    known: Literal | None = None
 
 
 ParamValue = Literal | ElementValue | TypeValue | OpaqueValue

@@ -37,7 +37,7 @@ def _value(op: ParamOp) -> object:
     if isinstance(value, Literal):
         return value.value
     if isinstance(value, OpaqueValue):
-        return Unknown(value.code)
+        return value.known.value if value.known is not None else Unknown(value.code)
     return getattr(builtins, value.name)
 
 
@@ -87,9 +87,3 @@ def replay(name: str, operations: Iterable[Operation]) -> SkillModel:
     cls = type(name, (abstract_skill.SkillDescription,), {"createDescription": create_description})
     return model_of(cls())
 
-
-def lowered_order(operations: Iterable[Operation]) -> list[Operation]:
-    """The order in which the EzSkiROS form makes the same calls: parameters first."""
-    ops = list(operations)
-    return [op for op in ops if isinstance(op, ParamOp)] + \
-        [op for op in ops if isinstance(op, AddCondition)]

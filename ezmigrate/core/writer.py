@@ -26,6 +26,9 @@ DSL_NAMES = frozenset({
     "SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "abstract",
     "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output"})
 
+LINE_LIMIT = 99
+"""Longest line the emitter writes when it has a choice (ruff's and black's spirit)."""
+
 _QNAME = re.compile(r"([A-Za-z][A-Za-z0-9_]*):([A-Za-z][A-Za-z0-9_]*)\Z")
 
 
@@ -45,6 +48,8 @@ class EmitContext:
     prefixes: set[str] = field(default_factory=set)
     reserved: set[str] = field(default_factory=set)
     aliases: dict[str, str] = field(default_factory=dict)
+    column: int = 8
+    """Width of the body's indentation, for wrapping long lines."""
 
     def use(self, name: str) -> str:
         """Note that ``name`` must be imported from ``ezskiros_runtime``; its local name."""

@@ -61,8 +61,10 @@ def _value(node: cst.BaseExpression, ctx: ExtractContext) -> ParamValue:
         root = node
         while isinstance(root, cst.Attribute):
             root = root.value
-        if isinstance(root, cst.Name) and root.value not in (ctx.self_name, *ctx.locals, *ctx.opaque_locals):
-            return OpaqueValue(ctx.code(node).strip())
+        if isinstance(root, cst.Name) and root.value not in (ctx.self_name, *ctx.locals,
+                                                             *ctx.opaque_locals):
+            known = ctx.constants.get(node.value) if isinstance(node, cst.Name) else None
+            return OpaqueValue(ctx.code(node).strip(), known)
     raise Unsupported(f"the value of addParam at line {ctx.line(node)} is "
                       f"`{ctx.code(node).strip()}`, computed at run time", node)
 
@@ -133,7 +135,7 @@ def annotation(op: ParamOp, python_name: str, ctx: EmitContext) -> tuple[str, st
     if python_name != op.key:
         extras.append(f"{ctx.use('KEY')}({quote(op.key)})")
     marker = MARKERS[op.kind]
-    if isinstance(op.value, OpaqueValue):
+    if isinstance(op.value, OpaqueValue) and op.value.known is None:
         if extras:
             raise Unsupported(f"parameter {op.key!r} at line {op.line} has a default known "
                               "only at run time and a description, option or key escape")
@@ -154,7 +156,9 @@ def _type_and_default(op: ParamOp, ctx: EmitContext) -> tuple[str, str | None]:
         return (ref or f"{ctx.use('ELEMENT')}({quote(value.type_string)})"), None
     if isinstance(value, TypeValue):
         return value.name, None
-    assert isinstance(value, Literal)
+    if isinstance(value, OpaqueValue):
+        assert value.known is not None
+        return _literal_type(value.known, op), value.code
     return _literal_type(value, op), value.code
 
 

@@ -14,7 +14,7 @@ import libcst as cst
 from ..core.context import ExtractContext, bind_arguments
 from ..core.ir import AddCondition, Comments, CondSpec, Unsupported
 from ..core.registry import CONDITION_EMITTERS, CONDITION_RULES, statement_rule
-from ..core.writer import EmitContext
+from ..core.writer import LINE_LIMIT, EmitContext
 
 LISTS = {"addPreCondition": "pre", "addHoldCondition": "hold", "addPostCondition": "post"}
 
@@ -77,6 +77,11 @@ def strip_outer_parentheses(text: str) -> str:
 
 
 def condition_statement(add: AddCondition, ctx: EmitContext) -> str:
-    """``self.pre_conditions += <expr>`` for one ``add*Condition``."""
-    expression = strip_outer_parentheses(emit_condition(add.condition, ctx))
-    return f"{ctx.self_name}.{add.which}_conditions += {expression}"
+    """``self.pre_conditions += <expr>`` for one ``add*Condition``; long disjunctions wrap."""
+    from .or_conditions import wrapped_or
+
+    head = f"{ctx.self_name}.{add.which}_conditions += "
+    line = head + strip_outer_parentheses(emit_condition(add.condition, ctx))
+    if ctx.column + len(line) <= LINE_LIMIT or add.condition.kind != "or":
+        return line
+    return head + wrapped_or(add.condition, ctx, len(head))

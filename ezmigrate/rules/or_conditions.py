@@ -56,19 +56,36 @@ def add_child(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[Comment
     return [CommentOnly(statement_comments(stmt, ctx))]
 
 
-@condition_emitter("or")
-def emit_or(spec: CondSpec, ctx: EmitContext) -> str:
+def _parts(spec: CondSpec, ctx: EmitContext) -> tuple[str, list[str], str]:
+    """Opening text, children, and separator of an or-condition's expression."""
     if len(spec.children) < 1:
         raise Unsupported(f"the or-condition made at line {spec.line} has no children; "
                           "EzSkiROS has no form for an empty disjunction")
+    desired = spec.desired.value if spec.desired is not None else True
+    if desired not in (True, False) or type(desired) is not bool:
+        raise Unsupported(f"the or-condition at line {spec.line} has desired state {desired!r}")
+    negation = "" if desired else "~"
     children = [emit_condition(child, ctx) for child in spec.children]
     if spec.children[0].kind == "or" or len(children) == 1:
-        text = f"{ctx.use('any_of')}({', '.join(children)})"
-    else:
-        text = "(" + " | ".join(children) + ")"
-    desired = spec.desired.value if spec.desired is not None else True
-    if desired is True:
-        return text
-    if desired is False:
-        return f"~{text}"
-    raise Unsupported(f"the or-condition at line {spec.line} has desired state {desired!r}")
+        return f"{negation}{ctx.use('any_of')}(", children, ","
+    return f"{negation}(", children, " |"
+
+
+@condition_emitter("or")
+def emit_or(spec: CondSpec, ctx: EmitContext) -> str:
+    opening, children, separator = _parts(spec, ctx)
+    joiner = ", " if separator == "," else " | "
+    return opening + joiner.join(children) + ")"
+
+
+def wrapped_or(spec: CondSpec, ctx: EmitContext, offset: int) -> str:
+    """The or-condition over several lines, children aligned after the opening bracket.
+
+    ``offset`` is the column of the expression relative to the statement's indentation
+    (continuation lines are written relative to it, and libcst re-indents them).
+    """
+    opening, children, separator = _parts(spec, ctx)
+    pad = " " * (offset + len(opening))
+    if separator == ",":
+        return opening + (",\n" + pad).join(children) + ")"
+    return opening + ("\n" + pad[:-2] + "| ").join(children) + ")"

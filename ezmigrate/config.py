@@ -1,0 +1,59 @@
+"""``[tool.ezmigrate]`` in the nearest ``pyproject.toml``: defaults a project keeps in its repo.
+
+Keys: ``exclude`` (list of globs), ``jobs`` (int), ``timeout`` (seconds), and ``ontology``
+(read by ``ezskiros_runtime.ontology.config``). Command-line options win over these.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+
+@dataclass(frozen=True)
+class ProjectConfig:
+    """The project's configured defaults, and where they were read from."""
+
+    exclude: tuple[str, ...] = ()
+    jobs: int | None = None
+    timeout: float | None = None
+    source: Path | None = None
+
+
+def find_pyproject(start: Path) -> Path | None:
+    """The nearest ``pyproject.toml`` at or above ``start``."""
+    folder = start.resolve()
+    if folder.is_file():
+        folder = folder.parent
+    for candidate in (folder, *folder.parents):
+        if (candidate / "pyproject.toml").is_file():
+            return candidate / "pyproject.toml"
+    return None
+
+
+def load_project_config(start: Path) -> ProjectConfig:
+    """Read ``[tool.ezmigrate]``; a missing or unreadable file means no configuration."""
+    path = find_pyproject(start)
+    if path is None:
+        return ProjectConfig()
+    try:
+        table: dict[str, Any] = tomllib.loads(path.read_text(encoding="utf-8"))
+    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError):
+        return ProjectConfig()
+    section = table.get("tool", {}).get("ezmigrate", {})
+    if not isinstance(section, dict):
+        return ProjectConfig()
+    exclude = section.get("exclude", [])
+    return ProjectConfig(
+        exclude=tuple(str(e) for e in exclude) if isinstance(exclude, list) else (),
+        jobs=section.get("jobs") if isinstance(section.get("jobs"), int) else None,
+        timeout=float(section["timeout"]) if isinstance(section.get("timeout"), (int, float))
+        else None,
+        source=path)

@@ -1,0 +1,46 @@
+"""Unified diffs of a migration, decoded with each file's own encoding."""
+
+from __future__ import annotations
+
+import difflib
+import io
+import tokenize
+
+
+def decode(data: bytes) -> str:
+    """Source bytes as text, honouring a BOM or PEP 263 cookie (lossless for display)."""
+    try:
+        encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
+    except SyntaxError:
+        encoding = "utf-8"
+    return data.decode(encoding, errors="replace")
+
+
+def unified_diff(path: str, before: bytes, after: bytes) -> str:
+    """``--- a/path`` / ``+++ b/path`` diff; line endings shown as they are."""
+    old = decode(before).splitlines(keepends=True)
+    new = decode(after).splitlines(keepends=True)
+    lines = difflib.unified_diff(old, new, fromfile=f"a/{path}", tofile=f"b/{path}")
+    out = []
+    for line in lines:
+        out.append(line if line.endswith("\n") else line + "\n\\ No newline at end of file\n")
+    return "".join(out)
+
+
+def colour(diff: str) -> str:
+    """ANSI colours for a terminal (never used when output is piped)."""
+    import click
+
+    styled = []
+    for line in diff.splitlines(keepends=True):
+        if line.startswith(("+++", "---")):
+            styled.append(click.style(line, bold=True))
+        elif line.startswith("+"):
+            styled.append(click.style(line, fg="green"))
+        elif line.startswith("-"):
+            styled.append(click.style(line, fg="red"))
+        elif line.startswith("@@"):
+            styled.append(click.style(line, fg="cyan"))
+        else:
+            styled.append(line)
+    return "".join(styled)

@@ -1,0 +1,138 @@
+"""Reports of a run: the one-line summary, JSON for machines, Markdown for code review."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from .results import FileResult, SkillResult
+
+SCHEMA_VERSION = 1
+
+
+@dataclass
+class Summary:
+    """Counts over a run (the JSON report's ``summary`` and the closing stderr line)."""
+
+    files: int = 0
+    skills: int = 0
+    converted: int = 0
+    skipped: int = 0
+    failed: int = 0
+    unchanged: int = 0
+    changed_files: int = 0
+    file_errors: int = 0
+
+    @classmethod
+    def of(cls, results: Sequence[FileResult]) -> Summary:
+        s = cls(files=len(results))
+        for r in results:
+            s.skills += len(r.skills)
+            s.converted += r.count("converted")
+            s.skipped += r.count("skipped")
+            s.failed += r.count("failed")
+            s.unchanged += r.count("unchanged")
+            s.changed_files += r.changed
+            s.file_errors += r.error is not None
+        return s
+
+    def line(self, *, dry: bool) -> str:
+        change = "would change" if dry else "changed"
+        text = (f"{self.files} files scanned, {self.skills} skills found, {self.converted} "
+                f"converted, {self.skipped} skipped, {self.failed} failed; "
+                f"{self.changed_files} files {change}")
+        if self.file_errors:
+            text += f"; {self.file_errors} files could not be processed"
+        return text
+
+    def needs_attention(self) -> bool:
+        return bool(self.skipped or self.failed or self.file_errors)
+
+
+def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
+    data: dict[str, Any] = {
+        "file": file.path, "class": skill.name, "line": skill.line, "status": skill.status,
+        "reason": skill.reason,
+        "findings": [f.to_json() for f in skill.findings],
+        "equivalent": skill.equivalent,
+    }
+    if skill.diff:
+        data["diff"] = skill.diff
+    return data
+
+
+def json_report(results: Sequence[FileResult], extra: dict[str, Any] | None = None) -> str:
+    """The JSON report (schema version 1 of the rewrite issue, plus ``equivalent``/``diff``)."""
+    summary = Summary.of(results)
+    data: dict[str, Any] = {
+        "version": SCHEMA_VERSION,
+        "summary": {"files": summary.files, "skills": summary.skills,
+                    "converted": summary.converted, "skipped": summary.skipped,
+                    "failed": summary.failed},
+        "skills": [_skill_json(f, s) for f in results for s in f.skills],
+        "files": [{"file": f.path, "changed": f.changed, "error": f.error,
+                   "error_line": f.error_line, "notes": f.notes}
+                  for f in results if f.error or f.notes or f.changed],
+        **(extra or {}),
+    }
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+@dataclass
+class MarkdownOptions:
+    """What the Markdown report says about how equivalence was judged."""
+
+    verified: bool = True
+    ignore_order: bool = False
+    ignore_labels: bool = False
+    notes: list[str] = field(default_factory=list)
+
+
+def _verdict(skill: SkillResult) -> str:
+    if skill.status == "converted":
+        return "converted, equivalent" if skill.equivalent else (
+            "converted (not verified)" if skill.equivalent is None else "converted")
+    return skill.status
+
+
+def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> str:
+    """A review report: summary table, then each file and skill with its verdict."""
+    s = Summary.of(results)
+    out = ["# ezmigrate report", ""]
+    how = "verified by loading both versions" if options.verified else "NOT verified"
+    relax = [w for w, on in (("parameter/condition order", options.ignore_order),
+                             ("labels", options.ignore_labels)) if on]
+    out.append(f"Equivalence: {how}" + (f"; ignoring {' and '.join(relax)}" if relax else "")
+               + ".")
+    out += ["", "| files | skills | converted | skipped | failed | unchanged |",
+            "|---:|---:|---:|---:|---:|---:|",
+            f"| {s.files} | {s.skills} | {s.converted} | {s.skipped} | {s.failed} | "
+            f"{s.unchanged} |", ""]
+    out += [f"- {note}" for note in options.notes]
+    findings: list[str] = []
+    for file in results:
+        if not file.skills and not file.error:
+            continue
+        out += [f"## `{file.path}`", ""]
+        if file.error:
+            out += [f"**Could not be processed:** {file.error}", ""]
+        for skill in file.skills:
+            out.append(f"- **{skill.name}** (line {skill.line}): {_verdict(skill)}")
+            if skill.reason:
+                out.append(f"  - reason: {skill.reason}")
+            for d in skill.diff or ():
+                out.append(f"  - {d['where']}: {d['message']}")
+                if d.get("before") is not None:
+                    out.append(f"    - legacy: `{d['before']}`")
+                if d.get("after") is not None:
+                    out.append(f"    - migrated: `{d['after']}`")
+            for f in skill.findings:
+                where = f"line {f.line}" if f.line else "skill"
+                findings.append(f"- `{file.path}` {skill.name} ({where}) **{f.kind}**: "
+                                f"{f.message}")
+        out.append("")
+    if findings:
+        out += ["## Findings (kept as they were; not equivalence problems)", "", *findings, ""]
+    return "\n".join(out).rstrip() + "\n"

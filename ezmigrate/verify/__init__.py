@@ -1,0 +1,1 @@
+"""Verification: load legacy and migrated versions in child processes and compare models."""
