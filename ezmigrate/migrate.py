@@ -30,7 +30,15 @@ from .core.imports import (
     update_imports,
     used_names,
 )
-from .core.ir import AddCondition, ExtractedSkill, Literal, Operation, ParamOp, Unsupported
+from .core.ir import (
+    AddCondition,
+    ExtractedSkill,
+    KeptStatement,
+    Literal,
+    Operation,
+    ParamOp,
+    Unsupported,
+)
 from .core.legacy_names import LegacyNames, is_legacy_module
 from .core.reader import find_create_description, read_operations, self_parameter
 from .core.registry import load_rules
@@ -161,7 +169,7 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
         params = emitted_params(skill)
         model = _checked_model(cls.name, skill.operations, params)
         emit = EmitContext(index=settings.index, self_name=ctx.self_name, aliases=aliases,
-                           reserved=_reserved(func, settings.index, ctx.self_name),
+                           reserved=_reserved(skill, settings.index, ctx.self_name),
                            column=_body_column(func, positions))
         plan.new_function = build_description(func, skill, params, emit,
                                               module.config_for_parsing)
@@ -207,15 +215,17 @@ def _body_column(func: cst.FunctionDef, positions: Mapping[cst.CSTNode, object])
     return (start.column if start is not None else 4) + 4
 
 
-def _reserved(func: cst.FunctionDef, index: OntologyIndex | None, self_name: str) -> set[str]:
-    """Names a parameter must not take because the body of ``description`` uses them."""
+def _reserved(skill: ExtractedSkill, index: OntologyIndex | None, self_name: str) -> set[str]:
+    """Names a parameter must not take because the new body of ``description`` uses them."""
     used: set[str] = set()
 
     class _Names(cst.CSTVisitor):
         def visit_Name(self, node: cst.Name) -> None:
             used.add(node.value)
 
-    func.body.visit(_Names())
+    for op in skill.operations:
+        if isinstance(op, KeptStatement):
+            op.node.visit(_Names())
     prefixes = set(index.prefixes) if index is not None else set(DEFAULT_PREFIXES)
     return used | prefixes | {self_name, "abstract", "any_of"}
 

@@ -18,7 +18,12 @@ from ..core.context import ExtractContext, bind_arguments
 from ..core.ir import CommentOnly, CondSpec, Literal, Unsupported
 from ..core.registry import condition_emitter, condition_rule, statement_rule
 from ..core.writer import EmitContext
-from .condition_lists import condition_of, emit_condition, statement_comments
+from .condition_lists import (
+    condition_of,
+    emit_condition,
+    statement_comments,
+    strip_outer_parentheses,
+)
 
 
 @condition_rule
@@ -67,7 +72,8 @@ def _parts(spec: CondSpec, ctx: EmitContext) -> tuple[str, list[str], str]:
     negation = "" if desired else "~"
     children = [emit_condition(child, ctx) for child in spec.children]
     if spec.children[0].kind == "or" or len(children) == 1:
-        return f"{negation}{ctx.use('any_of')}(", children, ","
+        bare = [strip_outer_parentheses(child) for child in children]
+        return f"{negation}{ctx.use('any_of')}(", bare, ","
     return f"{negation}(", children, " |"
 
 
@@ -88,4 +94,4 @@ def wrapped_or(spec: CondSpec, ctx: EmitContext, offset: int) -> str:
     pad = " " * (offset + len(opening))
     if separator == ",":
         return opening + (",\n" + pad).join(children) + ")"
-    return opening + ("\n" + pad[:-2] + "| ").join(children) + ")"
+    return opening + ("\n" + pad + "| ").join(children) + ")"

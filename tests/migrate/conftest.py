@@ -1,0 +1,6 @@
+"""Make the before/after helpers importable as ``codemod_case``."""
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).parent))

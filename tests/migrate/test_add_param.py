@@ -1,0 +1,216 @@
+"""addParam: every value spelling, kind, option, description and key form."""
+
+from codemod_case import HEADER, assert_migrates, assert_skipped
+
+
+def case(body: str) -> str:
+    return HEADER + "\n\nclass S(SkillDescription):\n    def createDescription(self):\n" + body
+
+
+def test_element_kinds_use_ontology_classes():
+    assert_migrates(case(
+        '        self.addParam("Object", Element("skiros:Product"), ParamTypes.Required)\n'
+        '        self.addParam("Place", Element("skiros:Location"), ParamTypes.Inferred)\n'
+        '        self.addParam("Hand", Element("rparts:GripperEffector"), ParamTypes.Optional)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, INFERRED, OPTIONAL
+from ezskiros_runtime.ontology import rparts, skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    Object: skiros.Product,
+                    Place: INFERRED[skiros.Location],
+                    Hand: OPTIONAL[rparts.GripperEffector]):
+        pass
+''')
+
+
+def test_verbatim_element_strings_and_unknown_vocabulary():
+    assert_migrates(case(
+        '        self.addParam("A", Element(":Location"), ParamTypes.Required)\n'
+        '        self.addParam("B", Element("Location"), ParamTypes.Required)\n'
+        '        self.addParam("C", Element(), ParamTypes.Required)\n'
+        '        self.addParam("D", Element("scalable:Ur5"), ParamTypes.Required)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, ELEMENT
+
+
+class S(SkillDescription):
+    def description(self,
+                    A: ELEMENT(":Location"),
+                    B: ELEMENT("Location"),
+                    C: ELEMENT(),
+                    D: ELEMENT("scalable:Ur5")):
+        pass
+''')
+
+
+def test_type_objects_and_literal_defaults_keep_exact_types():
+    assert_migrates(case(
+        '        self.addParam("F", float, ParamTypes.Required)\n'
+        '        self.addParam("D", dict, ParamTypes.Optional)\n'
+        '        self.addParam("I", 0, ParamTypes.Required)\n'
+        '        self.addParam("X", 0.0, ParamTypes.Optional)\n'
+        '        self.addParam("B", True, ParamTypes.Optional)\n'
+        '        self.addParam("N", -1, 1)\n'
+        '        self.addParam("E", 1e-3, ParamTypes.Optional)\n'
+        '        self.addParam("L", [2.0, 8.0], ParamTypes.Optional)\n'
+        '        self.addParam("S", "", ParamTypes.Optional)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, OPTIONAL
+
+
+class S(SkillDescription):
+    def description(self,
+                    F: float,
+                    D: OPTIONAL[dict],
+                    I: int = 0,
+                    X: OPTIONAL[float] = 0.0,
+                    B: OPTIONAL[bool] = True,
+                    N: OPTIONAL[int] = -1,
+                    E: OPTIONAL[float] = 1e-3,
+                    L: OPTIONAL[list[float]] = [2.0, 8.0],
+                    S: OPTIONAL[str] = ""):
+        pass
+''')
+
+
+def test_keyword_only_marker_only_when_python_needs_it():
+    result = assert_migrates(case(
+        '        self.addParam("Object", Element("skiros:Product"), ParamTypes.Required)\n'
+        '        self.addParam("Speed", 0.5, ParamTypes.Optional)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, OPTIONAL
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    Object: skiros.Product,
+                    Speed: OPTIONAL[float] = 0.5):
+        pass
+''')
+    assert result.skills[0].status == "converted"
+
+
+def test_options_description_and_the_fourth_positional_quirk():
+    result = assert_migrates(case(
+        '        self.addParam("Cam", Element("skiros:Location"), ParamTypes.Required, [ParamOptions.Lock, ParamOptions.Consume])\n'
+        '        self.addParam("Speed", 0.5, ParamTypes.Optional, [], "m/s")\n'
+        '        self.addParam("Mass", float, ParamTypes.Required, description="kg")\n'
+        '        self.addParam("Force", 1.0, ParamTypes.Optional, "newton")\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, OPTIONAL, REQUIRED, Lock, Consume
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    Cam: REQUIRED[skiros.Location, Lock, Consume],
+                    *,
+                    Speed: OPTIONAL[float, "m/s"] = 0.5,
+                    Mass: REQUIRED[float, "kg"],
+                    Force: OPTIONAL[float] = 1.0):
+        pass
+''')
+    kinds = [f.kind for f in result.skills[0].findings]
+    assert "description-in-options" in kinds
+
+
+def test_options_on_non_element_values_are_dropped_with_a_finding():
+    result = assert_migrates(case(
+        '        self.addParam("T", 0.5, ParamTypes.Optional, [ParamOptions.Lock])\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, OPTIONAL
+
+
+class S(SkillDescription):
+    def description(self,
+                    T: OPTIONAL[float] = 0.5):
+        pass
+''')
+    assert [f.kind for f in result.skills[0].findings] == ["options-ignored"]
+
+
+def test_keys_that_are_not_identifiers_get_a_key_escape():
+    assert_migrates(case(
+        '        self.addParam("On/Off", True, ParamTypes.Required)\n'
+        '        self.addParam("from", Element("skiros:Location"), ParamTypes.Required)\n'
+        '        self.addParam("2nd", 1, ParamTypes.Optional)\n'
+        '        self.addPreCondition(self.getRelationCond("fromContain2nd", "skiros:contain", "from", "2nd", True))\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, OPTIONAL, REQUIRED, KEY
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    *,
+                    On_Off: REQUIRED[bool, KEY("On/Off")] = True,
+                    from_: REQUIRED[skiros.Location, KEY("from")],
+                    _2nd: OPTIONAL[int, KEY("2nd")] = 1):
+        self.pre_conditions += from_.contain(_2nd)
+''')
+
+
+def test_redeclared_key_takes_the_first_position():
+    assert_migrates(case(
+        '        self.addParam("Speed", 0.1, ParamTypes.Optional)\n'
+        '        self.addParam("Other", 1, ParamTypes.Optional)\n'
+        '        self.addParam("Speed", 0.02, ParamTypes.Optional)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, OPTIONAL
+
+
+class S(SkillDescription):
+    def description(self,
+                    Speed: OPTIONAL[float] = 0.02,
+                    Other: OPTIONAL[int] = 1):
+        pass
+''')
+
+
+def test_redeclared_key_with_options_keeps_both_declarations():
+    assert_migrates(case(
+        '        self.addParam("Arm", Element("skiros:Location"), ParamTypes.Required, [ParamOptions.Lock])\n'
+        '        self.addParam("Arm", Element("skiros:Product"), ParamTypes.Required)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, REQUIRED, KEY, Lock
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    Arm: REQUIRED[skiros.Location, Lock],
+                    Arm_2: REQUIRED[skiros.Product, KEY("Arm")]):
+        pass
+''')
+
+
+def test_module_constants_keep_their_name_and_get_their_type():
+    assert_migrates('SPEED = 0.5\nUNKNOWN = compute()\n' + case(
+        '        self.addParam("Speed", SPEED, ParamTypes.Optional, [], "m/s")\n'
+        '        self.addParam("Other", UNKNOWN, ParamTypes.Optional)\n'
+    ), '''\
+SPEED = 0.5
+UNKNOWN = compute()
+from ezskiros_runtime import SkillDescription, OPTIONAL
+
+
+class S(SkillDescription):
+    def description(self,
+                    Speed: OPTIONAL[float, "m/s"] = SPEED,
+                    Other: OPTIONAL = UNKNOWN):
+        pass
+''')
+
+
+def test_fork_api_and_runtime_keys_are_skipped_with_reasons():
+    assert_skipped(case('        self.addParam("A", float, ParamTypes.SharedInput)\n'),
+                   "ParamTypes.SharedInput", "not upstream")
+    assert_skipped(case('        self.addParam("A", float, ParamTypes.Required, remap="B")\n'),
+                   "remap=", "not upstream")
+    assert_skipped(case('        key = self.name()\n        self.addParam(key, float, 0)\n'),
+                   "computed at run time")
+    assert_skipped(case('        self.addParam("A", [], ParamTypes.Optional)\n'), "reject")

@@ -1,0 +1,83 @@
+"""Locals that are inlined, statements kept as written, and statements that block migration."""
+
+from codemod_case import HEADER, assert_migrates, assert_skipped
+
+START = HEADER + "\n\nclass S(SkillDescription):\n    def createDescription(self):\n"
+
+
+def test_condition_locals_and_string_constants_are_inlined():
+    assert_migrates(START + (
+        '        obj = "B"\n'
+        '        self.addParam("A", Element("skiros:Location"), ParamTypes.Required)\n'
+        '        self.addParam(obj, Element("skiros:Product"), ParamTypes.Required)\n'
+        '        held = self.getRelationCond("AContainB", "skiros:contain", "A", obj, True)\n'
+        '        self.addPreCondition(held)\n'
+        '        self.addPostCondition(held)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    A: skiros.Location,
+                    B: skiros.Product):
+        obj = "B"
+        self.pre_conditions += A.contain(B)
+        self.post_conditions += A.contain(B)
+''')
+
+
+def test_kept_statements_docstring_and_attribute_assignments():
+    assert_migrates(START + (
+        '        """Declare the skill."""\n'
+        '        self.setAvailableForPlanning(False)\n'
+        '        self.note = "kept"  # read by the primitive\n'
+        '        self.addParam("A", float, ParamTypes.Required)\n'
+        '        pass\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription
+
+
+class S(SkillDescription):
+    def description(self,
+                    A: float):
+        """Declare the skill."""
+        self.setAvailableForPlanning(False)
+        self.note = "kept"  # read by the primitive
+''')
+
+
+def test_docstring_only_and_empty_descriptions():
+    assert_migrates(HEADER + (
+        '\n\nclass D(SkillDescription):\n    def createDescription(self):\n        """Only a docstring."""\n'
+        '\n\nclass E(SkillDescription):\n    def createDescription(self):\n        pass\n'
+        '\n\nclass F(SkillDescription):\n    pass\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription
+
+
+class D(SkillDescription):
+    def description(self):
+        """Only a docstring."""
+
+
+class E(SkillDescription):
+    def description(self):
+        pass
+
+
+class F(SkillDescription):
+    pass
+''')
+
+
+def test_statements_that_could_declare_at_run_time_block_the_skill():
+    assert_skipped(START + '        for k in ["A", "B"]:\n            self.addParam(k, float, 0)\n',
+                   "a loop at line", "unroll")
+    assert_skipped(START + '        if True:\n            self.addParam("A", float, 0)\n',
+                   "a conditional")
+    assert_skipped(START + '        self._common()\n', "self._common(...)", "not part of")
+    assert_skipped(START + '        print("x")\n', "not a declarative description statement")
+    assert_skipped(HEADER + '\n\nclass S(SkillDescription):\n    def createDescription(self, x):\n'
+                   '        pass\n', "takes parameters besides self")
