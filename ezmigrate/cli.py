@@ -34,14 +34,15 @@ def _fail(message: str, debug: bool) -> NoReturn:
     sys.exit(EXIT_ERROR)
 
 
-def _load_index(ontology: tuple[Path, ...], start: Path, debug: bool) -> Any:
+def _load_index(ontology: tuple[Path, ...], start: Path) -> tuple[Any, tuple[str, ...]]:
+    """The ontology index by the configuration rules, and the files it came from."""
     from ezskiros_runtime.ontology.config import resolve_ontology_paths
     from ezskiros_runtime.ontology.errors import OntologyError
     from ezskiros_runtime.ontology.index import load_index
 
     try:
         source = resolve_ontology_paths(list(ontology) or None, start=start)
-        return load_index(list(source.paths) or None)
+        return load_index(list(source.paths) or None), tuple(str(p) for p in source.paths)
     except OntologyError as error:
         click.echo(f"ezmigrate: error: {error}", err=True)
         sys.exit(EXIT_ERROR)
@@ -89,15 +90,17 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         if [str(p) for p in paths] == ["-"]:
             from .stdin import rewrite_stdin
 
-            sys.exit(rewrite_stdin(ontology, verify, check, dry_run, debug))
+            index, ontology_files = _load_index(ontology, Path.cwd())
+            sys.exit(rewrite_stdin(index, ontology_files, verify=verify, check=check,
+                                   dry_run=dry_run, timeout=timeout or 20.0))
         start = paths[0]
         project = load_project_config(start)
-        index = _load_index(ontology, start, debug)
+        index, ontology_files = _load_index(ontology, start)
         options = RewriteOptions(
             paths=list(paths), dry_run=dry_run, check=check,
             exclude=tuple(exclude) + project.exclude, output_dir=output_dir, verify=verify,
             timeout=timeout or project.timeout or 20.0, ignore_order=ignore_order,
-            ignore_labels=ignore_labels)
+            ignore_labels=ignore_labels, ontology=ontology_files)
         if jobs or project.jobs:
             options.jobs = jobs or project.jobs or 1
         from .verify.rewrite import verify_migrated
@@ -136,3 +139,55 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     would_change = summary.changed_files > 0 and check
     sys.exit(EXIT_ATTENTION if would_change or summary.needs_attention() or outcome.refused
              else EXIT_OK)
+
+
+@main.command()
+@click.argument("before", type=click.Path(path_type=Path, exists=True))
+@click.argument("after", type=click.Path(path_type=Path, exists=True))
+@click.option("--report", type=click.Path(path_type=Path, dir_okay=False),
+              help="Write a report: Markdown for .md, JSON otherwise.")
+@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
+              help="Ontology file or folder (repeatable).")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
+@click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
+@click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
+@click.option("--ignore-order", is_flag=True, help="Declaration order does not matter.")
+@click.option("--ignore-labels", is_flag=True, help="Condition labels do not matter.")
+@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path, ...],
+           jobs: int | None, timeout: float | None, exclude: tuple[str, ...],
+           ignore_order: bool, ignore_labels: bool, debug: bool) -> None:
+    """Prove AFTER means what BEFORE meant (two files, or two folders by relative path)."""
+    from .runner import default_jobs
+    from .verify.command import VerifyOptions, run_verify
+    from .verify.pool import PoolConfig
+
+    try:
+        project = load_project_config(before)
+        _, ontology_files = _load_index(ontology, before)
+        pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
+                          timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
+        results, unloadable = run_verify(VerifyOptions(
+            before, after, pool, ignore_order, ignore_labels, tuple(exclude) + project.exclude))
+    except Exception as error:  # never a raw traceback for the user
+        _fail(f"internal error: {error}", debug)
+    for result in results:
+        if result.error:
+            click.echo(f"{result.path}: {result.error}", err=True)
+        for skill in result.skills:
+            if skill.status == "failed":
+                click.echo(f"{result.path}:{skill.line}: {skill.name}: {skill.reason}", err=True)
+                for d in skill.diff or ():
+                    click.echo(f"    {d['where']}: {d['message']}", err=True)
+                    if d.get("before") is not None:
+                        click.echo(f"      - {d['before']}", err=True)
+                    if d.get("after") is not None:
+                        click.echo(f"      + {d['after']}", err=True)
+    if report is not None:
+        _write_report(report, results, MarkdownOptions(True, ignore_order, ignore_labels))
+    total = sum(len(r.skills) for r in results)
+    bad = sum(1 for r in results for s in r.skills if s.status == "failed")
+    click.echo(f"ezmigrate: {len(results)} files compared, {total} classes, "
+               f"{total - bad} equivalent, {bad} not equivalent"
+               + (", some files could not be loaded" if unloadable else ""), err=True)
+    sys.exit(EXIT_ERROR if unloadable else EXIT_ATTENTION if bad else EXIT_OK)

@@ -34,6 +34,8 @@ class RewriteOptions:
     timeout: float = 20.0
     ignore_order: bool = False
     ignore_labels: bool = False
+    ontology: tuple[str, ...] = ()
+    """Resolved ontology files for verification workers (empty: the bundled default)."""
 
     @property
     def writes(self) -> bool:

@@ -1,11 +1,108 @@
-"""Verification of converted skills before ``rewrite`` writes anything (filled in by issue 4)."""
+"""Verification inside ``rewrite``: a file is written only if every class in it verified.
+
+Both versions of each changed file are loaded in isolated children (the legacy bytes as
+read, the migrated bytes in its place, same package layout). A converted skill whose model
+differs, or that does not load, fails with the difference; if anything in a file fails,
+the file keeps its old content and its other converted skills are reported as not written.
+"""
 
 from __future__ import annotations
 
+from ..results import Finding, SkillResult
 from ..runner import Migrated
 from ..session import RewriteOptions
+from .compare_files import ClassVerdict, compare_outcomes, load_failure
+from .pool import PoolConfig, job_for, run_jobs
+from .protocol import LoadOutcome
 
 
 def verify_migrated(migrated: list[Migrated], options: RewriteOptions) -> None:
-    """Placeholder: verification is not wired yet, so results stay unverified."""
-    return None
+    """Verify every changed file; revert (in memory) those that do not verify."""
+    if not migrated:
+        return
+    jobs = []
+    for item in migrated:
+        assert isinstance(item.result.new_source, bytes)
+        root = item.candidate.root
+        jobs.append(job_for(item.candidate.path, item.original, root))
+        jobs.append(job_for(item.candidate.path, item.result.new_source, root))
+    config = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=options.ontology)
+    outcomes = run_jobs(jobs, config)
+    for index, item in enumerate(migrated):
+        apply_verdicts(item, outcomes[2 * index], outcomes[2 * index + 1], options)
+
+
+def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
+                   options: RewriteOptions) -> None:
+    """Mark skills from the two loads; drop the new content unless everything verified."""
+    result = item.result
+    converted = [s for s in result.skills if s.status == "converted"]
+    if not before.loaded or not after.loaded:
+        side, outcome = ("legacy", before) if not before.loaded else ("migrated", after)
+        for skill in converted:
+            _fail(skill, load_failure(side, outcome))
+        _capture(result.notes, before, after)
+        result.new_source = None
+        return
+    verdicts = {v.name: v for v in compare_outcomes(
+        before, after, ignore_order=options.ignore_order, ignore_labels=options.ignore_labels)}
+    by_name = {s.name: s for s in result.skills}
+    all_ok = True
+    for name, verdict in verdicts.items():
+        skill = by_name.get(name)
+        if verdict.equivalent:
+            if skill is not None and skill.status == "converted":
+                skill.equivalent = True
+            continue
+        all_ok = False
+        if skill is None:
+            skill = SkillResult(name, verdict.line_before or 0, "failed")
+            result.skills.append(skill)
+        _fail(skill, _reason(verdict), verdict)
+    _attach_findings(result.skills, after)
+    if not all_ok:
+        for skill in converted:
+            if skill.status == "converted":
+                skill.status = "skipped"
+                skill.reason = "verified, but not written: another class in this file failed"
+        result.new_source = None
+
+
+STATIC_KINDS = frozenset({"unknown-vocabulary"})
+
+
+def _fail(skill: SkillResult, reason: str, verdict: ClassVerdict | None = None) -> None:
+    skill.status = "failed"
+    skill.reason = reason
+    skill.equivalent = False if verdict is not None and verdict.verdict == "different" else None
+    if verdict is not None and verdict.diff:
+        skill.diff = verdict.diff
+
+
+def _reason(verdict: ClassVerdict) -> str:
+    if verdict.verdict == "different":
+        first = verdict.diff[0]
+        return f"not equivalent after migration ({verdict.message}): {first['where']}: " \
+               f"{first['message']}"
+    return verdict.message
+
+
+def _attach_findings(skills: list[SkillResult], after: LoadOutcome) -> None:
+    """Runtime check findings (domain/range, datatypes...) of the migrated skills."""
+    by_name = {s.name: s for s in skills}
+    for data in after.findings:
+        skill = by_name.get(str(data.get("skill", "")))
+        if skill is None:
+            continue
+        kind = str(data.get("kind", "check")).replace("_", "-")
+        message = str(data.get("message", ""))
+        if kind in STATIC_KINDS:  # already reported by the static pass, once per term
+            continue
+        if not any(f.message == message for f in skill.findings):
+            skill.findings.append(Finding(kind, int(data.get("line") or 0), message))
+
+
+def _capture(notes: list[str], *outcomes: LoadOutcome) -> None:
+    for outcome in outcomes:
+        if outcome.stdout.strip():
+            notes.append("output while loading:\n" + outcome.stdout.strip()[-2000:])

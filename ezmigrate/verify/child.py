@@ -1,0 +1,102 @@
+"""Inside the forked child: isolate, import one file, report its models, and exit.
+
+The child closes stdin, captures stdout and stderr into files, limits its address space,
+loads the file under the legacy import stand-ins with EzSkiROS checks only collected (a
+latent type error in a skill is a finding, not a failed load), writes the outcome as JSON,
+and leaves with ``os._exit`` so that nothing of the parent's state (buffers, atexit hooks)
+runs twice.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import resource
+import sys
+import time
+import traceback
+from pathlib import Path
+from typing import Any
+
+from .protocol import LoadJob, LoadOutcome
+
+
+def isolate(stdout_path: str, stderr_path: str, memory_bytes: int | None) -> None:
+    """Redirect the standard streams and cap memory, at the file-descriptor level."""
+    devnull = os.open(os.devnull, os.O_RDONLY)
+    os.dup2(devnull, 0)
+    for fd, target in ((1, stdout_path), (2, stderr_path)):
+        handle = os.open(target, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+        os.dup2(handle, fd)
+        os.close(handle)
+    sys.stdin = open(os.devnull)  # noqa: SIM115  (lives until the child exits)
+    if memory_bytes:
+        try:
+            resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
+        except (ValueError, OSError):
+            pass
+
+
+def load(job: LoadJob) -> LoadOutcome:
+    """Import the job's file and turn whatever happens into an outcome (never raises)."""
+    from ezskiros_runtime.dsl.policy import collecting
+    from ezskiros_runtime.legacy.errors import ModuleLoadError
+    from ezskiros_runtime.legacy.loader import load_bytes
+
+    started = time.perf_counter()
+    path = Path(job.path)
+    try:
+        source = job.source if job.source is not None else path.read_bytes()
+        with collecting():
+            result = load_bytes(source, path, root=Path(job.root) if job.root else None)
+    except SystemExit as stop:
+        return LoadOutcome("exit", f"the module called sys.exit({stop.code!r}) while loading")
+    except MemoryError:
+        return LoadOutcome("memory", "the module ran out of memory while loading")
+    except ModuleLoadError as error:
+        status = "syntax" if isinstance(error.__cause__, SyntaxError) else "import-error"
+        message = str(error)
+        if status == "syntax":
+            version = f"{sys.version_info.major}.{sys.version_info.minor}"
+            message = f"cannot import under Python {version}: {message}"
+        return LoadOutcome(status, message, getattr(error, "line", None))
+    except Exception as error:  # a loader bug still gives a verdict for this file only
+        return LoadOutcome("import-error", f"{type(error).__name__}: {error}\n"
+                           + traceback.format_exc(limit=4))
+    return LoadOutcome(
+        "ok",
+        models=[m.to_json() for m in result.models],
+        errors=[_plain(e) for e in result.errors],
+        findings=[_plain(f) for f in result.findings],
+        seconds=time.perf_counter() - started)
+
+
+def _plain(item: Any) -> dict[str, Any]:
+    if hasattr(item, "to_json"):
+        data: dict[str, Any] = item.to_json()
+        return data
+    if hasattr(item, "__dataclass_fields__"):
+        from dataclasses import asdict
+
+        return {k: (str(v) if not isinstance(v, (int, float, str, type(None))) else v)
+                for k, v in asdict(item).items()}
+    return {"message": str(item)}
+
+
+def run_child(job: LoadJob, result_path: str, stdout_path: str, stderr_path: str,
+              memory_bytes: int | None) -> None:
+    """The whole life of a forked child; ends the process."""
+    code = 0
+    try:
+        isolate(stdout_path, stderr_path, memory_bytes)
+        outcome = load(job)
+        with open(result_path, "w", encoding="utf-8") as handle:
+            json.dump(outcome.to_json(), handle)
+    except BaseException:  # noqa: BLE001  (the child must always reach os._exit)
+        code = 70
+    finally:
+        try:
+            sys.stdout.flush()
+            sys.stderr.flush()
+        finally:
+            os._exit(code)

@@ -1,0 +1,75 @@
+"""``ezmigrate verify BEFORE AFTER``: prove two versions of files or folders equivalent."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..discover import discover
+from ..results import FileResult, SkillResult
+from .compare_files import compare_outcomes, load_failure
+from .pool import PoolConfig, job_for, run_jobs
+
+
+@dataclass(frozen=True)
+class VerifyOptions:
+    """What ``verify`` compares and how strictly."""
+
+    before: Path
+    after: Path
+    pool: PoolConfig
+    ignore_order: bool = False
+    ignore_labels: bool = False
+    exclude: tuple[str, ...] = ()
+
+
+def _pairs(options: VerifyOptions) -> list[tuple[str, Path | None, Path | None]]:
+    if options.before.is_file() or options.after.is_file():
+        return [(options.after.name, options.before, options.after)]
+    old, _ = discover([options.before], options.exclude)
+    new, _ = discover([options.after], options.exclude)
+    old_map = {c.relative: c.path for c in old}
+    new_map = {c.relative: c.path for c in new}
+    return [(rel, old_map.get(rel), new_map.get(rel))
+            for rel in sorted(set(old_map) | set(new_map))]
+
+
+def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
+    """Per-file results, and whether some file could not be loaded at all."""
+    pairs = _pairs(options)
+    jobs, slots = [], []
+    for _, old, new in pairs:
+        for path, root in ((old, options.before), (new, options.after)):
+            if path is not None:
+                slots.append(len(jobs))
+                jobs.append(job_for(path, None, root if root.is_dir() else None))
+            else:
+                slots.append(-1)
+    outcomes = run_jobs(jobs, options.pool)
+    results: list[FileResult] = []
+    unloadable = False
+    for index, (relative, old, new) in enumerate(pairs):
+        result = FileResult(path=relative)
+        results.append(result)
+        if old is None or new is None:
+            result.error = "missing after migration" if new is None else "only in the new tree"
+            result.skills.append(SkillResult("*", 0, "failed", result.error, equivalent=False))
+            continue
+        before = outcomes[slots[2 * index]]
+        after = outcomes[slots[2 * index + 1]]
+        if not before.loaded or not after.loaded:
+            unloadable = True
+            side, outcome = ("legacy", before) if not before.loaded else ("migrated", after)
+            result.error = load_failure(side, outcome)
+            result.error_line = outcome.line
+            continue
+        same_text = old.read_bytes() == new.read_bytes()
+        for verdict in compare_outcomes(before, after, ignore_order=options.ignore_order,
+                                        ignore_labels=options.ignore_labels):
+            status = ("unchanged" if same_text else "converted") if verdict.equivalent \
+                else "failed"
+            results[-1].skills.append(SkillResult(
+                verdict.name, verdict.line_after or verdict.line_before or 0, status,
+                None if verdict.equivalent else verdict.message, equivalent=verdict.equivalent,
+                diff=verdict.diff or None))
+    return results, unloadable

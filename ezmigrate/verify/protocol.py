@@ -1,0 +1,58 @@
+"""What crosses the process boundary during verification: load jobs and their outcomes.
+
+Plain JSON-ready dataclasses: a job says which file to import (and, for a rewrite not yet
+written, the bytes to import instead of the file's own); an outcome carries the models,
+class errors, check findings and captured output, or why the load failed.
+"""
+
+from __future__ import annotations
+
+import base64
+from dataclasses import asdict, dataclass, field
+from typing import Any, Literal
+
+Status = Literal["ok", "import-error", "syntax", "timeout", "crashed", "exit", "memory"]
+
+
+@dataclass
+class LoadJob:
+    """Import ``path`` (or ``source`` in its place, keeping its package layout)."""
+
+    path: str
+    source: bytes | None = None
+    root: str | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        return {"path": self.path, "root": self.root,
+                "source": None if self.source is None else base64.b64encode(self.source).decode()}
+
+    @classmethod
+    def from_json(cls, data: dict[str, Any]) -> LoadJob:
+        raw = data.get("source")
+        return cls(data["path"], None if raw is None else base64.b64decode(raw), data.get("root"))
+
+
+@dataclass
+class LoadOutcome:
+    """The result of one load. ``models`` are ``SkillModel.to_json()`` dicts."""
+
+    status: Status
+    message: str = ""
+    line: int | None = None
+    models: list[dict[str, Any]] = field(default_factory=list)
+    errors: list[dict[str, Any]] = field(default_factory=list)
+    findings: list[dict[str, Any]] = field(default_factory=list)
+    stdout: str = ""
+    stderr: str = ""
+    seconds: float = 0.0
+
+    def to_json(self) -> dict[str, Any]:
+        return asdict(self)
+
+    @classmethod
+    def from_json(cls, data: dict[str, Any]) -> LoadOutcome:
+        return cls(**data)
+
+    @property
+    def loaded(self) -> bool:
+        return self.status == "ok"
