@@ -45,6 +45,20 @@ def _unlabelled(c: Condition) -> Condition:
     return replace(c, label="", children=tuple(_unlabelled(x) for x in c.children))
 
 
+def _relaxed(m: SkillModel, ignore_order: bool, ignore_labels: bool) -> SkillModel:
+    """``m`` without what the flags say to ignore, for the final exact check: the flags relax
+    order and labels only, never details the notation does not show (values of a labelled
+    ``Element``, data types)."""
+    lists = {which: m.conditions(which) for which in CONDITION_LISTS}
+    if ignore_labels:
+        lists = {which: tuple(_unlabelled(c) for c in cs) for which, cs in lists.items()}
+    params = m.params
+    if ignore_order:
+        params = tuple(sorted(params, key=repr))
+        lists = {which: tuple(sorted(cs, key=repr)) for which, cs in lists.items()}
+    return replace(m, params=params, pre=lists["pre"], hold=lists["hold"], post=lists["post"])
+
+
 def _sequence_diff(where: str, before: list[str], after: list[str], ignore_order: bool,
                    noun: str) -> list[Difference]:
     if ignore_order:
@@ -96,9 +110,10 @@ def compare(before: SkillModel, after: SkillModel, *, ignore_order: bool = False
         diffs += _sequence_diff(which, [render_condition(c) for c in b_conds],
                                 [render_condition(c) for c in a_conds], ignore_order,
                                 f"{which}-condition")
-    if not diffs and not (ignore_order or ignore_labels):
-        b_json = replace(before, name=after.name).canonical_json()
-        a_json = after.canonical_json()
+    if not diffs:
+        b_json = _relaxed(replace(before, name=after.name), ignore_order,
+                          ignore_labels).canonical_json()
+        a_json = _relaxed(after, ignore_order, ignore_labels).canonical_json()
         if b_json != a_json:  # a detail the legacy notation does not show (e.g. data type)
             diffs.append(Difference("model", "models differ", before=b_json, after=a_json))
     return diffs
