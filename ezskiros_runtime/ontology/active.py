@@ -1,0 +1,69 @@
+"""The process-wide ontology: resolved once from configuration, replaceable explicitly.
+
+Namespaces (`skiros.Product`) and the early checks need one ontology without every call
+site passing it around, and loading it must happen once per process, not once per skill
+file. `active_index()` resolves the configuration (working directory, environment) on first
+use; the CLI and tests call `use_ontology()` to pin a specific one.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+from collections.abc import Sequence
+
+from .config import OntologySource, resolve_ontology_paths
+from .index import OntologyIndex, load_index
+
+_lock = threading.RLock()
+_active: OntologyIndex | None = None
+_source: OntologySource | None = None
+
+
+def active_index() -> OntologyIndex:
+    """The ontology of this process, loading it from the configuration on first use."""
+    global _active
+    index = _active
+    if index is not None:
+        return index
+    with _lock:
+        if _active is None:
+            _active = _load_configured()
+        return _active
+
+
+def active_source() -> OntologySource | None:
+    """Where the active index came from (None before the first load or for a given index)."""
+    return _source
+
+
+def use_ontology(
+    paths_or_index: Sequence[str | os.PathLike[str]] | OntologyIndex | None,
+) -> OntologyIndex:
+    """Replace the active index and return it.
+
+    An `OntologyIndex` is used as is; paths are loaded (through the cache); None resolves
+    the configuration again, e.g. after the working directory or environment changed.
+    """
+    global _active, _source
+    with _lock:
+        if paths_or_index is None:
+            _active = _load_configured()
+        elif isinstance(paths_or_index, OntologyIndex):
+            _active = paths_or_index
+            _source = None
+        else:
+            if isinstance(paths_or_index, (str, os.PathLike)):
+                paths_or_index = [paths_or_index]
+            source = resolve_ontology_paths(paths_or_index)
+            _active = load_index(list(source.paths) or None)
+            _source = source
+        return _active
+
+
+def _load_configured() -> OntologyIndex:
+    global _source
+    source = resolve_ontology_paths()
+    index = load_index(list(source.paths) or None)
+    _source = source
+    return index

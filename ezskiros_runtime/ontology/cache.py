@@ -1,0 +1,226 @@
+"""The persistent index cache: pickled indexes keyed by the content of the ontology files.
+
+Parsing OWL with rdflib (and importing rdflib at all) dominates start-up, yet the files
+almost never change between launches. So the index is stored under a hash of everything
+that determines it: a format version, the bytes of each file in load order (not their
+paths, so a moved checkout still hits), the package version, and the source of the
+modules that build the index (so editing that code cannot serve a stale index).
+
+The cache is an optimisation only: an unreadable, corrupt or unwritable cache is ignored
+and the index is rebuilt. Writes are atomic (temporary file in the same folder, then
+os.replace), so a concurrent reader never sees half a file. Each write keeps only the
+most recently used indexes, since every edit of an ontology creates a new key.
+
+The files are pickles, so the cache folder must be as trusted as the code itself: it is
+the user's own cache folder, never a shared or downloaded one.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import sys
+from collections.abc import Callable, Iterable, Mapping
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, BinaryIO
+
+if TYPE_CHECKING:
+    from .index import OntologyIndex
+    from .loading import OntologyFile
+
+CACHE_FORMAT_VERSION = "1"
+"""Bump when the pickled shape of the index changes incompatibly."""
+
+_INDEX_CODE = (
+    "build.py",
+    "closure.py",
+    "expressions.py",
+    "index.py",
+    "loading.py",
+    "naming.py",
+)
+"""Modules whose code decides what the index contains (their source is part of the key)."""
+
+KEEP_INDEXES = 16
+"""How many cached indexes a write leaves in the folder (most recently used first)."""
+
+_code_digest_memo: str | None = None
+
+
+class CacheStats:
+    """Counters for this process, so tests and `--verbose` output can show what happened."""
+
+    __slots__ = ("hits", "ignored_errors", "misses", "writes")
+
+    def __init__(self) -> None:
+        self.hits = self.misses = self.writes = self.ignored_errors = 0
+
+    def __repr__(self) -> str:
+        return (
+            f"CacheStats(hits={self.hits}, misses={self.misses}, writes={self.writes}, "
+            f"ignored_errors={self.ignored_errors})"
+        )
+
+
+stats = CacheStats()
+
+
+def _sha256_factory() -> Callable[[], Any]:
+    """sha256, preferably from CPython's built-in module.
+
+    `import hashlib` loads OpenSSL, about 5 ms: most of a warm load. The built-in
+    implementation gives the same digest; hashlib remains the fallback.
+    """
+    try:
+        from _sha256 import sha256  # CPython <= 3.11
+    except ImportError:
+        try:
+            from _sha2 import sha256  # CPython >= 3.12
+        except ImportError:
+            from hashlib import sha256
+    return sha256
+
+
+def _unpickle(stream: BinaryIO) -> object:
+    """pickle.load via the C module: `import pickle` alone costs a few ms of set-up."""
+    try:
+        from _pickle import load
+    except ImportError:  # not CPython
+        from pickle import load
+    return load(stream)
+
+
+def default_cache_dir(environ: Mapping[str, str] | None = None) -> Path:
+    """`EZSKIROS_CACHE_DIR`, else `$XDG_CACHE_HOME/ezskiros`, else `~/.cache/ezskiros`."""
+    env = os.environ if environ is None else environ
+    explicit = env.get("EZSKIROS_CACHE_DIR")
+    if explicit:
+        return Path(explicit).expanduser()
+    xdg = env.get("XDG_CACHE_HOME")
+    if xdg:
+        return Path(xdg).expanduser() / "ezskiros"
+    return Path.home() / ".cache" / "ezskiros"
+
+
+def _package_version() -> str:
+    """The package version if the package states one, without importlib.metadata.
+
+    importlib.metadata costs ~30 ms to import, more than the whole warm load; the code
+    digest below already changes whenever the index-building code does.
+    """
+    package = sys.modules.get("ezskiros_runtime")
+    return str(getattr(package, "__version__", ""))
+
+
+def _code_digest() -> str:
+    global _code_digest_memo
+    if _code_digest_memo is None:
+        digest = _sha256_factory()()
+        here = Path(__file__).resolve().parent
+        for name in _INDEX_CODE:
+            digest.update(name.encode() + b"\0")
+            try:
+                digest.update((here / name).read_bytes())
+            except OSError:  # installed without sources (zipapp, .pyc only): version only
+                digest.update(b"?")
+        _code_digest_memo = digest.hexdigest()
+    return _code_digest_memo
+
+
+def fingerprint(files: Iterable[OntologyFile]) -> str:
+    """The content hash of a set of ontology files, in load order; paths do not count."""
+    digest = _sha256_factory()()
+    for part in (
+        b"ezskiros-ontology-index",
+        CACHE_FORMAT_VERSION.encode(),
+        _package_version().encode(),
+        _code_digest().encode(),
+    ):
+        digest.update(part + b"\0")
+    for entry in files:
+        digest.update((entry.format or "auto").encode() + b"\0")
+        digest.update(len(entry.data).to_bytes(8, "big"))
+        digest.update(entry.data)
+    return digest.hexdigest()
+
+
+def cache_path(directory: Path, fingerprint: str) -> Path:
+    """Where the index with this fingerprint is (or would be) stored."""
+    return directory / f"ontology-index-{fingerprint}.pickle"
+
+
+def read_cached_index(directory: Path, fingerprint: str) -> OntologyIndex | None:
+    """The cached index for `fingerprint`, or None on a miss or any problem with the file."""
+    from .index import OntologyIndex
+
+    path = cache_path(directory, fingerprint)
+    try:
+        with path.open("rb") as stream:
+            index = _unpickle(stream)
+    except FileNotFoundError:
+        stats.misses += 1
+        return None
+    except Exception as error:  # corrupt, truncated, from other code, unreadable: rebuild
+        stats.misses += 1
+        _ignored("cannot read ontology cache %s: %s", path, error)
+        return None
+    if not isinstance(index, OntologyIndex) or index.fingerprint != fingerprint:
+        stats.misses += 1
+        _ignored("ignoring ontology cache %s: not an index for this content", path)
+        return None
+    stats.hits += 1
+    with contextlib.suppress(OSError):  # recency for pruning; a read-only cache still works
+        os.utime(path)
+    return index
+
+
+def write_cached_index(directory: Path, index: OntologyIndex) -> Path | None:
+    """Store `index` atomically; returns the file, or None when the cache is unwritable."""
+    import pickle
+    import tempfile
+
+    target = cache_path(directory, index.fingerprint)
+    temporary: str | None = None
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+        handle, temporary = tempfile.mkstemp(
+            dir=directory, prefix=".ontology-index-", suffix=".tmp"
+        )
+        with os.fdopen(handle, "wb") as stream:
+            pickle.dump(index, stream, protocol=pickle.HIGHEST_PROTOCOL)
+        os.replace(temporary, target)
+        temporary = None
+    except Exception as error:  # read-only home, full disk, a file where the folder should be
+        _ignored("cannot write ontology cache %s: %s", target, error)
+        return None
+    finally:
+        if temporary is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(temporary)
+    stats.writes += 1
+    _prune(directory, keep=target)
+    return target
+
+
+def _prune(directory: Path, keep: Path) -> None:
+    """Delete all but the `KEEP_INDEXES` most recently used indexes (never `keep`)."""
+    try:
+        found = [
+            (entry.stat().st_mtime, entry)
+            for entry in directory.glob("ontology-index-*.pickle")
+            if entry != keep
+        ]
+    except OSError as error:
+        _ignored("cannot list ontology cache %s: %s", directory, error)
+        return
+    found.sort(reverse=True)
+    for _mtime, stale in found[KEEP_INDEXES - 1 :]:
+        with contextlib.suppress(OSError):
+            stale.unlink()
+
+
+def _ignored(message: str, *args: object) -> None:
+    import logging
+
+    stats.ignored_errors += 1
+    logging.getLogger(__name__).debug(message, *args)

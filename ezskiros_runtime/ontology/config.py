@@ -1,0 +1,145 @@
+"""Which ontology files to load: argument, environment, pyproject.toml, or the bundled default.
+
+Precedence, first match wins:
+1. explicit paths (the CLI's repeatable `--ontology`), relative to the working directory;
+2. `EZSKIROS_ONTOLOGY`, `os.pathsep`-separated, relative to the working directory;
+3. `[tool.ezmigrate] ontology = [...]` in the nearest pyproject.toml walking up from
+   `start`; paths relative to that file's folder (so the setting means the same from any
+   subfolder). The nearest pyproject.toml is the project, even without our table: the
+   other `[tool.ezmigrate]` settings (ezmigrate.config) are read from the same file;
+4. the vocabulary bundled with the package.
+
+A configured path that does not exist is an `OntologyConfigError` that says where the path
+came from: silently falling back to another ontology would make every check misleading.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .errors import OntologyConfigError
+
+ENV_VAR = "EZSKIROS_ONTOLOGY"
+TOOL_TABLE = "ezmigrate"
+
+
+@dataclass(frozen=True)
+class OntologySource:
+    """The resolved ontology paths and where they came from (for messages and `--verbose`).
+
+    `origin` is "argument", "environment", "pyproject:<path to pyproject.toml>" or "bundled"
+    (then `paths` is empty and the bundled vocabulary applies).
+    """
+
+    paths: tuple[Path, ...]
+    origin: str
+
+    def describe(self) -> str:
+        """One line for humans: `ontology from EZSKIROS_ONTOLOGY: a.owl, b.ttl`."""
+        where = {
+            "argument": "--ontology",
+            "environment": ENV_VAR,
+            "bundled": "the bundled default",
+        }.get(self.origin, self.origin.replace("pyproject:", "", 1))
+        if not self.paths:
+            return f"ontology from {where}"
+        return f"ontology from {where}: " + ", ".join(str(p) for p in self.paths)
+
+
+def resolve_ontology_paths(
+    explicit: Sequence[str | os.PathLike[str]] | None = None,
+    *,
+    environ: Mapping[str, str] | None = None,
+    start: Path | None = None,
+) -> OntologySource:
+    """Decide which ontology files to load, following the precedence in the module doc."""
+    cwd = Path.cwd()
+    if isinstance(explicit, (str, os.PathLike)):
+        explicit = [explicit]
+    if explicit:
+        paths = [_absolute(Path(p), cwd) for p in explicit]
+        return OntologySource(_existing(paths, "the --ontology argument"), "argument")
+
+    env = os.environ if environ is None else environ
+    raw = env.get(ENV_VAR, "")
+    entries = [entry for entry in raw.split(os.pathsep) if entry.strip()]
+    if entries:
+        paths = [_absolute(Path(entry.strip()), cwd) for entry in entries]
+        return OntologySource(
+            _existing(paths, f"the {ENV_VAR} environment variable"), "environment"
+        )
+
+    found = find_tool_config(start if start is not None else cwd)
+    if found is not None:
+        pyproject, table = found
+        configured = table.get("ontology")
+        if configured is not None:
+            paths = [_absolute(p, pyproject.parent) for p in _path_list(configured, pyproject)]
+            if paths:
+                where = f"[tool.{TOOL_TABLE}] ontology in {pyproject}"
+                return OntologySource(_existing(paths, where), f"pyproject:{pyproject}")
+    return OntologySource((), "bundled")
+
+
+def find_tool_config(start: Path) -> tuple[Path, dict[str, Any]] | None:
+    """The nearest pyproject.toml at or above `start`, and its [tool.ezmigrate] table.
+
+    The table is empty when the file has none; None when there is no pyproject.toml at all.
+    """
+    here = Path(start).expanduser()
+    here = here if here.is_absolute() else Path.cwd() / here
+    folder = here if here.is_dir() else here.parent
+    for candidate_dir in (folder, *folder.parents):
+        candidate = candidate_dir / "pyproject.toml"
+        if not candidate.is_file():
+            continue
+        tool = _read_toml(candidate).get("tool", {})
+        table = tool.get(TOOL_TABLE, {}) if isinstance(tool, dict) else {}
+        if not isinstance(table, dict):
+            raise OntologyConfigError(f"{candidate}: [tool.{TOOL_TABLE}] must be a table")
+        return candidate, table
+    return None
+
+
+def _read_toml(path: Path) -> dict[str, Any]:
+    if sys.version_info >= (3, 11):
+        import tomllib
+    else:  # pragma: no cover - exercised on Python 3.10 only
+        import tomli as tomllib
+    try:
+        with path.open("rb") as stream:
+            return tomllib.load(stream)
+    except OSError as error:
+        raise OntologyConfigError(f"{path}: cannot read: {error.strerror or error}") from error
+    except tomllib.TOMLDecodeError as error:
+        raise OntologyConfigError(f"{path}: invalid TOML: {error}") from error
+
+
+def _path_list(value: object, pyproject: Path) -> list[Path]:
+    """`ontology` may be one path or a list of paths (strings)."""
+    if isinstance(value, str):
+        return [Path(value)]
+    if isinstance(value, list) and all(isinstance(item, str) for item in value):
+        return [Path(item) for item in value]
+    raise OntologyConfigError(
+        f"{pyproject}: [tool.{TOOL_TABLE}] ontology must be a path or a list of paths, "
+        f"got {value!r}"
+    )
+
+
+def _absolute(path: Path, base: Path) -> Path:
+    path = path.expanduser()
+    return path if path.is_absolute() else base / path
+
+
+def _existing(paths: list[Path], where: str) -> tuple[Path, ...]:
+    missing = [p for p in paths if not p.exists()]
+    if missing:
+        names = ", ".join(str(p) for p in missing)
+        raise OntologyConfigError(f"ontology path not found: {names} (from {where})")
+    return tuple(paths)

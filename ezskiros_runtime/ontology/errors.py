@@ -1,0 +1,32 @@
+"""Exceptions of the ontology layer.
+
+They live in their own tiny module so that callers (the CLI, the DSL checks) can catch
+them without importing rdflib or the index machinery.
+"""
+
+from __future__ import annotations
+
+
+class OntologyError(Exception):
+    """Base of every ontology problem, so a caller can report them all in one place."""
+
+
+class OntologyLoadError(OntologyError):
+    """An ontology file or folder could not be read or parsed.
+
+    The message always names the file (and the line when the parser reports one), because
+    the user has to go and fix that file.
+    """
+
+    def __init__(self, message: str, *, path: str | None = None, line: int | None = None):
+        super().__init__(message)
+        self.path = path
+        self.line = line
+
+
+class OntologyConfigError(OntologyError):
+    """The configuration points at something unusable (a missing path, a bad pyproject).
+
+    The message names where the setting came from (argument, environment variable or the
+    pyproject.toml file), since that is what the user has to correct.
+    """

@@ -1,0 +1,349 @@
+"""The ontology index: what the DSL and the migrator need to know about the vocabulary.
+
+The index is plain, picklable data (strings, frozensets, small frozen dataclasses), not an
+rdflib graph, for two reasons: it can be cached on disk and loaded without importing rdflib
+(whose import alone costs more than the whole warm load), and every question the checks ask
+("is this a class?", "is A a subclass of B?", "what is the range of contain?") becomes a
+dictionary lookup instead of a graph query.
+
+`load_index` is the only entry point that touches files; everything else here is queries.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from .closure import reflexive_transitive_closure
+from .expressions import (
+    ClassExpr,
+    ComplementOf,
+    IntersectionOf,
+    Named,
+    UnionOf,
+    Unsupported,
+)
+from .naming import DEFAULT_PREFIX, local_name, looks_like_iri, split_iri
+
+OWL_THING = "http://www.w3.org/2002/07/owl#Thing"
+PROPERTY_KINDS = ("object", "data", "annotation")
+NAME_KINDS = ("class", *PROPERTY_KINDS)
+
+_DATA_DIR = Path(__file__).resolve().parent / "data"
+
+
+def bundled_ontology_path() -> Path:
+    """The vocabulary shipped with the package, used when nothing else is configured."""
+    return _DATA_DIR / "skiros-core.ttl"
+
+
+@dataclass(frozen=True)
+class PropertyInfo:
+    """One object, datatype or annotation property, with its effective domain and range.
+
+    `domains` and `ranges` are the property's own when it declares any, else those inherited
+    from its nearest super-properties that declare some (`domain_sources` / `range_sources`
+    name where they were declared, so a message can say "inherited from ..."). Several
+    entries mean all of them must hold, as several rdfs:domain triples do in OWL.
+    """
+
+    iri: str
+    kind: str
+    domains: tuple[ClassExpr, ...]
+    ranges: tuple[ClassExpr, ...]
+    super_properties: frozenset[str]
+    domain_sources: tuple[str, ...] = ()
+    range_sources: tuple[str, ...] = ()
+
+
+class OntologyIndex:
+    """Classes, properties and prefixes of the loaded ontology files, ready for lookups.
+
+    Build it with `load_index`; treat it as read-only. `sources` lists the files it came
+    from (for messages); `fingerprint` identifies their content.
+    """
+
+    prefixes: Mapping[str, str]
+    default_prefix: str
+    classes: frozenset[str]
+    properties: Mapping[str, PropertyInfo]
+    sources: tuple[str, ...]
+    fingerprint: str
+
+    def __init__(
+        self,
+        *,
+        prefixes: Mapping[str, str],
+        classes: Iterable[str],
+        properties: Mapping[str, PropertyInfo],
+        direct_superclasses: Mapping[str, Iterable[str]] | None = None,
+        equivalent_classes: Mapping[str, Iterable[str]] | None = None,
+        sources: Iterable[str] = (),
+        fingerprint: str = "",
+        default_prefix: str = DEFAULT_PREFIX,
+    ) -> None:
+        self.prefixes = dict(prefixes)
+        self.default_prefix = default_prefix
+        self.classes = frozenset(classes)
+        self.properties = dict(properties)
+        self.sources = tuple(sources)
+        self.fingerprint = fingerprint
+        direct = {c: frozenset(s) for c, s in (direct_superclasses or {}).items()}
+        self._direct_superclasses: dict[str, frozenset[str]] = direct
+        edges: dict[str, set[str]] = {c: set(s) for c, s in direct.items()}
+        for cls, same in (equivalent_classes or {}).items():
+            edges.setdefault(cls, set()).update(same)
+        self._superclasses = reflexive_transitive_closure(self.classes, edges)
+        self._namespace_prefix: dict[str, str] = {}
+        for prefix, namespace in self.prefixes.items():
+            self._namespace_prefix.setdefault(namespace, prefix)
+        self._classes_by_local = _group_by_local_name(self.classes)
+        self._properties_by_local = _group_by_local_name(self.properties)
+
+    # -- names ---------------------------------------------------------------------------
+
+    def expand(self, name: str) -> str | None:
+        """`skiros:Product`, `:Product` or `Product` -> the full IRI; unknown prefix -> None.
+
+        A bare or `:`-prefixed name means the default prefix, as in SkiROS2. Whether the
+        IRI names anything is not checked here (use `is_class` / `property`). Absolute IRIs
+        are returned unchanged.
+        """
+        name = name.strip()
+        if name.startswith("<") and name.endswith(">"):
+            name = name[1:-1]
+        if not name:
+            return None
+        if looks_like_iri(name):
+            return name
+        prefix, colon, local = name.partition(":")
+        if not colon:
+            prefix, local = self.default_prefix, name
+        elif not prefix:
+            prefix = self.default_prefix
+        namespace = self.prefixes.get(prefix)
+        if namespace is None or not local:
+            return None
+        return namespace + local
+
+    def compact(self, iri: str) -> str:
+        """IRI -> `prefix:Local` (always with the prefix); unchanged if no prefix matches."""
+        namespace, local = split_iri(iri)
+        prefix = self._namespace_prefix.get(namespace)
+        if prefix is not None and local:
+            return f"{prefix}:{local}"
+        for candidate_ns, candidate_prefix in sorted(
+            self._namespace_prefix.items(), key=lambda item: -len(item[0])
+        ):
+            if iri.startswith(candidate_ns) and len(iri) > len(candidate_ns):
+                return f"{candidate_prefix}:{iri[len(candidate_ns) :]}"
+        return iri
+
+    def render(self, expr: ClassExpr) -> str:
+        """A class expression with compact names, for messages: `(skiros:A | ~cora:B)`."""
+        return expr.render(self.compact)
+
+    def local_names(self, prefix: str) -> list[str]:
+        """Local names of the classes and properties in a prefix's namespace, sorted.
+
+        Namespace objects use it for `dir()` and completion.
+        """
+        namespace = self.prefixes.get(prefix)
+        if namespace is None:
+            return []
+        found = {
+            local
+            for iri in (*self.classes, *self.properties)
+            for ns, local in [split_iri(iri)]
+            if ns == namespace and local
+        }
+        return sorted(found)
+
+    # -- classes -------------------------------------------------------------------------
+
+    def is_class(self, iri: str) -> bool:
+        """True when `iri` is a named class of the loaded files."""
+        return iri in self.classes
+
+    def superclasses(self, iri: str) -> frozenset[str]:
+        """`iri` and all its named superclasses (rdfs:subClassOf, equivalences, intersections).
+
+        For an IRI the index does not know, just `{iri}`: reflexivity holds for anything.
+        """
+        return self._superclasses.get(iri) or frozenset((iri,))
+
+    def direct_superclasses(self, iri: str) -> frozenset[str]:
+        """The named superclasses asserted for `iri` (no closure, no equivalences).
+
+        This is the shape to mirror as Python base classes. Odd ontologies can make it
+        cyclic; callers building class hierarchies must guard against that.
+        """
+        return self._direct_superclasses.get(iri, frozenset())
+
+    def is_subclass(self, sub: str, sup: str) -> bool:
+        """Reflexive, transitive subclass test; everything is a subclass of owl:Thing."""
+        return sup == OWL_THING or sup in self.superclasses(sub)
+
+    def classes_named(self, local: str) -> list[str]:
+        """IRIs of the classes with this local name, across all prefixes (sorted)."""
+        return list(self._classes_by_local.get(local, ()))
+
+    def satisfies(self, class_iri: str, expr: ClassExpr) -> bool | None:
+        """Does every instance of `class_iri` belong to `expr`? None when undecidable.
+
+        Named classes use the subclass closure; unions, intersections and complements use
+        three-valued logic, reading the hierarchy closed-world (a class that is not below
+        `B` counts as outside `B`), which is what the EzSkiROS paper's Python-subclass check
+        does. Unknown classes and `Unsupported` expressions give None, and callers then
+        report nothing rather than a false error.
+        """
+        if class_iri != OWL_THING and class_iri not in self.classes:
+            return None
+        return self._satisfies(class_iri, expr)
+
+    def _satisfies(self, class_iri: str, expr: ClassExpr) -> bool | None:
+        if isinstance(expr, Named):
+            if expr.iri == OWL_THING:
+                return True
+            if expr.iri not in self.classes:
+                return None
+            return expr.iri in self.superclasses(class_iri)
+        if isinstance(expr, UnionOf):
+            results = [self._satisfies(class_iri, m) for m in expr.members]
+            if any(r is True for r in results):
+                return True
+            return False if all(r is False for r in results) else None
+        if isinstance(expr, IntersectionOf):
+            results = [self._satisfies(class_iri, m) for m in expr.members]
+            if any(r is False for r in results):
+                return False
+            return True if all(r is True for r in results) else None
+        if isinstance(expr, ComplementOf):
+            inner = self._satisfies(class_iri, expr.expr)
+            return None if inner is None else not inner
+        if isinstance(expr, Unsupported):
+            return None
+        return None
+
+    # -- properties ----------------------------------------------------------------------
+
+    def property(self, iri: str) -> PropertyInfo | None:
+        """The property with this IRI, or None when no loaded file declares it."""
+        return self.properties.get(iri)
+
+    def properties_named(self, local: str) -> list[str]:
+        """IRIs of the properties with this local name, across all prefixes (sorted)."""
+        return list(self._properties_by_local.get(local, ()))
+
+    # -- suggestions ---------------------------------------------------------------------
+
+    def suggest(
+        self,
+        name: str,
+        kinds: Iterable[str] = ("class", "object", "data"),
+        limit: int = 3,
+    ) -> list[str]:
+        """Closest existing compact names to `name` ("did you mean"), best first.
+
+        `kinds` picks the vocabulary: "class", "object", "data", "annotation".
+        """
+        from .suggest import closest_names
+
+        wanted = set(kinds)
+        unknown = wanted.difference(NAME_KINDS)
+        if unknown:
+            raise ValueError(f"unknown name kinds {sorted(unknown)}; use {NAME_KINDS}")
+        candidates: list[str] = []
+        if "class" in wanted:
+            candidates.extend(self.compact(iri) for iri in self.classes)
+        candidates.extend(
+            self.compact(iri) for iri, info in self.properties.items() if info.kind in wanted
+        )
+        return closest_names(name, candidates, limit)
+
+    # -- plumbing ------------------------------------------------------------------------
+
+    def with_sources(self, sources: Iterable[str]) -> OntologyIndex:
+        """The same index, reporting other file paths (a cached index loaded from elsewhere)."""
+        clone = object.__new__(OntologyIndex)
+        clone.__dict__.update(self.__dict__)
+        clone.sources = tuple(sources)
+        return clone
+
+    def __repr__(self) -> str:
+        kinds = {k: sum(1 for p in self.properties.values() if p.kind == k) for k in PROPERTY_KINDS}
+        return (
+            f"<OntologyIndex {len(self.classes)} classes, {kinds['object']} object / "
+            f"{kinds['data']} data / {kinds['annotation']} annotation properties, "
+            f"prefixes {sorted(self.prefixes)}, {len(self.sources)} file(s)>"
+        )
+
+
+def _group_by_local_name(iris: Iterable[str]) -> dict[str, tuple[str, ...]]:
+    grouped: dict[str, list[str]] = {}
+    for iri in iris:
+        grouped.setdefault(local_name(iri), []).append(iri)
+    return {local: tuple(sorted(found)) for local, found in grouped.items()}
+
+
+def _as_path_list(
+    paths: Sequence[str | os.PathLike[str]] | str | os.PathLike[str] | None,
+) -> list[Path]:
+    """Accept one path as well as a sequence: a bare string must not become its characters."""
+    if paths is None:
+        return []
+    if isinstance(paths, (str, os.PathLike)):
+        return [Path(paths)]
+    return [Path(p) for p in paths]
+
+
+def load_index(
+    paths: Sequence[str | os.PathLike[str]] | None = None,
+    *,
+    cache: bool = True,
+    cache_dir: Path | None = None,
+) -> OntologyIndex:
+    """Load ontology files and folders into an index; None or empty -> the bundled default.
+
+    The file contents are hashed first; when the persistent cache holds an index for that
+    hash it is returned without importing rdflib (the fast path every launch after the
+    first takes). Otherwise the files are parsed with rdflib, indexed, and the result is
+    cached. Raises `OntologyLoadError` naming the file that is missing or does not parse.
+    """
+    # Imported here, not at module level: the index module stays cheap to import for code
+    # that only handles indexes, and `from .x import y` avoids the package's __getattr__.
+    from .cache import default_cache_dir, read_cached_index, write_cached_index
+    from .cache import fingerprint as content_fingerprint
+    from .loading import collect_ontology_files, read_ontology_files
+
+    requested = _as_path_list(paths) or [bundled_ontology_path()]
+    files = read_ontology_files(collect_ontology_files(requested))
+    sources = tuple(str(f.path) for f in files)
+    fingerprint = content_fingerprint(files)
+    directory = (cache_dir or default_cache_dir()) if cache else None
+    if directory is not None:
+        cached = read_cached_index(directory, fingerprint)
+        if cached is not None:
+            return cached if cached.sources == sources else cached.with_sources(sources)
+    from .build import build_index  # imports rdflib: only on a cache miss
+
+    index = build_index(files, fingerprint)
+    if directory is not None:
+        write_cached_index(directory, index)
+    return index
+
+
+__all__ = [
+    "ClassExpr",
+    "ComplementOf",
+    "IntersectionOf",
+    "Named",
+    "OntologyIndex",
+    "PropertyInfo",
+    "UnionOf",
+    "Unsupported",
+    "bundled_ontology_path",
+    "load_index",
+]
