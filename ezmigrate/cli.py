@@ -191,3 +191,36 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
                f"{total - bad} equivalent, {bad} not equivalent"
                + (", some files could not be loaded" if unloadable else ""), err=True)
     sys.exit(EXIT_ERROR if unloadable else EXIT_ATTENTION if bad else EXIT_OK)
+
+
+@main.command()
+@click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path, exists=True))
+@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
+              help="Ontology file or folder (repeatable).")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
+@click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
+@click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
+@click.option("--quiet", "-q", is_flag=True, help="Only errors and the summary.")
+@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], jobs: int | None,
+          timeout: float | None, exclude: tuple[str, ...], quiet: bool, debug: bool) -> None:
+    """For CI: fail on unmigrated legacy descriptions and on EzSkiROS check errors."""
+    from .check import run_check
+    from .runner import default_jobs
+    from .verify.pool import PoolConfig
+
+    try:
+        project = load_project_config(paths[0])
+        index, ontology_files = _load_index(ontology, paths[0])
+        pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
+                          timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
+        outcome = run_check(list(paths), index, pool, tuple(exclude) + project.exclude)
+    except Exception as error:  # never a raw traceback for the user
+        _fail(f"internal error: {error}", debug)
+    for message in outcome.messages:
+        if not quiet or message.severity == "error":
+            click.echo(str(message), err=True)
+    warnings = sum(1 for m in outcome.messages if m.severity == "warning")
+    click.echo(f"ezmigrate: {outcome.files} files checked, {outcome.skills} EzSkiROS skills "
+               f"loaded, {outcome.errors} errors, {warnings} warnings", err=True)
+    sys.exit(outcome.exit_code)
