@@ -7,6 +7,7 @@ vocabulary no loaded ontology defines, an Element type spelt without its prefix)
 
 from __future__ import annotations
 
+import difflib
 import re
 from typing import TYPE_CHECKING
 
@@ -54,11 +55,19 @@ def skill_findings(model: SkillModel, index: OntologyIndex | None) -> list[Findi
             known = iri is not None and (index.is_class(iri) if what == "class"
                                          else index.property(iri) is not None)
             if not known and term != "Unknown":
-                hint = index.suggest(term, ("class",) if what == "class" else ("object", "data"))
+                hint = _close(term, index.suggest(
+                    term, ("class",) if what == "class" else ("object", "data")))
                 extra = f"; did you mean {', '.join(hint)}?" if hint else ""
                 found.append(Finding("unknown-vocabulary", 0,
                                      f"{what} {term!r} is not in the loaded ontology{extra}"))
     return _unique(found)
+
+
+def _close(term: str, suggestions: list[str]) -> list[str]:
+    """Only suggestions whose local name is close to the term's: a typo, not a guess."""
+    local = term.rsplit(":", 1)[-1].lower()
+    return [s for s in suggestions
+            if difflib.SequenceMatcher(None, local, s.rsplit(":", 1)[-1].lower()).ratio() >= 0.8]
 
 
 def _unique(findings: list[Finding]) -> list[Finding]:

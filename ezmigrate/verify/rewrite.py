@@ -68,7 +68,8 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
         result.new_source = None
 
 
-STATIC_KINDS = frozenset({"unknown-vocabulary"})
+STATIC_KINDS = frozenset({"unknown-vocabulary", "undeclared-parameter"})
+"""Runtime finding kinds the static pass already reports (once per term or key)."""
 
 
 def _fail(skill: SkillResult, reason: str, verdict: ClassVerdict | None = None) -> None:
