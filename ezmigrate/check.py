@@ -80,7 +80,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
             loadable.append(item)
     outcomes = run_jobs([job_for(i.candidate.path, None, i.candidate.root) for i in loadable],
                         pool) if loadable else []
-    for item, loaded in zip(loadable, outcomes):
+    for item, loaded in zip(loadable, outcomes, strict=True):
         path = str(item.candidate.path)
         if not loaded.loaded:
             outcome.unloadable.append(path)

@@ -46,7 +46,7 @@ class FileResult:
 
     path: str
     skills: list[SkillResult] = field(default_factory=list)
-    new_source: bytes | None = None
+    new_source: bytes | str | None = None
     error: str | None = None
     error_line: int | None = None
     notes: list[str] = field(default_factory=list)

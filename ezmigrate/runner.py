@@ -96,6 +96,6 @@ def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                                  initializer=_init_worker, initargs=(settings,)) as pool:
             chunk = max(1, len(items) // (jobs * 8))
             results = list(pool.map(_migrate_one, items, chunksize=chunk))
-    for (position, _), result in zip(work, results):
+    for (position, _), result in zip(work, results, strict=True):
         done[position].result = result
     return done

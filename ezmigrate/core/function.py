@@ -9,6 +9,7 @@ parameter in the signature, or onto the ``+=`` line).
 
 from __future__ import annotations
 
+import itertools
 import keyword
 import re
 
@@ -99,7 +100,8 @@ def _comment_lines(comments: Comments, indent_ws: str) -> list[cst.EmptyLine]:
                           comment=cst.Comment(text)) for text in texts + comments.inner]
 
 
-def _line_break(comment: cst.Comment | None, lines: list[cst.EmptyLine]) -> cst.ParenthesizedWhitespace:
+def _line_break(comment: cst.Comment | None,
+                lines: list[cst.EmptyLine]) -> cst.ParenthesizedWhitespace:
     return cst.ParenthesizedWhitespace(
         first_line=cst.TrailingWhitespace(
             whitespace=cst.SimpleWhitespace("  " if comment else ""), comment=comment),
@@ -115,7 +117,7 @@ def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[s
     """
     self_param = func.params.params[0].with_changes(comma=cst.MaybeSentinel.DEFAULT)
     entries: list[tuple[cst.Param, Comments]] = []
-    for op, name in zip(params, names):
+    for op, name in zip(params, names, strict=True):
         annotation_text, default = annotation(op, name, ctx)
         entries.append((cst.Param(
             name=cst.Name(name),
@@ -130,7 +132,7 @@ def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[s
             items.append((cst.ParamStar(), Comments()))
         items.append(entry)
     linked: list[cst.Param | cst.ParamStar] = []
-    for (item, own), (_, following) in zip(items, items[1:]):
+    for (item, own), (_, following) in itertools.pairwise(items):
         comma = cst.Comma(whitespace_after=_line_break(own.trailing,
                                                         _comment_lines(following, ALIGN)))
         linked.append(item.with_changes(comma=comma))

@@ -130,8 +130,8 @@ def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
                    prefixes: Iterable[tuple[str, str]]) -> cst.Module:
     """Add the runtime and namespace imports, drop legacy imports nothing uses any more.
 
-    ``runtime`` and ``prefixes`` hold ``(name, local alias)`` pairs. The new imports go where the first
-    legacy import was (or after the last top-level import, or after the docstring).
+    ``runtime`` and ``prefixes`` hold ``(name, local alias)`` pairs. The new imports go where
+    the first legacy import was (or after the last top-level import, or after the docstring).
     """
     used = used_names(module)
     existing = imported_names(module)
@@ -194,6 +194,7 @@ def _after_docstring(body: list[cst.BaseStatement]) -> int:
         index = 1
     while index < len(body) and isinstance(body[index], cst.SimpleStatementLine) and any(
             isinstance(s, cst.ImportFrom) and s.module is not None
-            and dotted_name(s.module) == "__future__" for s in body[index].body):  # type: ignore[attr-defined]
+            and dotted_name(s.module) == "__future__"
+            for s in body[index].body):  # type: ignore[attr-defined]
         index += 1
     return index

@@ -7,8 +7,6 @@ on run time. Comments are collected with the statement they stand above.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 import libcst as cst
 
 from .context import ExtractContext
@@ -50,7 +48,8 @@ def read_operations(func: cst.FunctionDef, ctx: ExtractContext) -> None:
     body = func.body
     if not isinstance(body, cst.IndentedBlock):  # def createDescription(self): pass
         statements: list[cst.BaseStatement] = []
-        _read_line_statements(list(body.body), Comments(), ctx, body)
+        _read_line_statements([s for s in body.body if isinstance(s, cst.BaseSmallStatement)],
+                              Comments(), ctx, body)
     else:
         statements = list(body.body)
         ctx.skill.footer = list(body.footer)
@@ -78,11 +77,10 @@ def _read_line_statements(small: list[cst.BaseSmallStatement], comments: Comment
 
 
 def _apply_rules(node: cst.BaseSmallStatement, ctx: ExtractContext) -> list[Operation]:
-    rule: Callable[[cst.BaseSmallStatement, ExtractContext], list[Operation] | None]
     for rule in STATEMENT_RULES:
         ops = rule(node, ctx)
         if ops is not None:
-            return ops
+            return list(ops)
     raise Unsupported(f"no rule for the statement at line {ctx.line(node)}", node)
 
 

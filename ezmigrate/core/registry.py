@@ -7,7 +7,7 @@ a module, not editing a dispatcher.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, TypeVar
 
 import libcst as cst
@@ -17,7 +17,8 @@ if TYPE_CHECKING:
     from .ir import CondSpec, Operation
     from .writer import EmitContext
 
-StatementRule = Callable[[cst.BaseSmallStatement, "ExtractContext"], "list[Operation] | None"]
+StatementRule = Callable[[cst.BaseSmallStatement, "ExtractContext"],
+                         "Sequence[Operation] | None"]
 ConditionRule = Callable[[cst.BaseExpression, "ExtractContext"], "CondSpec | None"]
 ConditionEmitter = Callable[["CondSpec", "EmitContext"], str]
 

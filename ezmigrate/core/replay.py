@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import builtins
 from collections.abc import Iterable
+from typing import Any
 
 from ezskiros_runtime.legacy import abstract_skill
 from ezskiros_runtime.legacy.extract import model_of
@@ -42,7 +43,7 @@ def _value(op: ParamOp) -> object:
 
 
 def _condition(desc: abstract_skill.SkillDescription, spec: CondSpec) -> object:
-    def lit(x: Literal | None) -> object:
+    def lit(x: Literal | None) -> Any:
         return None if x is None else x.value
 
     label = lit(spec.label)
@@ -51,20 +52,22 @@ def _condition(desc: abstract_skill.SkillDescription, spec: CondSpec) -> object:
         for child in spec.children:
             cond.addCondition(_condition(desc, child))
         return cond
-    if spec.kind in ("relation", "abstract_relation"):
-        factory = desc.getRelationCond if spec.kind == "relation" else \
-            desc.getAbstractRelationCond
-        return factory(label, spec.vocabulary, spec.subject, spec.object, lit(spec.desired))
+    vocabulary, subject, obj = spec.vocabulary or "", spec.subject or "", spec.object or ""
+    desired = lit(spec.desired)
+    if spec.kind == "relation":
+        return desc.getRelationCond(label, vocabulary, subject, obj, desired)
+    if spec.kind == "abstract_relation":
+        return desc.getAbstractRelationCond(label, vocabulary, subject, obj, desired)
     if spec.kind == "property":
-        return desc.getPropCond(label, spec.vocabulary, spec.subject, spec.operator,
-                                lit(spec.value), lit(spec.desired))
+        return desc.getPropCond(label, vocabulary, subject, spec.operator or "", lit(spec.value),
+                                desired)
     if spec.kind == "has_property":
-        return desc.getHasPropCond(label, spec.vocabulary, spec.subject, lit(spec.desired))
+        return desc.getHasPropCond(label, vocabulary, subject, desired)
     if spec.kind == "is_specified":
-        return desc.getIsSpecifiedCond(label, spec.subject, lit(spec.desired))
+        return desc.getIsSpecifiedCond(label, subject, desired)
     if spec.kind == "generate":
-        return desc.getGenerateCond(label, spec.subject, lit(spec.desired))
-    return desc.getOnTypeCond(label, spec.subject, spec.vocabulary)
+        return desc.getGenerateCond(label, subject, desired)
+    return desc.getOnTypeCond(label, subject, vocabulary)
 
 
 _ADD = {"pre": "addPreCondition", "hold": "addHoldCondition", "post": "addPostCondition"}

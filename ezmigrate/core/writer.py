@@ -98,7 +98,7 @@ class EmitContext:
         found = self._qname(vocabulary)
         if found is None or not self.index:
             return None
-        prefix, local, iri = found
+        _, local, iri = found
         if local in SYMBOL_METHODS or local.startswith("_"):
             return None
         if self.index.property(iri) is None or self.index.properties_named(local) != [iri]:

@@ -7,10 +7,10 @@ Order matters for statement rules: the first rule that claims a statement handle
 from . import (  # noqa: F401  (imported for registration)
     add_param,
     condition_factories,
-    or_conditions,
     condition_lists,
-    local_variables,
-    parent_calls,
     kept_statements,
+    local_variables,
+    or_conditions,
+    parent_calls,
     unsupported,
 )

@@ -13,7 +13,15 @@ from __future__ import annotations
 import libcst as cst
 
 from ..core.context import ExtractContext, bind_arguments
-from ..core.ir import ElementValue, Literal, OpaqueValue, ParamOp, ParamValue, TypeValue, Unsupported
+from ..core.ir import (
+    ElementValue,
+    Literal,
+    OpaqueValue,
+    ParamOp,
+    ParamValue,
+    TypeValue,
+    Unsupported,
+)
 from ..core.registry import statement_rule
 from ..core.writer import EmitContext, quote
 
@@ -58,7 +66,7 @@ def _value(node: cst.BaseExpression, ctx: ExtractContext) -> ParamValue:
     if literal is not None:
         return literal
     if isinstance(node, (cst.Name, cst.Attribute)):
-        root = node
+        root: cst.BaseExpression = node
         while isinstance(root, cst.Attribute):
             root = root.value
         if isinstance(root, cst.Name) and root.value not in (ctx.self_name, *ctx.locals,

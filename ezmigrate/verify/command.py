@@ -6,9 +6,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..discover import discover
-from ..results import FileResult, SkillResult
+from ..results import FileResult, SkillResult, SkillStatus
 from .compare_files import compare_outcomes, load_failure
 from .pool import PoolConfig, job_for, run_jobs
+from .protocol import LoadJob
 
 
 @dataclass(frozen=True)
@@ -37,7 +38,8 @@ def _pairs(options: VerifyOptions) -> list[tuple[str, Path | None, Path | None]]
 def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
     """Per-file results, and whether some file could not be loaded at all."""
     pairs = _pairs(options)
-    jobs, slots = [], []
+    jobs: list[LoadJob] = []
+    slots: list[int] = []
     for _, old, new in pairs:
         for path, root in ((old, options.before), (new, options.after)):
             if path is not None:
@@ -66,8 +68,8 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
         same_text = old.read_bytes() == new.read_bytes()
         for verdict in compare_outcomes(before, after, ignore_order=options.ignore_order,
                                         ignore_labels=options.ignore_labels):
-            status = ("unchanged" if same_text else "converted") if verdict.equivalent \
-                else "failed"
+            status: SkillStatus = ("unchanged" if same_text else "converted") \
+                if verdict.equivalent else "failed"
             results[-1].skills.append(SkillResult(
                 verdict.name, verdict.line_after or verdict.line_before or 0, status,
                 None if verdict.equivalent else verdict.message, equivalent=verdict.equivalent,

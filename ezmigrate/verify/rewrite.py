@@ -49,14 +49,15 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
     by_name = {s.name: s for s in result.skills}
     all_ok = True
     for name, verdict in verdicts.items():
-        skill = by_name.get(name)
+        found = by_name.get(name)
         if verdict.equivalent:
-            if skill is not None and skill.status == "converted":
-                skill.equivalent = True
+            if found is not None and found.status == "converted":
+                found.equivalent = True
             continue
         all_ok = False
-        if skill is None:
-            skill = SkillResult(name, verdict.line_before or 0, "failed")
+        skill = found if found is not None else SkillResult(name, verdict.line_before or 0,
+                                                            "failed")
+        if found is None:
             result.skills.append(skill)
         _fail(skill, _reason(verdict), verdict)
     _attach_findings(result.skills, after)

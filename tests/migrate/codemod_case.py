@@ -36,7 +36,8 @@ def assert_migrates(before: str, after: str) -> FileResult:
     result = run(before)
     expected = textwrap.dedent(after)
     actual = result.new_source
-    assert isinstance(actual, str), f"nothing changed: {[(s.name, s.reason) for s in result.skills]}"
+    reasons = [(s.name, s.reason) for s in result.skills]
+    assert isinstance(actual, str), f"nothing changed: {reasons}"
     assert actual == expected, "\n--- actual ---\n" + actual + "\n--- expected ---\n" + expected
     cst.parse_module(expected)
     compile(expected, "expected.py", "exec")
