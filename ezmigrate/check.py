@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .discover import discover
-from .runner import migrate_all
+from .package import migrate_package
 from .verify.pool import PoolConfig, job_for, run_jobs
 
 if TYPE_CHECKING:
@@ -62,7 +62,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     candidates, _ = discover(paths, exclude)
     outcome = CheckOutcome(files=len(candidates))
     loadable = []
-    for item in migrate_all(candidates, index, pool.workers):
+    for item in migrate_package(candidates, index, pool.workers):
         path = str(item.candidate.path)
         for skill in item.result.skills:
             if skill.status == "converted":

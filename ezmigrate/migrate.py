@@ -10,7 +10,7 @@ not at all; a class whose base description was not converted is not converted ei
 from __future__ import annotations
 
 import traceback
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -39,7 +39,7 @@ from .core.ir import (
     ParamOp,
     Unsupported,
 )
-from .core.legacy_names import LegacyNames, is_legacy_module
+from .core.legacy_names import LegacyNames, dotted_name, is_legacy_module
 from .core.reader import find_create_description, read_operations, self_parameter
 from .core.registry import load_rules
 from .core.replay import replay
@@ -97,32 +97,23 @@ def migrate(source: bytes | str, settings: Settings | None = None,
         result.error = f"cannot decode: {error}"
         return result
     names = LegacyNames.of_module(module)
-    classes = description_classes(module, names, settings.external.keys())
-    if not classes:
+    result.foreign_bases = foreign_bases(module, names)
+    planned = _plan_module(module, names, settings)
+    if planned is None:
         return result
-    module, positions = positions_of(module)  # same tree: the class nodes stay valid
-    aliases = _aliases(module, settings.index)
-    constants = module_constants(module)
-    plans: list[_Plan] = []
-    effective: dict[str, list[Operation]] = dict(settings.external)
-    converted: set[str] = set(settings.external)
-    runtime: set[str] = set()
-    prefixes: set[str] = set()
-    for cls in classes:
-        plan = _plan(cls, module, names, positions, settings, aliases, effective, converted,
-                     constants)
-        plans.append(plan)
-        if plan.result.status in ("converted", "unchanged"):
-            converted.add(cls.name)
-            runtime |= plan.runtime
-            prefixes |= plan.prefixes
+    module, plans, effective, aliases = planned
+    runtime = {n for p in plans if p.result.status == "converted" for n in p.runtime}
+    prefixes = {n for p in plans if p.result.status == "converted" for n in p.prefixes}
     result.skills = [p.result for p in plans]
+    result.exports = [p.cls.name for p in plans if p.result.status in ("converted", "unchanged")]
     if not any(p.result.status == "converted" for p in plans):
         return result
     new_module = _rewrite(module, plans)
     base_name = "EzSkillDescription" if _legacy_still_used(new_module, names) else \
         "SkillDescription"
-    runtime_pairs = {(n, aliases.get(n, n)) for n in runtime} | {("SkillDescription", base_name)}
+    runtime_pairs = {(n, aliases.get(n, n)) for n in runtime}
+    if any(p.result.status == "converted" and p.cls.base is None for p in plans):
+        runtime_pairs.add(("SkillDescription", base_name))
     new_module = update_imports(new_module, runtime_pairs,
                                 {(p, aliases.get(p, p)) for p in prefixes})
     new_module = new_module.visit(_Rename(PLACEHOLDER, base_name))
@@ -136,6 +127,74 @@ def migrate(source: bytes | str, settings: Settings | None = None,
         return result
     result.new_source = new_module.bytes if isinstance(source, bytes) else new_module.code
     return result
+
+
+def _plan_module(module: cst.Module, names: LegacyNames, settings: Settings) -> tuple[
+        cst.Module, list[_Plan], dict[str, list[Operation]], dict[str, str]] | None:
+    """Plan every description class of the module, bases before children."""
+    classes = description_classes(module, names, settings.external.keys())
+    if not classes:
+        return None
+    module, positions = positions_of(module)  # same tree: the class nodes stay valid
+    aliases = _aliases(module, settings.index)
+    constants = module_constants(module)
+    plans: list[_Plan] = []
+    effective: dict[str, list[Operation]] = dict(settings.external)
+    converted: set[str] = set(settings.external)
+    for cls in classes:
+        plan = _plan(cls, module, names, positions, settings, aliases, effective, converted,
+                     constants)
+        plans.append(plan)
+        if plan.result.status in ("converted", "unchanged"):
+            converted.add(cls.name)
+    return module, plans, effective, aliases
+
+
+def exported_operations(source: bytes | str, wanted: Collection[str],
+                        settings: Settings) -> dict[str, list[Operation]]:
+    """The operations of the ``wanted`` description classes of a module that convert.
+
+    Another file deriving from one of them inlines these when it calls the base's
+    ``createDescription`` (see ``ezmigrate.package``).
+    """
+    load_rules()
+    try:
+        module = cst.parse_module(source)
+    except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError):
+        return {}
+    planned = _plan_module(module, LegacyNames.of_module(module), settings)
+    if planned is None:
+        return {}
+    _, plans, effective, _ = planned
+    ok = {p.cls.name for p in plans if p.result.status in ("converted", "unchanged")}
+    return {name: effective[name] for name in wanted if name in ok and name in effective}
+
+
+def foreign_bases(module: cst.Module, names: LegacyNames) -> list[tuple[str, str]]:
+    """``(base name, imported-from module)`` for class bases imported from user modules.
+
+    Candidates for descriptions defined in another file of the same package; the module
+    is written with its leading dots for relative imports (``".base"``).
+    """
+    imported: dict[str, str] = {}
+    for stmt in module.body:
+        if not isinstance(stmt, cst.SimpleStatementLine):
+            continue
+        for small in stmt.body:
+            if isinstance(small, cst.ImportFrom) and not isinstance(small.names, cst.ImportStar):
+                source = "." * len(small.relative) + (
+                    dotted_name(small.module) or "" if small.module is not None else "")
+                if small.relative or not is_legacy_module(source):
+                    for alias in small.names:
+                        if alias.asname is None and isinstance(alias.name, cst.Name):
+                            imported[alias.name.value] = source
+    found = []
+    for stmt in module.body:
+        if isinstance(stmt, cst.ClassDef):
+            for arg in stmt.bases:
+                if isinstance(arg.value, cst.Name) and arg.value.value in imported:
+                    found.append((arg.value.value, imported[arg.value.value]))
+    return found
 
 
 def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,

@@ -50,6 +50,12 @@ class FileResult:
     error: str | None = None
     error_line: int | None = None
     notes: list[str] = field(default_factory=list)
+    exports: list[str] = field(default_factory=list)
+    """Description classes that convert (or inherit a conversion): bases for other files."""
+    foreign_bases: list[tuple[str, str]] = field(default_factory=list)
+    """``(base, module)`` of class bases imported from user modules (maybe descriptions)."""
+    depends_on: list[str] = field(default_factory=list)
+    """Files whose migrated descriptions this file's migrated classes derive from."""
 
     @property
     def changed(self) -> bool:

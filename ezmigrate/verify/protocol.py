@@ -21,15 +21,24 @@ class LoadJob:
     path: str
     source: bytes | None = None
     root: str | None = None
+    overlays: dict[str, bytes] = field(default_factory=dict)
+    """Sibling modules (absolute path -> bytes) to import from memory instead of disk."""
 
     def to_json(self) -> dict[str, Any]:
         return {"path": self.path, "root": self.root,
-                "source": None if self.source is None else base64.b64encode(self.source).decode()}
+                "source": None if self.source is None else _encode(self.source),
+                "overlays": {p: _encode(data) for p, data in self.overlays.items()}}
 
     @classmethod
     def from_json(cls, data: dict[str, Any]) -> LoadJob:
         raw = data.get("source")
-        return cls(data["path"], None if raw is None else base64.b64decode(raw), data.get("root"))
+        overlays = {p: base64.b64decode(v) for p, v in data.get("overlays", {}).items()}
+        return cls(data["path"], None if raw is None else base64.b64decode(raw),
+                   data.get("root"), overlays)
+
+
+def _encode(data: bytes) -> str:
+    return base64.b64encode(data).decode("ascii")
 
 
 @dataclass

@@ -20,16 +20,49 @@ def verify_migrated(migrated: list[Migrated], options: RewriteOptions) -> None:
     """Verify every changed file; revert (in memory) those that do not verify."""
     if not migrated:
         return
+    by_relative = {item.candidate.relative: item for item in migrated}
     jobs = []
     for item in migrated:
         assert isinstance(item.result.new_source, bytes)
         root = item.candidate.root
         jobs.append(job_for(item.candidate.path, item.original, root))
-        jobs.append(job_for(item.candidate.path, item.result.new_source, root))
+        after = job_for(item.candidate.path, item.result.new_source, root)
+        after.overlays = _overlays(item, by_relative)
+        jobs.append(after)
     config = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=options.ontology)
     outcomes = run_jobs(jobs, config)
     for index, item in enumerate(migrated):
         apply_verdicts(item, outcomes[2 * index], outcomes[2 * index + 1], options)
+    _hold_dependents(migrated, by_relative)
+
+
+def _overlays(item: Migrated, by_relative: dict[str, Migrated]) -> dict[str, bytes]:
+    """Migrated bytes of the files whose descriptions ``item``'s classes derive from."""
+    overlays = {}
+    for relative in item.result.depends_on:
+        base = by_relative.get(relative)
+        if base is not None and isinstance(base.result.new_source, bytes):
+            overlays[str(base.candidate.path.absolute())] = base.result.new_source
+    return overlays
+
+
+def _hold_dependents(migrated: list[Migrated], by_relative: dict[str, Migrated]) -> None:
+    """A file deriving from a base file that will not be written is not written either."""
+    changed = True
+    while changed:
+        changed = False
+        for item in migrated:
+            if item.result.new_source is None:
+                continue
+            held = [r for r in item.result.depends_on
+                    if r in by_relative and by_relative[r].result.new_source is None]
+            if held:
+                for skill in item.result.skills:
+                    if skill.status == "converted":
+                        _fail(skill, f"not written: it derives from a description in {held[0]}, "
+                                     "which is not being written")
+                item.result.new_source = None
+                changed = True
 
 
 def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
