@@ -1,1 +1,93 @@
-"""EzSkiROS: ontology-typed SkiROS2 skill descriptions with early checks."""
+"""EzSkiROS: ontology-typed SkiROS2 skill descriptions with early checks.
+
+The public names are loaded lazily (module ``__getattr__``): ``import ezskiros_runtime``
+costs nothing, ``ezmigrate`` can import the model without choosing a backend, and neither
+rdflib nor the ontology is touched until a namespace attribute or a check needs them.
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from .diagnostics import (
+        DescriptionError,
+        EzSkirosWarning,
+        Finding,
+        SkillTypeError,
+        UnknownVocabularyError,
+    )
+    from .dsl.checking import check
+    from .dsl.conditions import abstract, any_of
+    from .dsl.markers import (
+        DESC,
+        ELEMENT,
+        INFERRED,
+        KEY,
+        OPTIONAL,
+        REQUIRED,
+        Consume,
+        Lock,
+        Output,
+        RespectType,
+        Unspecify,
+    )
+    from .dsl.policy import collecting, is_strict, set_severity, strict
+    from .dsl.skill import SkillDescription
+
+_EXPORTS: dict[str, str] = {
+    "SkillDescription": "dsl.skill",
+    **dict.fromkeys(("INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "Lock", "Consume",
+                     "Unspecify", "RespectType", "Output"), "dsl.markers"),
+    "abstract": "dsl.conditions",
+    "any_of": "dsl.conditions",
+    "check": "dsl.checking",
+    "strict": "dsl.policy",
+    "is_strict": "dsl.policy",
+    "collecting": "dsl.policy",
+    "set_severity": "dsl.policy",
+    **dict.fromkeys(("Finding", "SkillTypeError", "DescriptionError", "EzSkirosWarning",
+                     "UnknownVocabularyError"), "diagnostics"),
+}
+
+
+def __getattr__(name: str) -> Any:
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
+    globals()[name] = value  # later lookups skip this function
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_EXPORTS})
+
+
+__all__ = [
+    "DESC",
+    "ELEMENT",
+    "INFERRED",
+    "KEY",
+    "OPTIONAL",
+    "REQUIRED",
+    "Consume",
+    "DescriptionError",
+    "EzSkirosWarning",
+    "Finding",
+    "Lock",
+    "Output",
+    "RespectType",
+    "SkillDescription",
+    "SkillTypeError",
+    "UnknownVocabularyError",
+    "Unspecify",
+    "abstract",
+    "any_of",
+    "check",
+    "collecting",
+    "is_strict",
+    "set_severity",
+    "strict",
+]

@@ -17,7 +17,7 @@ from .writer import LINE_LIMIT
 
 RUNTIME = "ezskiros_runtime"
 ONTOLOGY = "ezskiros_runtime.ontology"
-RUNTIME_ORDER = ("SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY",
+RUNTIME_ORDER = ("SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC",
                  "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output")
 
 

@@ -23,7 +23,7 @@ SYMBOL_METHODS = frozenset(
 """Methods of a symbolic parameter: never usable as a short relation/property name."""
 
 DSL_NAMES = frozenset({
-    "SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "abstract",
+    "SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "abstract",
     "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output"})
 
 LINE_LIMIT = 99

@@ -3,6 +3,7 @@
 Legacy (legacy-skiros2-api.md §3, §8)           EzSkiROS (docs/dsl.md)
 ``addParam("O", Element("skiros:P"), Required)``  ``O: skiros.P``
 ``addParam("S", 0.5, ParamTypes.Optional)``      ``S: OPTIONAL[float] = 0.5``
+``addParam("S", 0.5, 1, [], "m/s")``             ``S: OPTIONAL[float, DESC("m/s")] = 0.5``
 ``addParam("S", float, 0, "m/s")``               ``S: float``  (quirk: "m/s" lands in options)
 ``addParam("C", Element(":Cam"), 2, [Lock])``    ``C: INFERRED[ELEMENT(":Cam"), Lock]``
 ``addParam("On/Off", True, Required)``           ``On_Off: REQUIRED[bool, KEY("On/Off")] = True``
@@ -137,7 +138,7 @@ def annotation(op: ParamOp, python_name: str, ctx: EmitContext) -> tuple[str, st
     """
     extras: list[str] = []
     if op.description:
-        extras.append(op.description_code or quote(op.description))
+        extras.append(f"{ctx.use('DESC')}({op.description_code or quote(op.description)})")
     if isinstance(op.value, ElementValue):
         extras += [ctx.use(o) for o in op.options]
     if python_name != op.key:

@@ -101,7 +101,7 @@ def test_options_description_and_the_fourth_positional_quirk():
         '        self.addParam("Mass", float, ParamTypes.Required, description="kg")\n'
         '        self.addParam("Force", 1.0, ParamTypes.Optional, "newton")\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, OPTIONAL, REQUIRED, Lock, Consume
+from ezskiros_runtime import SkillDescription, OPTIONAL, REQUIRED, DESC, Lock, Consume
 from ezskiros_runtime.ontology import skiros
 
 
@@ -109,8 +109,8 @@ class S(SkillDescription):
     def description(self,
                     Cam: REQUIRED[skiros.Location, Lock, Consume],
                     *,
-                    Speed: OPTIONAL[float, "m/s"] = 0.5,
-                    Mass: REQUIRED[float, "kg"],
+                    Speed: OPTIONAL[float, DESC("m/s")] = 0.5,
+                    Mass: REQUIRED[float, DESC("kg")],
                     Force: OPTIONAL[float] = 1.0):
         pass
 ''')
@@ -195,12 +195,12 @@ def test_module_constants_keep_their_name_and_get_their_type():
     ), '''\
 SPEED = 0.5
 UNKNOWN = compute()
-from ezskiros_runtime import SkillDescription, OPTIONAL
+from ezskiros_runtime import SkillDescription, OPTIONAL, DESC
 
 
 class S(SkillDescription):
     def description(self,
-                    Speed: OPTIONAL[float, "m/s"] = SPEED,
+                    Speed: OPTIONAL[float, DESC("m/s")] = SPEED,
                     Other: OPTIONAL = UNKNOWN):
         pass
 ''')

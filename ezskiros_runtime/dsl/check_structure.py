@@ -1,0 +1,84 @@
+"""Checks on the description's own structure, independent of ontology types.
+
+- a default that does not fit its annotation (the DSL promises type-exact defaults);
+- an INFERRED parameter that no pre-condition mentions: the skill manager infers parameters
+  by reasoning over pre-conditions, so such a parameter can never be filled in;
+- a condition on a key the description never declares (SkiROS2 keeps it silently);
+- the same condition required to hold and not to hold in one list (it can never be met).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..notation import render_condition
+from .check_context import ROBOT_KEY, CheckContext
+from .collectors import Recorded
+
+_MENTIONING_OPTIONS = frozenset({"Lock", "RespectType"})
+"""Options whose expansion adds a pre-condition on the parameter itself."""
+
+
+def check_defaults(ctx: CheckContext) -> None:
+    """Every default fits its annotation (docs/dsl.md rules)."""
+    for spec in ctx.trace.specs:
+        if spec.mismatch is not None:
+            file, line = ctx.param_location(spec.name)
+            ctx.add("default_type", f"parameter {spec.key}: {spec.mismatch}", file, line,
+                    param=spec.key)
+
+
+def check_inferable(ctx: CheckContext) -> None:
+    """Every INFERRED parameter is mentioned by some pre-condition (Robot aside: SkiROS2's
+    skill manager binds the executing robot itself)."""
+    mentioned = {key for record in ctx.trace.recorded if record.which == "pre"
+                 for key in record.condition.param_keys()}
+    for key, spec in ctx.params.items():
+        if spec.kind != "Inferred" or key == ROBOT_KEY or key in mentioned:
+            continue
+        if spec.is_element and _MENTIONING_OPTIONS.intersection(spec.options):
+            continue
+        file, line = ctx.param_location(spec.name)
+        ctx.add("uninferable",
+                f"INFERRED parameter {key} is mentioned by no pre-condition, so SkiROS2 can "
+                "never infer it (add a pre-condition relating it, or make it REQUIRED)",
+                file, line, param=key)
+
+
+def check_declared(ctx: CheckContext) -> None:
+    """Conditions refer only to declared keys (or SkiROS2's automatic Robot)."""
+    for record in ctx.trace.recorded:
+        for key in dict.fromkeys(record.condition.param_keys()):
+            if key in ctx.params or key == ROBOT_KEY:
+                continue
+            ctx.add("undeclared_parameter",
+                    f"{record.which}-condition {record.condition.final_label} refers to "
+                    f"{key!r}, which the description does not declare (SkiROS2 keeps the "
+                    "condition, but nothing can ever bind that key)", record.file,
+                    record.line, param=key)
+
+
+def check_contradictions(ctx: CheckContext) -> None:
+    """No condition is wanted both true and false in the same list (pre and post may
+    disagree: that is what a skill changes)."""
+    seen: dict[tuple[str, Any], Recorded] = {}
+    reported: set[tuple[str, Any]] = set()
+    for record in ctx.trace.recorded:
+        cond = record.condition
+        if cond.kind == "on_type":
+            continue
+        identity = (record.which, cond.identity())
+        first = seen.get(identity)
+        if first is None:
+            seen[identity] = record
+            continue
+        if first.condition.desired == cond.desired or identity in reported:
+            continue
+        reported.add(identity)
+        ctx.add("contradiction",
+                f"{record.which}-condition {render_condition(cond.to_model())} contradicts "
+                f"line {first.line}, which requires the opposite: it can never be met",
+                record.file, record.line, param=cond.subject, relation=cond.vocabulary)
+
+
+__all__ = ["check_contradictions", "check_declared", "check_defaults", "check_inferable"]

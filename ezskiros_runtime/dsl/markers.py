@@ -1,0 +1,180 @@
+"""Parameter annotations: kind markers, ``ELEMENT``, ``KEY`` and the option markers.
+
+These are the words a description signature is written in (docs/dsl.md, "Parameters"). They
+only *describe*: turning them into ``addParam`` arguments is ``parameters.py``'s job, so this
+module has no dependency on a backend or an ontology.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from ..diagnostics import DescriptionError
+
+OPTION_NAMES: tuple[str, ...] = ("Lock", "Consume", "Unspecify", "RespectType", "Output")
+
+
+@dataclass(frozen=True)
+class Option:
+    """A ``ParamOptions`` member by name; lowered with ``getattr(ParamOptions, name)`` so the
+    same marker works with SkiROS2's enum and with the legacy backend's."""
+
+    name: str
+
+    def __repr__(self) -> str:
+        return self.name
+
+
+Lock = Option("Lock")
+Consume = Option("Consume")
+Unspecify = Option("Unspecify")
+RespectType = Option("RespectType")
+Output = Option("Output")
+
+
+@dataclass(frozen=True)
+class KEY:
+    """The skill key of a parameter whose key is no Python identifier (``KEY("On/Off")``)."""
+
+    key: str
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.key, str):
+            raise DescriptionError(f"KEY(...) needs a str, got {self.key!r}")
+
+
+@dataclass(frozen=True)
+class DESC:
+    """A parameter's description (``OPTIONAL[float, DESC("m/s")]``).
+
+    A bare string item works too, but linters (pyflakes, ruff F821/UP037) read a string
+    inside an annotation as a forward reference, and ruff's autofix would unquote it; the
+    migrator therefore always writes ``DESC``.
+    """
+
+    text: str
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.text, str):
+            raise DescriptionError(f"DESC(...) needs a str, got {self.text!r}")
+
+
+@dataclass(frozen=True)
+class ElementType:
+    """``ELEMENT(":C")``: an Element parameter whose type string is kept verbatim.
+
+    ``type_string`` ``None`` means ``Element()`` without arguments (type ``"Unknown"``).
+    """
+
+    type_string: str | None = None
+
+    def __repr__(self) -> str:
+        return "ELEMENT()" if self.type_string is None else f"ELEMENT({self.type_string!r})"
+
+
+def ELEMENT(type_string: Any = None) -> ElementType:
+    """An Element parameter of this verbatim type string (or an OWL class, by its qname)."""
+    if type_string is None or isinstance(type_string, str):
+        return ElementType(type_string)
+    qname = getattr(type_string, "qname", None)
+    if isinstance(qname, str):
+        return ElementType(qname)
+    raise DescriptionError(f"ELEMENT(...) needs a type string or an OWL class, got "
+                           f"{type_string!r}")
+
+
+@dataclass(frozen=True)
+class ParamAnnotation:
+    """A fully parsed annotation: kind, type (``None`` for a bare marker) and extras."""
+
+    kind: str
+    type: Any = None
+    description: str = ""
+    options: tuple[str, ...] = ()
+    key: str | None = None
+
+
+class Kind:
+    """``INFERRED`` / ``OPTIONAL`` / ``REQUIRED``: subscript with the type and extra items, or
+    use bare with a default whose value is passed as is."""
+
+    def __init__(self, marker: str, kind: str) -> None:
+        self._marker = marker
+        self.kind = kind
+
+    def __repr__(self) -> str:
+        return self._marker
+
+    def __getitem__(self, items: Any) -> ParamAnnotation:
+        items = items if isinstance(items, tuple) else (items,)
+        if not items:
+            raise DescriptionError(f"{self._marker}[...] needs the parameter type first")
+        first, rest = items[0], items[1:]
+        if isinstance(first, (str, DESC, Option, KEY, Kind, ParamAnnotation)):
+            raise DescriptionError(
+                f"{self._marker}[...]: the first item must be the type (an OWL class, "
+                f"ELEMENT(...), or a Python type), got {first!r}")
+        description: str | None = None
+        options: list[str] = []
+        key: str | None = None
+        for item in rest:
+            if isinstance(item, (str, DESC)):
+                text = item.text if isinstance(item, DESC) else item
+                if description is not None:
+                    raise DescriptionError(
+                        f"{self._marker}[...] has two descriptions: {description!r} and "
+                        f"{text!r}")
+                description = text
+            elif isinstance(item, Option):
+                options.append(item.name)
+            elif isinstance(item, KEY):
+                if key is not None:
+                    raise DescriptionError(f"{self._marker}[...] has two KEY(...) items")
+                key = item.key
+            else:
+                raise DescriptionError(
+                    f"{self._marker}[...]: unexpected item {item!r}; after the type come a "
+                    f"description (DESC(...)), options ({', '.join(OPTION_NAMES)}) and KEY(...)")
+        return ParamAnnotation(self.kind, first, description or "", tuple(options), key)
+
+
+INFERRED = Kind("INFERRED", "Inferred")
+OPTIONAL = Kind("OPTIONAL", "Optional")
+REQUIRED = Kind("REQUIRED", "Required")
+
+
+def parse_annotation(annotation: Any) -> ParamAnnotation:
+    """Any annotation as a ``ParamAnnotation``: a bare type is ``REQUIRED[type]``, a bare
+    marker keeps ``type=None``, a missing annotation is a bare ``REQUIRED``."""
+    if isinstance(annotation, ParamAnnotation):
+        return annotation
+    if isinstance(annotation, Kind):
+        return ParamAnnotation(annotation.kind)
+    if annotation is None:
+        return ParamAnnotation("Required")
+    if isinstance(annotation, (Option, KEY, DESC, str)):
+        raise DescriptionError(
+            f"annotation {annotation!r} needs a kind marker, e.g. REQUIRED[float, ...]")
+    return ParamAnnotation("Required", annotation)
+
+
+__all__ = [
+    "DESC",
+    "ELEMENT",
+    "INFERRED",
+    "KEY",
+    "OPTIONAL",
+    "OPTION_NAMES",
+    "REQUIRED",
+    "Consume",
+    "ElementType",
+    "Kind",
+    "Lock",
+    "Option",
+    "Output",
+    "ParamAnnotation",
+    "RespectType",
+    "Unspecify",
+    "parse_annotation",
+]

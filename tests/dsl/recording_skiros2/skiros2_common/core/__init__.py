@@ -1,0 +1,1 @@
+"""Recording stand-in for ``skiros2_common.core``."""

@@ -1,0 +1,381 @@
+"""The early checks: one test per check, asserting the finding's fields and message, plus
+the policy around them (findings as data, warnings, strict mode, per-kind severity)."""
+
+from __future__ import annotations
+
+import os
+import warnings
+from pathlib import Path
+
+import pytest
+from dsl_support import PAPER, line_of, paper  # noqa: F401 - paper is a fixture
+
+from ezskiros_runtime import (
+    ELEMENT,
+    INFERRED,
+    REQUIRED,
+    EzSkirosWarning,
+    Finding,
+    Lock,
+    SkillDescription,
+    SkillTypeError,
+    check,
+    is_strict,
+    set_severity,
+    strict,
+)
+from ezskiros_runtime.ontology import active_index, rparts, skiros, use_ontology
+
+pytestmark = pytest.mark.usefixtures("paper")
+HERE = Path(__file__)
+
+
+def only(cls: type) -> Finding:
+    """The single finding ``check`` reports for ``cls``."""
+    (finding,) = check(cls)
+    return finding
+
+
+def test_unknown_class_in_a_verbatim_element_type_warns_with_a_suggestion():
+    class Skill(SkillDescription):
+        def description(self, Box: ELEMENT("skiros:Prodcut")):
+            pass
+
+    finding = only(Skill)
+    assert (finding.kind, finding.severity, finding.param) == ("unknown_vocabulary", "warning",
+                                                               "Box")
+    assert finding.message == ("parameter Box: class skiros:Prodcut is not in the loaded "
+                               "ontology (did you mean skiros:Product?)")
+    assert finding.line == line_of('Box: ELEMENT("skiros:Prodcut")', HERE)
+    assert finding.suggestions[0] == "skiros:Product"
+
+
+def test_unknown_prefix_is_named_as_such():
+    class Skill(SkillDescription):
+        def description(self, Arm: ELEMENT("scalable:Ur5")):
+            pass
+
+    assert only(Skill).message == ("parameter Arm: class scalable:Ur5: prefix 'scalable' is not "
+                                   "defined by the loaded ontology")
+
+
+def test_unknown_relation_name_falls_back_to_the_default_prefix_and_warns():
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location, B: skiros.Product):
+            self.pre_conditions += A.contian(B)
+
+    with pytest.warns(EzSkirosWarning) as caught:
+        built = Skill()
+    assert built._pre_conditions[0].relation == "skiros:contian"
+    (finding,) = built.findings
+    assert finding.message == ("A.contian: no object or datatype property named 'contian' in "
+                               "the loaded ontology; lowered as skiros:contian (did you mean "
+                               "skiros:contain?)")
+    line = line_of("A.contian(B)", HERE)
+    assert (finding.kind, finding.line, finding.relation) == ("unknown_vocabulary", line,
+                                                              "skiros:contian")
+    assert [(Path(w.filename).name, w.lineno) for w in caught] == [(HERE.name, line)]
+    assert str(caught[0].message).startswith("Skill: A.contian: no object or datatype")
+
+
+def test_unknown_verbatim_relation_warns_with_a_suggestion():
+    class Skill(SkillDescription):
+        def description(self, G: rparts.GripperEffector, R: ELEMENT("cora:Robot")):
+            self.pre_conditions += G.relation("cora:robotPrt", R)
+
+    finding = only(Skill)
+    assert finding.message == ("relation cora:robotPrt is not in the loaded ontology (did you "
+                               "mean cora:robotPart?)")
+
+
+def test_a_local_name_two_prefixes_define_is_an_error_pointing_to_the_verbatim_form(tmp_path):
+    extra = tmp_path / "extra.ttl"
+    extra.write_text(
+        "@prefix owl: <http://www.w3.org/2002/07/owl#> .\n"
+        "@prefix skiros: <http://rvmi.aau.dk/ontologies/skiros.owl#> .\n"
+        "skiros:robotPart a owl:ObjectProperty .\n")
+    use_ontology([PAPER, extra])
+
+    class Skill(SkillDescription):
+        def description(self, G: rparts.GripperEffector, R: ELEMENT("cora:Robot")):
+            self.pre_conditions += G.robotPart(R)
+
+    finding = only(Skill)
+    assert (finding.kind, finding.severity) == ("ambiguous_vocabulary", "error")
+    assert finding.message == (
+        "G.robotPart: 'robotPart' is defined under several prefixes (cora:robotPart, "
+        'skiros:robotPart); write G.relation("cora:robotPart", ...) or '
+        'G.relation("skiros:robotPart", ...)')
+
+
+def test_relation_domain_violation_names_subject_union_and_actual_class():
+    class Skill(SkillDescription):
+        def description(self, B: skiros.Product, Pose: skiros.GraspingPose):
+            self.pre_conditions += B.contain(Pose)
+
+    with pytest.raises(SkillTypeError) as raised:
+        Skill()
+    (finding,) = raised.value.findings
+    assert finding.message == ("skiros:contain expects subject of class (skiros:Location | "
+                               "rparts:GripperEffector), but parameter B is skiros:Product")
+    assert (finding.kind, finding.param, finding.actual) == ("domain", "B", "skiros:Product")
+    assert finding.expected == "(skiros:Location | rparts:GripperEffector)"
+
+
+def test_subclass_closure_union_and_the_automatic_robot_are_used():
+    class Fine(SkillDescription):
+        def description(self, P: skiros.Product, Pose: skiros.GraspingPose,
+                        G: rparts.GripperEffector):
+            self.pre_conditions += P.hasA(Pose)     # GraspingPose below TransformationPose
+            self.pre_conditions += G.contain(Pose)  # union domain and union range
+
+    assert check(Fine) == []
+
+    class RobotOnly(SkillDescription):
+        def description(self, P: skiros.Product):
+            self.pre_conditions += self.param("Robot").hasA(P)
+
+    assert [(f.kind, f.param, f.actual) for f in check(RobotOnly)] == [
+        ("domain", "Robot", "sumo:Agent"), ("range", "P", "skiros:Product")]
+
+
+def test_sub_properties_inherit_domain_and_range(tmp_path):
+    extra = tmp_path / "holds.ttl"
+    extra.write_text(
+        "@prefix owl: <http://www.w3.org/2002/07/owl#> .\n"
+        "@prefix rdfs: <http://www.w3.org/2000/01/rdf-schema#> .\n"
+        "@prefix skiros: <http://rvmi.aau.dk/ontologies/skiros.owl#> .\n"
+        "skiros:holdsPose a owl:ObjectProperty ; rdfs:subPropertyOf skiros:hasA .\n")
+    use_ontology([PAPER, extra])
+
+    class Skill(SkillDescription):
+        def description(self, P: skiros.Product, L: skiros.Location):
+            self.pre_conditions += P.holdsPose(L)
+
+    finding = only(Skill)
+    assert finding.message == ("skiros:holdsPose expects object of class "
+                               "skiros:TransformationPose, but parameter L is skiros:Location")
+
+
+@pytest.mark.parametrize(("condition", "expected", "actual"), [
+    ("PublishTf == 1", "xsd:boolean", "int"),
+    ("PositionX == True", "xsd:float", "bool"),
+    ("FrameId == 3", "xsd:string", "int"),
+])
+def test_property_values_must_have_the_ranges_python_type(condition, expected, actual):
+    namespace: dict[str, object] = {}
+    exec(f"def build(A):\n    return A.{condition}\n", namespace)
+
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location):
+            self.pre_conditions += namespace["build"](A)
+
+    finding = only(Skill)
+    assert (finding.kind, finding.severity, finding.expected, finding.actual) == (
+        "value_type", "error", expected, actual)
+    assert finding.message.startswith(f"skiros:{condition.split()[0]} expects a {expected} "
+                                      "value, but the condition compares A with ")
+
+
+def test_int_values_are_fine_for_float_properties():
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location):
+            self.pre_conditions += A.PositionX >= 1
+            self.pre_conditions += A.PositionX < 2.5
+
+    assert check(Skill) == []
+
+
+def test_ordering_operators_need_a_numeric_property():
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location):
+            self.pre_conditions += A.FrameId > "a"
+
+    finding = only(Skill)
+    assert (finding.kind, finding.severity) == ("operator", "error")
+    assert finding.message == ("skiros:FrameId is xsd:string: operator '>' needs a numeric "
+                               "property (xsd:int, xsd:float, ...)")
+
+
+def test_object_and_datatype_properties_are_not_interchangeable():
+    class Compared(SkillDescription):
+        def description(self, A: skiros.Location):
+            self.pre_conditions += A.contain == True
+
+    class Related(SkillDescription):
+        def description(self, A: skiros.Location, B: skiros.Location):
+            self.pre_conditions += A.PositionX(B)
+
+    assert (only(Compared).kind, only(Compared).expected) == ("property_kind", "data property")
+    assert only(Related).message.startswith("skiros:PositionX is a datatype property")
+
+
+def test_an_unknown_operator_is_a_warning():
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location):
+            self.pre_conditions += A.property("skiros:PositionX", "!=", 1.0)
+
+    finding = only(Skill)
+    assert (finding.kind, finding.severity) == ("unknown_operator", "warning")
+    assert "operator '!=' is none of =, >, <, >=, <=" in finding.message
+
+
+def test_an_inferred_parameter_no_pre_condition_mentions_is_reported():
+    class Skill(SkillDescription):
+        def description(self, Robot: INFERRED[ELEMENT("cora:Robot")],
+                        Place: INFERRED[skiros.Location],
+                        Gripper: INFERRED[rparts.GripperEffector, Lock],
+                        Used: INFERRED[skiros.Product]):
+            self.pre_conditions += Used.is_specified()
+            self.post_conditions += Place.contain(Used)
+
+    finding = only(Skill)
+    assert (finding.kind, finding.severity, finding.param) == ("uninferable", "warning",
+                                                               "Place")
+    assert finding.line == line_of("Place: INFERRED[skiros.Location],", HERE)
+    assert finding.message.startswith("INFERRED parameter Place is mentioned by no "
+                                      "pre-condition, so SkiROS2 can never infer it")
+
+
+def test_the_same_condition_wanted_and_unwanted_in_one_list_is_a_contradiction():
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location, B: skiros.Product):
+            self.pre_conditions += A.contain(B)
+            self.post_conditions += ~ A.contain(B)  # pre and post may differ
+            self.pre_conditions += (~ A.contain(B)).named("Empty")
+
+    finding = only(Skill)
+    assert (finding.kind, finding.severity) == ("contradiction", "error")
+    assert finding.line == line_of('.named("Empty")', HERE)
+    first = line_of("self.pre_conditions += A.contain(B)", HERE)
+    assert finding.message == (
+        "pre-condition getRelationCond('Empty', 'skiros:contain', 'A', 'B', False) "
+        f"contradicts line {first}, which requires the opposite: it can never be met")
+
+
+def test_a_condition_on_an_undeclared_key_is_kept_and_reported():
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location):
+            self.pre_conditions += A.contain(self.param("Objct"))
+
+    finding = only(Skill)
+    assert (finding.kind, finding.param) == ("undeclared_parameter", "Objct")
+    assert "refers to 'Objct', which the description does not declare" in finding.message
+
+
+@pytest.mark.parametrize(("annotation", "default", "message"), [
+    ("int", "0.5", "parameter S: default 0.5 is float, but the annotation says int"),
+    ("int", "True", "parameter S: default True is bool, but the annotation says int"),
+    ("REQUIRED[str]", "None", "parameter S: default None is NoneType, but the annotation says "
+                              "str"),
+    ("skiros.Product", "0", "parameter S: an Element parameter takes no default, got 0"),
+])
+def test_a_default_that_does_not_fit_its_annotation_is_a_type_error(annotation, default,
+                                                                     message):
+    namespace = {"SkillDescription": SkillDescription, "REQUIRED": REQUIRED, "skiros": skiros}
+    exec(f"class Skill(SkillDescription):\n"
+         f"    def description(self, S: {annotation} = {default}):\n"
+         f"        pass\n", namespace)
+    with pytest.raises(SkillTypeError) as raised:
+        namespace["Skill"]()  # type: ignore[operator]
+    assert str(raised.value).endswith(f"Skill: {message}")
+    assert raised.value.findings[0].kind == "default_type"
+
+
+class Mixed(SkillDescription):
+    def description(self, A: skiros.Location, B: skiros.Product):
+        self.pre_conditions += B.contain(A)
+        self.pre_conditions += A.contian(B)
+
+
+def test_findings_are_data_and_check_neither_raises_nor_warns():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        findings = check(Mixed)
+    assert [(f.kind, f.severity) for f in findings] == [("unknown_vocabulary", "warning"),
+                                                        ("domain", "error"), ("range", "error")]
+    data = findings[1].to_json()
+    assert data["kind"] == "domain" and data["param"] == "B" and data["suggestions"] == []
+    line = line_of("self.pre_conditions += B.contain(A)", HERE)
+    assert str(findings[1]) == (
+        f"{os.path.relpath(HERE)}:{line}: Mixed: skiros:contain expects subject of class "
+        "(skiros:Location | rparts:GripperEffector), but parameter B is skiros:Product")
+
+
+def test_an_instance_keeps_its_findings():
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location, B: skiros.Product):
+            self.pre_conditions += A.contian(B)
+
+    with pytest.warns(EzSkirosWarning):
+        built = Skill()
+    assert [f.kind for f in built.findings] == ["unknown_vocabulary"]
+    assert check(built) == built.findings
+
+
+def test_strict_mode_through_the_api_makes_every_finding_an_error():
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location, B: skiros.Product):
+            self.pre_conditions += A.contian(B)
+
+    assert not is_strict()
+    with strict():
+        assert is_strict()
+        with pytest.raises(SkillTypeError, match="lowered as skiros:contian"):
+            Skill()
+        assert [f.severity for f in check(Skill)] == ["error"]
+    assert not is_strict()
+    strict(True)
+    try:
+        assert is_strict()
+    finally:
+        strict(None)
+    assert not is_strict()
+
+
+def test_strict_mode_through_the_environment(monkeypatch):
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location, B: skiros.Product):
+            self.pre_conditions += A.contian(B)
+
+    monkeypatch.setenv("EZSKIROS_STRICT", "1")
+    assert is_strict()
+    with pytest.raises(SkillTypeError):
+        Skill()
+    with strict(False), pytest.warns(EzSkirosWarning):  # the API wins over the environment
+        Skill()
+
+
+def test_severity_of_a_kind_is_configurable():
+    class Skill(SkillDescription):
+        def description(self, Place: INFERRED[skiros.Location]):
+            pass
+
+    try:
+        set_severity("uninferable", "off")
+        assert check(Skill) == []
+        set_severity("uninferable", "error")
+        with pytest.raises(SkillTypeError, match="INFERRED parameter Place"):
+            Skill()
+    finally:
+        set_severity("uninferable", None)
+    assert [f.severity for f in check(Skill)] == ["warning"]
+    with pytest.raises(ValueError, match="severity 'loud'"):
+        set_severity("uninferable", "loud")
+
+
+def test_several_errors_are_raised_together_one_line_each():
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location, B: skiros.Product):
+            self.pre_conditions += B.contain(A)
+            self.post_conditions += B.hasA(A)
+
+    with pytest.raises(SkillTypeError) as raised:
+        Skill()
+    lines = str(raised.value).splitlines()
+    assert len(lines) == 3  # contain: domain and range; hasA: range
+    assert [f.kind for f in raised.value.findings] == ["domain", "range", "range"]
+
+
+def test_the_checks_use_the_active_ontology():
+    assert active_index().sources == (str(PAPER),)
