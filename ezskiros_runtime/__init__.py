@@ -38,7 +38,8 @@ if TYPE_CHECKING:
 
 _EXPORTS: dict[str, str] = {
     "SkillDescription": "dsl.skill",
-    **dict.fromkeys(("INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "Lock", "Consume",
+    **dict.fromkeys(("INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "Lock",
+                     "Consume",
                      "Unspecify", "RespectType", "Output"), "dsl.markers"),
     "abstract": "dsl.conditions",
     "any_of": "dsl.conditions",

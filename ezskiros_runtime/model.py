@@ -175,7 +175,8 @@ class SkillModel:
             "name": self.name,
             "type": self.type,
             "params": [_param_json(p) for p in self.params],
-            **{which: [_condition_json(c) for c in self.conditions(which)] for which in CONDITION_LISTS},
+            **{which: [_condition_json(c) for c in self.conditions(which)]
+               for which in CONDITION_LISTS},
             **({"source": self.source} if self.source is not None else {}),
             **({"line": self.line} if self.line is not None else {}),
         }
@@ -245,7 +246,8 @@ def _param_from_json(d: Mapping[str, Any]) -> Param:
         kind=d["kind"],
         data_type=d["data_type"],
         element_type=d.get("element_type"),
-        values=tuple(v for v in (_typed_from_json(x) for x in d.get("values", ())) if v is not None),
+        values=tuple(v for v in (_typed_from_json(x) for x in d.get("values", ()))
+                     if v is not None),
         description=d.get("description", ""),
         options=tuple(d.get("options", ())),
     )
