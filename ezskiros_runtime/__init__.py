@@ -10,6 +10,9 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any
 
+__version__ = "0.1.0"
+"""Also part of the ontology cache key: a new release never reads an old release's cache."""
+
 if TYPE_CHECKING:
     from .diagnostics import (
         DescriptionError,
