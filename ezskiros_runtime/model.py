@@ -17,13 +17,13 @@ import json
 import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any, Literal, TypeAlias
+from typing import Any, Literal, TypeAlias, get_args
 
 Typed: TypeAlias = tuple[str, Any]
 """A type-exact value: ``("float", 0.5)``, ``("list", (("float", 2.0), ...))``."""
 
 ParamKind = Literal["Required", "Optional", "Inferred"]
-PARAM_KINDS: tuple[str, ...] = ("Required", "Optional", "Inferred")
+PARAM_KINDS: tuple[str, ...] = get_args(ParamKind)
 
 ConditionKind = Literal[
     "relation",
@@ -35,16 +35,7 @@ ConditionKind = Literal[
     "on_type",
     "or",
 ]
-CONDITION_KINDS: tuple[str, ...] = (
-    "relation",
-    "abstract_relation",
-    "property",
-    "has_property",
-    "is_specified",
-    "generate",
-    "on_type",
-    "or",
-)
+CONDITION_KINDS: tuple[str, ...] = get_args(ConditionKind)
 CONDITION_LISTS: tuple[str, ...] = ("pre", "hold", "post")
 
 
