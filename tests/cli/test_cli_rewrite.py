@@ -1,0 +1,128 @@
+"""``ezmigrate rewrite`` through the real entry point, on real files in temporary folders."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
+PICK = FIXTURES / "legacy" / "pick_and_place.py"
+PICK_MIGRATED = FIXTURES / "migrated" / "pick_and_place.py"
+PLAIN = FIXTURES / "legacy" / "nothing_to_do.py"
+
+
+def ezmigrate(*args: str | Path, stdin: bytes | None = None,
+              cwd: Path | None = None) -> subprocess.CompletedProcess[bytes]:
+    return subprocess.run([sys.executable, "-m", "ezmigrate", *map(str, args)], input=stdin,
+                          capture_output=True, cwd=cwd, check=False, timeout=300)
+
+
+@pytest.fixture
+def repo(tmp_path: Path) -> Path:
+    root = tmp_path / "repo"
+    (root / "skills").mkdir(parents=True)
+    shutil.copy(PICK, root / "skills" / "pick.py")
+    shutil.copy(PLAIN, root / "skills" / "plain.py")
+    return root
+
+
+def snapshot(root: Path) -> dict[Path, bytes]:
+    return {p: p.read_bytes() for p in root.rglob("*.py")}
+
+
+def test_dry_run_prints_diffs_writes_nothing_and_summarises_on_stderr(repo: Path):
+    before = snapshot(repo)
+    proc = ezmigrate("rewrite", "--dry-run", "--no-verify", repo)
+    assert proc.returncode == 0
+    out = proc.stdout.decode()
+    assert out.startswith("--- a/skills/pick.py\n+++ b/skills/pick.py\n")
+    assert "+    def description(self," in out and "\x1b[" not in out  # no colour when piped
+    assert "plain.py" not in out
+    assert snapshot(repo) == before
+    assert "2 files scanned, 3 skills found, 3 converted" in proc.stderr.decode()
+
+
+def test_check_exits_one_when_something_would_change_and_zero_after(repo: Path):
+    proc = ezmigrate("rewrite", "--check", "--no-verify", repo)
+    assert proc.returncode == 1
+    assert proc.stdout.decode().strip() == f"would rewrite {repo / 'skills' / 'pick.py'}"
+    assert ezmigrate("rewrite", repo).returncode == 0
+    assert (repo / "skills" / "pick.py").read_bytes() == PICK_MIGRATED.read_bytes()
+    again = ezmigrate("rewrite", "--check", repo)
+    assert again.returncode == 0 and again.stdout == b""
+
+
+def test_check_and_dry_run_combine(repo: Path):
+    proc = ezmigrate("rewrite", "--check", "--dry-run", "--no-verify", repo)
+    assert proc.returncode == 1 and b"+++ b/skills/pick.py" in proc.stdout
+
+
+def test_json_report_schema(repo: Path, tmp_path: Path):
+    report = tmp_path / "r.json"
+    assert ezmigrate("rewrite", "--dry-run", repo, "--report", report).returncode == 0
+    data = json.loads(report.read_text())
+    assert data["version"] == 1
+    assert data["summary"] == {"files": 2, "skills": 3, "converted": 3, "skipped": 0,
+                               "failed": 0}
+    first = data["skills"][0]
+    assert {"file", "class", "line", "status", "reason", "findings", "equivalent"} <= set(first)
+    assert (first["file"], first["class"], first["status"], first["equivalent"]) == \
+        ("skills/pick.py", "Pick", "converted", True)
+
+
+def test_markdown_report_and_skips_exit_one(tmp_path: Path):
+    shutil.copy(FIXTURES / "legacy" / "not_convertible.py", tmp_path / "nc.py")
+    report = tmp_path / "r.md"
+    proc = ezmigrate("rewrite", "--dry-run", "--no-verify", tmp_path / "nc.py", "--report", report)
+    assert proc.returncode == 1
+    text = report.read_text()
+    assert text.startswith("# ezmigrate report") and "| files | skills |" in text
+    assert "- **FollowWaypoints**" in text and "reason: a loop at line" in text
+    assert "NOT verified" in text
+
+
+def test_excludes_apply_to_explicit_files_and_gitignore_is_respected(repo: Path):
+    proc = ezmigrate("rewrite", "--check", "--no-verify", "--exclude", "pick.py",
+                     repo / "skills" / "pick.py")
+    assert proc.returncode == 0 and "0 files scanned" in proc.stderr.decode()
+    subprocess.run(["git", "init", "-q", str(repo)], check=True)
+    (repo / ".gitignore").write_text("skills/pick.py\n")
+    proc = ezmigrate("rewrite", "--check", "--no-verify", repo)
+    assert proc.returncode == 0 and "1 files scanned" in proc.stderr.decode()
+
+
+def test_output_dir_writes_a_side_by_side_tree(repo: Path, tmp_path: Path):
+    before = snapshot(repo)
+    out = tmp_path / "out"
+    assert ezmigrate("rewrite", repo, "--output-dir", out).returncode == 0
+    assert snapshot(repo) == before
+    assert (out / "skills" / "pick.py").read_bytes() == PICK_MIGRATED.read_bytes()
+    assert (out / "skills" / "plain.py").read_bytes() == PLAIN.read_bytes()
+    assert ezmigrate("verify", repo, out).returncode == 0
+
+
+def test_stdin_to_stdout(tmp_path: Path):
+    proc = ezmigrate("rewrite", "-", stdin=PICK.read_bytes(), cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout == PICK_MIGRATED.read_bytes()
+    plain = ezmigrate("rewrite", "-", stdin=PLAIN.read_bytes(), cwd=tmp_path)
+    assert plain.returncode == 0 and plain.stdout == PLAIN.read_bytes()
+
+
+def test_usage_errors_exit_two(tmp_path: Path):
+    assert ezmigrate("rewrite").returncode == 2
+    assert ezmigrate("rewrite", "--jobs", "0", tmp_path).returncode == 2
+    assert ezmigrate("rewrite", "--ontology", tmp_path / "missing.ttl", tmp_path).returncode == 2
+
+
+def test_console_script_and_module_agree(repo: Path):
+    script = Path(sys.executable).parent / "ezmigrate"
+    a = subprocess.run([str(script), "rewrite", "--dry-run", "--no-verify", str(repo)],
+                       capture_output=True, check=False)
+    b = ezmigrate("rewrite", "--dry-run", "--no-verify", repo)
+    assert (a.returncode, a.stdout) == (b.returncode, b.stdout)
