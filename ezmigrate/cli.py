@@ -8,19 +8,20 @@ found changes, a skill was skipped or failed verification, a file could not be p
 
 from __future__ import annotations
 
+import contextlib
 import sys
+import threading
 import traceback
 from pathlib import Path
 from typing import Any, NoReturn
 
 import click
 
-from . import __version__
+from . import __version__, interrupt
 from .config import load_project_config
 from .diffs import colour, unified_diff
 from .report import MarkdownOptions, Summary, json_report, markdown_report
 from .results import FileResult
-from .session import RewriteOptions, run_rewrite
 
 EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
 
@@ -32,6 +33,51 @@ def _fail(message: str, debug: bool) -> NoReturn:
     else:
         click.echo("ezmigrate: rerun with --debug for details", err=True)
     sys.exit(EXIT_ERROR)
+
+
+def _short(message: str, debug: bool) -> str:
+    """A message for stderr: its first line, unless ``--debug`` asks for all of it."""
+    lines = message.splitlines() or [""]
+    if debug or len(lines) == 1:
+        return message
+    return f"{lines[0].rstrip(':')} (rerun with --debug for details)"
+
+
+class _Main(click.Group):
+    """Stops cleanly on SIGINT/SIGTERM/SIGHUP (says what was done, exits 128 + signal); an
+    internal error anywhere, a worker thread included, is one line and a ``--debug`` hint."""
+
+    def invoke(self, ctx: click.Context) -> Any:
+        debug = "--debug" in sys.argv[1:]
+        previous_hook = threading.excepthook
+        threading.excepthook = lambda args: _thread_failed(args, debug)
+        interrupt.install()  # for the life of the process
+        try:
+            return super().invoke(ctx)
+        except interrupt.Interrupted as stop:
+            interrupt.ignore_further()
+            with contextlib.suppress(OSError):  # the terminal may be gone (SIGHUP)
+                for line in stop.report():
+                    click.echo(f"ezmigrate: {line}", err=True)
+            sys.exit(stop.exit_code)
+        except (click.exceptions.ClickException, click.exceptions.Exit,
+                click.exceptions.Abort):
+            raise
+        except Exception as error:  # never a raw traceback for the user
+            _fail(f"internal error: {error}", debug)
+        finally:
+            threading.excepthook = previous_hook
+
+
+def _thread_failed(args: Any, debug: bool) -> None:
+    if args.exc_type is SystemExit:
+        return
+    click.echo(f"ezmigrate: internal error in a worker thread: {args.exc_type.__name__}: "
+               f"{args.exc_value}", err=True)
+    if debug:
+        traceback.print_exception(args.exc_type, args.exc_value, args.exc_traceback)
+    else:
+        click.echo("ezmigrate: rerun with --debug for details", err=True)
 
 
 def _load_index(ontology: tuple[Path, ...], start: Path) -> tuple[Any, tuple[str, ...]]:
@@ -52,11 +98,16 @@ def _write_report(path: Path, results: list[FileResult], options: MarkdownOption
     text = markdown_report(results, options) if path.suffix == ".md" else json_report(results)
     if str(path) == "-":
         click.echo(text, nl=False)
-    else:
+        return
+    try:
         path.write_text(text, encoding="utf-8")
+    except OSError as error:
+        click.echo(f"ezmigrate: error: cannot write the report {path}: "
+                   f"{error.strerror or error}", err=True)
+        sys.exit(EXIT_ERROR)
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="ezmigrate")
 def main() -> None:
     """Migrate SkiROS2 skill descriptions to EzSkiROS, and prove nothing changed."""
@@ -93,6 +144,8 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             index, ontology_files = _load_index(ontology, Path.cwd())
             sys.exit(rewrite_stdin(index, ontology_files, verify=verify, check=check,
                                    dry_run=dry_run, timeout=timeout or 20.0))
+        from .session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
+
         start = paths[0]
         project = load_project_config(start)
         index, ontology_files = _load_index(ontology, start)
@@ -117,7 +170,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     for item in outcome.migrated:
         result = item.result
         if result.error:
-            click.echo(f"{item.candidate.path}: {result.error}", err=True)
+            click.echo(f"{item.candidate.path}: {_short(result.error, debug)}", err=True)
         for skill in result.skills:
             if skill.status in ("skipped", "failed"):
                 click.echo(f"{item.candidate.path}:{skill.line}: {skill.name}: {skill.status}: "
@@ -173,10 +226,11 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
         _fail(f"internal error: {error}", debug)
     for result in results:
         if result.error:
-            click.echo(f"{result.path}: {result.error}", err=True)
+            click.echo(f"{result.path}: {_short(result.error, debug)}", err=True)
         for skill in result.skills:
             if skill.status == "failed":
-                click.echo(f"{result.path}:{skill.line}: {skill.name}: {skill.reason}", err=True)
+                click.echo(f"{result.path}:{skill.line}: {skill.name}: "
+                           f"{_short(skill.reason or '', debug)}", err=True)
                 for d in skill.diff or ():
                     click.echo(f"    {d['where']}: {d['message']}", err=True)
                     if d.get("before") is not None:

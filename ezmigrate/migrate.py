@@ -9,6 +9,8 @@ not at all; a class whose base description was not converted is not converted ei
 
 from __future__ import annotations
 
+import ast
+import re
 import traceback
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
@@ -89,12 +91,19 @@ def migrate(source: bytes | str, settings: Settings | None = None,
     try:
         module = cst.parse_module(source)
     except cst.ParserSyntaxError as error:
-        result.error = f"cannot parse: {error.message} (line {error.raw_line}, column " \
-                       f"{error.raw_column + 1})"
-        result.error_line = error.raw_line
+        message, line, column = syntax_error_location(source, error)
+        result.error = f"cannot parse: {message} (line {line}, column {column})"
+        result.error_line = line
         return result
     except (UnicodeDecodeError, LookupError, SyntaxError) as error:
-        result.error = f"cannot decode: {error}"
+        result.error, result.error_line = decode_error_message(source, error)
+        return result
+    python2 = _python2_except(module, source)
+    if python2 is not None:
+        line, column = python2
+        result.error = (f"cannot parse: Python 2 syntax `except X, e:` (line {line}, column "
+                        f"{column}); port the file to Python 3 (`except X as e:`) first")
+        result.error_line = line
         return result
     names = LegacyNames.of_module(module)
     result.foreign_bases = foreign_bases(module, names)
@@ -337,3 +346,79 @@ class _Rename(cst.CSTTransformer):
 
     def leave_Name(self, original: cst.Name, updated: cst.Name) -> cst.Name:
         return updated.with_changes(value=self.new) if updated.value == self.old else updated
+
+
+def syntax_error_location(source: bytes | str, error: cst.ParserSyntaxError) -> tuple[str, int,
+                                                                                        int]:
+    """Message, line and 1-based column of a syntax error, as Python itself words it.
+
+    libcst's native parser reports the token after the error (often on the next line);
+    ``ast.parse`` (parsing only, nothing runs) points where a user looks.
+    """
+    raw = source.encode("utf-8", "surrogateescape") if isinstance(source, str) else source
+    if b"\0" in raw:
+        at = raw.index(b"\0")
+        return ("a NUL byte (binary data, not Python source)", raw.count(b"\n", 0, at) + 1,
+                at - (raw.rfind(b"\n", 0, at) + 1) + 1)
+    try:
+        ast.parse(source)
+    except SyntaxError as py_error:
+        if py_error.lineno:
+            return py_error.msg, py_error.lineno, py_error.offset or 1
+    except Exception:  # too deep, too big...: keep libcst's words
+        pass
+    match = re.match(r"(?:parser error: )?error at (\d+):(\d+): (.*)", error.message, re.S)
+    if match:
+        return match[3], int(match[1]), int(match[2]) + 1
+    return error.message, error.raw_line, error.raw_column + 1
+
+
+def decode_error_message(source: bytes | str, error: Exception) -> tuple[str, int | None]:
+    """What to tell about a file that is not valid in its declared encoding, and the line."""
+    raw = source.encode("utf-8", "surrogateescape") if isinstance(source, str) else source
+    head = raw.removeprefix(b"\xef\xbb\xbf").split(b"\n", 2)[:2]
+    cookie = next((n for n, text in enumerate(head, 1) if _COOKIE.match(text)), None)
+    if isinstance(error, UnicodeDecodeError):
+        bom = b"\xef\xbb\xbf"
+        start = error.start + (len(bom) if raw.startswith(bom) else 0)
+        line = raw.count(b"\n", 0, start) + 1
+        column = start - (raw.rfind(b"\n", 0, start) + 1) + 1
+        match = _COOKIE.match(head[cookie - 1]) if cookie else None
+        encoding = match[1].decode("ascii", "replace") if match else "utf-8"
+        hint = "" if cookie else (" (no coding line: Python reads the file as UTF-8; add one "
+                                  "such as `# -*- coding: cp1252 -*-` if that is what the "
+                                  "file uses)")
+        byte = raw[start] if start < len(raw) else 0
+        return (f"cannot decode: byte 0x{byte:02x} at line {line}, column {column} is not "
+                f"valid {encoding}{hint}"), line
+    return f"cannot decode: {error}" + (f" (line {cookie})" if cookie else ""), cookie
+
+
+_COOKIE = re.compile(rb"^[ \t\f]*#.*?coding[:=][ \t]*([-\w.]+)")
+
+
+_EXCEPT_COMMA = re.compile(rb"\bexcept\b[^:\n]*,")
+
+
+def _python2_except(module: cst.Module, source: bytes | str) -> tuple[int, int] | None:
+    """Line and column of a Python 2 ``except X, e:``, if any.
+
+    libcst reads it as PEP 758's unparenthesised ``except A, B:`` (Python 3.14); in a
+    SkiROS2 module it is Python 2 code that no supported Python can import.
+    """
+    raw = source.encode("utf-8", "surrogateescape") if isinstance(source, str) else source
+    if not _EXCEPT_COMMA.search(raw):
+        return None
+    found: list[cst.ExceptHandler] = []
+
+    class _Handlers(cst.CSTVisitor):
+        def visit_ExceptHandler(self, node: cst.ExceptHandler) -> None:
+            if node.name is None and isinstance(node.type, cst.Tuple) and not node.type.lpar:
+                found.append(node)
+
+    wrapped, positions = positions_of(module)
+    wrapped.visit(_Handlers())
+    if not found:
+        return None
+    start = getattr(positions.get(found[0]), "start", None)
+    return (start.line, start.column + 1) if start is not None else (0, 0)

@@ -3,6 +3,12 @@
 The CLI turns options into a ``RewriteOptions``, calls ``run_rewrite`` and prints what the
 returned outcome says, so every decision (what is written, what is refused) is testable
 without a terminal.
+
+Writing is the only phase that touches the user's files, one ``atomic_write`` at a time,
+each inside an ``interrupt.deferred`` section: a signal lets the current write finish, then
+stops the run before the next one (``Interrupted`` carries what was written and what was
+not). Nothing is written before every file has been migrated and verified, so a run stopped
+earlier changed nothing.
 """
 
 from __future__ import annotations
@@ -12,8 +18,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from . import interrupt
 from .discover import Candidate, discover
-from .runner import Migrated, default_jobs, migrate_all
+from .package import migrate_package
+from .runner import Migrated, default_jobs
 from .writing import WriteRefused, atomic_write
 
 if TYPE_CHECKING:
@@ -58,44 +66,78 @@ Verifier = Callable[[list[Migrated], RewriteOptions], None]
 def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
                 verifier: Verifier | None = None,
                 on_written: Callable[[str], None] | None = None) -> RewriteOutcome:
-    """Discover and migrate; verify converted skills; write files whose skills all verified."""
+    """Discover and migrate; verify converted skills; write files whose skills all verified.
+
+    Raises ``interrupt.Interrupted`` when a signal stops the run (see the module doc).
+    """
     candidates, notes = discover(options.paths, options.exclude)
-    migrated = migrate_all(candidates, index, options.jobs)
+    migrated = migrate_package(candidates, index, options.jobs)
     outcome = RewriteOutcome(migrated, notes)
     if options.verify and verifier is not None:
         verifier([m for m in migrated if m.result.changed], options)
     if not options.writes:
         return outcome
+    interrupt.track(outcome.written, [i.candidate.relative for i in migrated
+                                      if i.result.changed])
     for item in migrated:
-        target = _target(item.candidate, options.output_dir)
-        data = item.result.new_source if item.result.changed else None
-        if options.output_dir is not None:
-            assert target is not None
-            content = data if isinstance(data, bytes) else item.original
-            if item.result.error is not None and item.original == b"":
-                continue
-            target.parent.mkdir(parents=True, exist_ok=True)
-            if not target.exists():
-                target.write_bytes(b"")
-            _write(target, content, None, outcome, item, on_written)
-        elif isinstance(data, bytes):
-            _write(item.candidate.path, data, item.digest, outcome, item, on_written)
+        content = _content(item, options.output_dir)  # a copy is read only now
+        if content is None:
+            continue
+        interrupt.check()
+        with interrupt.deferred():
+            _write(item, content, options, outcome, on_written)
     return outcome
+
+
+def _content(item: Migrated, output_dir: Path | None) -> bytes | None:
+    """What to write for ``item``: the new source, or (with an output folder) a copy."""
+    data = item.result.new_source if item.result.changed else None
+    if output_dir is None:
+        return data if isinstance(data, bytes) else None
+    if item.result.error is not None and item.original == b"":
+        return None  # unreadable: nothing to copy
+    return data if isinstance(data, bytes) else item.original
 
 
 def _target(candidate: Candidate, output_dir: Path | None) -> Path | None:
     return None if output_dir is None else output_dir / candidate.relative
 
 
-def _write(path: Path, data: bytes, expected: str | None, outcome: RewriteOutcome,
-           item: Migrated, on_written: Callable[[str], None] | None) -> None:
+def _write(item: Migrated, data: bytes, options: RewriteOptions, outcome: RewriteOutcome,
+           on_written: Callable[[str], None] | None) -> None:
+    """Write one file; a refusal becomes a message, never an exception."""
+    path = item.candidate.path
     try:
-        atomic_write(path, data, expected)
+        target = _target(item.candidate, options.output_dir)
+        if target is None:
+            atomic_write(path, data, item.digest, roots=[item.candidate.root])
+        else:
+            target.parent.mkdir(parents=True, exist_ok=True)
+            mode = _mode_of(path)
+            atomic_write(target, data, None, roots=[options.output_dir or target.parent],
+                         create=True, mode=mode)
     except WriteRefused as refused:
-        outcome.refused.append(str(refused))
-        item.result.notes.append(str(refused))
+        _refuse(item, outcome, str(refused))
+        return
+    except OSError as error:  # e.g. the output folder cannot be made
+        _refuse(item, outcome, f"{path}: not written ({error.strerror or error}), left as it "
+                               "was")
         return
     if item.result.changed:
         outcome.written.append(item.candidate.relative)
         if on_written is not None:
             on_written(item.candidate.relative)
+
+
+def _refuse(item: Migrated, outcome: RewriteOutcome, message: str) -> None:
+    """The file keeps its content: say why, and report it as not changed."""
+    outcome.refused.append(message)
+    item.result.notes.append(message)
+    item.result.new_source = None
+
+
+def _mode_of(path: Path) -> int | None:
+    try:
+        return path.stat().st_mode & 0o7777
+    except OSError:
+        return None

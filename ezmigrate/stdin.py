@@ -1,14 +1,23 @@
-"""``ezmigrate rewrite -``: one file from stdin to stdout, for editors and pre-commit hooks."""
+"""``ezmigrate rewrite -``: one file from stdin to stdout, for editors and pre-commit hooks.
+
+Whatever happens, stdout gets a whole file: the migrated source, or the input unchanged
+(an editor replacing its buffer with our output must never lose a line). Problems go to
+stderr on one line each; user code runs only when verifying, in isolated children.
+"""
 
 from __future__ import annotations
 
 import sys
 import tempfile
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .diffs import unified_diff
 from .migrate import Settings, migrate
+
+if TYPE_CHECKING:
+    from .verify.compare_files import ClassVerdict
+    from .verify.protocol import LoadOutcome
 
 
 def rewrite_stdin(index: Any, ontology: tuple[str, ...], *, verify: bool, check: bool,
@@ -30,8 +39,9 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], *, verify: bool, check:
                                      PoolConfig(workers=2, timeout=timeout, ontology=ontology))
         verdicts = compare_outcomes(before, after) if before.loaded and after.loaded else []
         if not verdicts or not all(v.equivalent for v in verdicts):
-            print("-: not written: the migrated version could not be verified equivalent",
-                  file=sys.stderr)
+            why = _why_unverified(before, after, verdicts)
+            print(f"-: not rewritten: the migrated version could not be verified equivalent "
+                  f"({why})", file=sys.stderr)
             new = None
     if dry_run or check:
         if new is not None and dry_run:
@@ -40,3 +50,16 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], *, verify: bool, check:
     sys.stdout.buffer.write(new if new is not None else data)
     skipped = any(s.status in ("skipped", "failed") for s in result.skills)
     return 1 if result.error or skipped or (new is None and result.changed) else 0
+
+
+def _why_unverified(before: LoadOutcome, after: LoadOutcome,
+                    verdicts: list[ClassVerdict]) -> str:
+    """One line: which version did not load, or which class differs."""
+    for side, outcome in (("the legacy version", before), ("the migrated version", after)):
+        if not outcome.loaded:
+            first = (outcome.message.splitlines() or [outcome.status])[0]
+            return f"{side} could not be loaded: {first}"
+    for verdict in verdicts:
+        if not verdict.equivalent:
+            return f"{verdict.name}: {verdict.message}"
+    return "no description class was loaded"

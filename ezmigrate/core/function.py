@@ -12,6 +12,7 @@ from __future__ import annotations
 import itertools
 import keyword
 import re
+import unicodedata
 
 import libcst as cst
 
@@ -49,8 +50,10 @@ def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
     """The signature's parameters, in order.
 
     A key declared again replaces the first declaration in its position (§8.3), so when
-    the first one expanded no options the second is simply written in the first's place;
-    otherwise both are kept (the second with a ``KEY``), as SkiROS2 would run them.
+    the first one expanded no options the second is simply written in the first's place,
+    unless the second expands options after others did (its conditions would move ahead
+    of theirs); otherwise both are kept (the second with a ``KEY``), as SkiROS2 would run
+    them.
     SkiROS2's automatic ``Robot`` is written as ``Robot: INFERRED[sumo.Agent]`` last when
     conditions use it undeclared: exactly what ``generateDefParams`` appends (§8.1).
     The caller replays the result to prove the model is unchanged.
@@ -58,8 +61,10 @@ def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
     params: list[ParamOp] = []
     for op in skill.params():
         earlier = next((i for i, p in enumerate(params) if p.key == op.key), None)
+        between = params[earlier + 1:] if earlier is not None else []
         if earlier is not None and not _expands_options(params[earlier]) \
-                and not any(p.key == op.key for p in params[earlier + 1:]):
+                and not any(p.key == op.key for p in between) \
+                and not (_expands_options(op) and any(_expands_options(p) for p in between)):
             params[earlier] = op
         else:
             params.append(op)
@@ -71,10 +76,21 @@ def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
 
 
 def _identifier(key: str) -> str:
-    name = re.sub(r"\W+", "_", key).strip("_") or "param"
-    if name[0].isdigit():
-        name = "_" + name
+    """A Python name made from ``key``, as Python reads it back: ``\\w`` is wider than what
+    an identifier may hold (``"¼"``, ``"²"``), and Python NFKC-normalizes every name it
+    parses (``ℌ`` is ``H``), so keep only characters valid in an identifier, normalize, and
+    check the result."""
+    kept = "".join(c if ("_" + c).isidentifier() else "_" for c in key)
+    name = re.sub(r"_+", "_", unicodedata.normalize("NFKC", kept)).strip("_") or "param"
+    if not name.isidentifier():
+        name = "_" + name if ("_" + name).isidentifier() else "param"
     return name + "_" if keyword.iskeyword(name) else name
+
+
+def _usable_as_is(key: str) -> bool:
+    """A key Python keeps exactly as written when it is a parameter name."""
+    return key.isidentifier() and not keyword.iskeyword(key) \
+        and unicodedata.normalize("NFKC", key) == key
 
 
 def assign_names(params: list[ParamOp], ctx: EmitContext) -> list[str]:
@@ -82,7 +98,7 @@ def assign_names(params: list[ParamOp], ctx: EmitContext) -> list[str]:
     taken = set(ctx.reserved)
     names: list[str] = []
     for op in params:
-        usable = op.key.isidentifier() and not keyword.iskeyword(op.key) and op.key not in taken
+        usable = _usable_as_is(op.key) and op.key not in taken
         name = op.key if usable else _identifier(op.key)
         base, counter = name, 2
         while name in taken:

@@ -9,32 +9,59 @@ runs twice.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import resource
+import signal
 import sys
 import time
 import traceback
 from pathlib import Path
 from typing import Any
 
-from .protocol import LoadJob, LoadOutcome
+from .overlay import overlaid
+from .protocol import LoadJob, LoadOutcome, Status
+
+OUTPUT_LIMIT = 64 * 1024 * 1024
+"""Largest file the child may write (its captured output included): a module that prints
+without end fills no disk before the timeout; past it a write fails with EFBIG."""
 
 
 def isolate(stdout_path: str, stderr_path: str, memory_bytes: int | None) -> None:
-    """Redirect the standard streams and cap memory, at the file-descriptor level."""
+    """Redirect the standard streams and cap resources, at the file-descriptor level.
+
+    stdin reads nothing (``/dev/null``); stdout and stderr go to files the worker reads
+    back; every other inherited descriptor (the worker's protocol pipe among them) is
+    closed, so the user's module cannot corrupt or read the conversation with the worker.
+    Limits: address space (``memory_bytes``), file size (``OUTPUT_LIMIT``), no core dumps.
+    """
     devnull = os.open(os.devnull, os.O_RDONLY)
     os.dup2(devnull, 0)
     for fd, target in ((1, stdout_path), (2, stderr_path)):
         handle = os.open(target, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
         os.dup2(handle, fd)
         os.close(handle)
+    os.closerange(3, _max_fd())
     sys.stdin = open(os.devnull)  # noqa: SIM115  (lives until the child exits)
+    limits = [(resource.RLIMIT_CORE, 0), (resource.RLIMIT_FSIZE, OUTPUT_LIMIT)]
     if memory_bytes:
-        try:
-            resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
-        except (ValueError, OSError):
-            pass
+        limits.append((resource.RLIMIT_AS, memory_bytes))
+    for kind, value in limits:
+        with contextlib.suppress(ValueError, OSError):
+            hard = resource.getrlimit(kind)[1]
+            if hard != resource.RLIM_INFINITY:
+                value = min(value, hard)
+            resource.setrlimit(kind, (value, value))
+    with contextlib.suppress(ValueError, OSError):
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # EFBIG instead of a killed child
+
+
+def _max_fd() -> int:
+    try:
+        return min(int(os.sysconf("SC_OPEN_MAX")), 1 << 20)
+    except (ValueError, OSError):
+        return 4096
 
 
 def load(job: LoadJob) -> LoadOutcome:
@@ -47,22 +74,25 @@ def load(job: LoadJob) -> LoadOutcome:
     path = Path(job.path)
     try:
         source = job.source if job.source is not None else path.read_bytes()
-        with collecting():
+        with collecting(), overlaid(job.overlays):
             result = load_bytes(source, path, root=Path(job.root) if job.root else None)
     except SystemExit as stop:
         return LoadOutcome("exit", f"the module called sys.exit({stop.code!r}) while loading")
     except MemoryError:
         return LoadOutcome("memory", "the module ran out of memory while loading")
     except ModuleLoadError as error:
-        status = "syntax" if isinstance(error.__cause__, SyntaxError) else "import-error"
+        status: Status = "syntax" if isinstance(error.__cause__, SyntaxError) \
+            else "import-error"
         message = str(error)
         if status == "syntax":
             version = f"{sys.version_info.major}.{sys.version_info.minor}"
             message = f"cannot import under Python {version}: {message}"
         return LoadOutcome(status, message, getattr(error, "line", None))
     except Exception as error:  # a loader bug still gives a verdict for this file only
-        return LoadOutcome("import-error", f"{type(error).__name__}: {error}\n"
-                           + traceback.format_exc(limit=4))
+        traceback.print_exc(limit=8)  # into the captured stderr, not into the message
+        first = (str(error).splitlines() or [""])[0]
+        return LoadOutcome("import-error", f"{type(error).__name__}: {first} (an internal "
+                           "error while loading; its traceback is in the captured stderr)")
     return LoadOutcome(
         "ok",
         models=[m.to_json() for m in result.models],
@@ -92,7 +122,7 @@ def run_child(job: LoadJob, result_path: str, stdout_path: str, stderr_path: str
         outcome = load(job)
         with open(result_path, "w", encoding="utf-8") as handle:
             json.dump(outcome.to_json(), handle)
-    except BaseException:  # noqa: BLE001  (the child must always reach os._exit)
+    except BaseException:  # the child must always reach os._exit
         code = 70
     finally:
         try:

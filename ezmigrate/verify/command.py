@@ -70,8 +70,11 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
                                         ignore_labels=options.ignore_labels):
             status: SkillStatus = ("unchanged" if same_text else "converted") \
                 if verdict.equivalent else "failed"
+            unverified = verdict.verdict == "unverified"  # the class loads in neither
+            unloadable = unloadable or unverified
             results[-1].skills.append(SkillResult(
                 verdict.name, verdict.line_after or verdict.line_before or 0, status,
-                None if verdict.equivalent else verdict.message, equivalent=verdict.equivalent,
+                None if verdict.equivalent else verdict.message,
+                equivalent=None if unverified else verdict.equivalent,
                 diff=verdict.diff or None))
     return results, unloadable

@@ -10,7 +10,9 @@ from ezskiros_runtime.model import SkillModel
 
 from .protocol import LoadOutcome
 
-Verdict = Literal["equivalent", "different", "missing-after", "added-after", "error"]
+Verdict = Literal["equivalent", "different", "missing-after", "added-after", "error",
+                  "unverified"]
+"""``unverified``: the class fails to load in both versions, so nothing was compared."""
 
 
 @dataclass
@@ -56,8 +58,9 @@ def _one(name: str, old: dict[str, SkillModel], new: dict[str, SkillModel],
     if name in new_errors and name not in old_errors:
         return ClassVerdict(name, "error", "the migrated class fails to load: "
                             + str(new_errors[name].get("message", "")))
-    if name in old_errors and name in new_errors:
-        return ClassVerdict(name, "equivalent", "fails to load in both versions")
+    if name in old_errors and name in new_errors:  # no model on either side: no proof
+        return ClassVerdict(name, "unverified", "fails to load in both versions, so it "
+                            "cannot be verified: " + str(new_errors[name].get("message", "")))
     if name in old_errors:
         return ClassVerdict(name, "error", "the legacy class fails to load: "
                             + str(old_errors[name].get("message", "")))

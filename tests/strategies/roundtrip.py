@@ -8,12 +8,12 @@ compares them with ``ezmigrate.verify.compare_files.compare_outcomes``, exactly 
 found by both the static pass and the loader; a class may be skipped only for a reason in
 ``ALLOWED_SKIPS``.
 
-Verification is what costs (two child processes per module), so it is batched: ``add``
-migrates a module and queues its two load jobs; every ``batch`` modules, one ``run_jobs``
-call runs in a background thread while the caller (hypothesis) goes on generating. A
-verification failure is therefore reported after generation, with the full legacy and
-migrated text of the module (no shrinking); static problems (``migrate`` raising, classes
-not found) are returned by ``add`` at once, so a hypothesis test can fail on them and shrink.
+Migrating and verifying cost far more than generating, so they are batched: ``add``
+collects generated modules (dropping repeats: hypothesis sometimes draws the same text
+twice), and ``run`` migrates all of them in a few forked processes, writes both versions,
+and verifies them with one ``run_jobs`` call. A failure is therefore reported after
+generation, with the full legacy and migrated text of its module instead of a shrunk
+example.
 
 Used by ``tests/verify/test_verify_roundtrip.py`` (CI) and ``bench/roundtrip_long.py``.
 """
@@ -21,12 +21,13 @@ Used by ``tests/verify/test_verify_roundtrip.py`` (CI) and ``bench/roundtrip_lon
 from __future__ import annotations
 
 import hashlib
+import multiprocessing
 import re
 import time
 import traceback
 from collections import Counter
-from collections.abc import Sequence
-from concurrent.futures import Future, ThreadPoolExecutor
+from collections.abc import Callable
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -35,7 +36,7 @@ from ezmigrate.migrate import Settings, migrate
 from ezmigrate.results import FileResult
 from ezmigrate.verify.compare_files import compare_outcomes
 from ezmigrate.verify.pool import PoolConfig, job_for, run_jobs
-from ezmigrate.verify.protocol import LoadJob, LoadOutcome
+from ezmigrate.verify.protocol import LoadOutcome
 from ezskiros_runtime.compare import compare
 from ezskiros_runtime.model import SkillModel
 
@@ -122,7 +123,7 @@ class Report:
         return "\n\n".join(shown) + (f"\n\n... and {more} more failures" if more > 0 else "")
 
 
-_CONSTRUCTS = {
+CONSTRUCTS = {
     "addParam": "addParam(", "Element()": "Element()", "options": "ParamOptions.",
     "Lock": ".Lock", "Consume": ".Consume", "Unspecify": ".Unspecify",
     "RespectType": ".RespectType", "Output": ".Output", "description=": "description=",
@@ -149,62 +150,108 @@ def allowed_skip(reason: str) -> bool:
     return any(re.search(pattern, reason) for pattern in ALLOWED_SKIPS)
 
 
+_SETTINGS: Settings | None = None
+
+
+def _init_migrate(settings: Settings) -> None:
+    global _SETTINGS
+    _SETTINGS = settings
+
+
+def _migrate(name: str, data: bytes) -> FileResult | str:
+    """``migrate()`` in a worker; a traceback string if it raised (it promises not to)."""
+    assert _SETTINGS is not None
+    try:
+        return migrate(data, _SETTINGS, name)
+    except Exception:
+        return traceback.format_exc(limit=8)
+
+
 class RoundTrip:
     """Migrate, write, verify and compare generated modules (see the module docstring)."""
 
-    def __init__(self, workdir: Path, settings: Settings, *, workers: int = 2,
-                 batch: int = 60, timeout: float = 20.0, keep_failures: int = 50) -> None:
-        self.before = workdir / "before"
-        self.after = workdir / "after"
-        self.before.mkdir(parents=True, exist_ok=True)
-        self.after.mkdir(parents=True, exist_ok=True)
+    def __init__(self, workdir: Path, settings: Settings, *, jobs: int = 2,
+                 timeout: float = 20.0, keep_failures: int = 50,
+                 limit: int | None = None,
+                 alter: Callable[[bytes], bytes] | None = None) -> None:
+        self.workdir = workdir
         self.settings = settings
-        self.config = PoolConfig(workers=workers, timeout=timeout)
-        self.batch = batch
+        self.jobs = jobs
+        self.config = PoolConfig(workers=jobs, timeout=timeout)
         self.keep_failures = keep_failures
+        self.limit = limit
+        """Distinct modules to keep at most (later ones are counted as examples only)."""
+        self.alter = alter
+        """Applied to each migrated source before it is written: a way to show that the
+        round trip fails when a migration changes meaning."""
         self.report = Report()
         self._seen: set[str] = set()
-        self._pending: list[tuple[str, GeneratedModule, FileResult]] = []
-        self._running: list[tuple[list[tuple[str, GeneratedModule, FileResult]],
-                                  Future[list[LoadOutcome]]]] = []
-        self._executor = ThreadPoolExecutor(max_workers=1, thread_name_prefix="roundtrip")
+        self._pending: list[tuple[str, GeneratedModule]] = []
 
-    # -- generation side ------------------------------------------------------------------
+    @property
+    def full(self) -> bool:
+        return self.limit is not None and self.report.modules >= self.limit
 
-    def add(self, module: GeneratedModule) -> list[Failure]:
-        """Migrate one module and queue its verification; static failures come back now."""
+    def add(self, module: GeneratedModule) -> None:
+        """Keep a generated module for the next ``run`` (repeats and extras are dropped)."""
         self.report.examples += 1
         digest = hashlib.sha256(module.text.encode("utf-8")).hexdigest()
-        if digest in self._seen:
-            return []
+        if digest in self._seen or self.full:
+            return
         self._seen.add(digest)
         self.report.modules += 1
-        name = f"gen_{self.report.modules:05d}.py"
-        for kind, marker in _CONSTRUCTS.items():
+        self._pending.append((f"gen_{self.report.modules:05d}.py", module))
+        for kind, marker in CONSTRUCTS.items():
             if marker in module.text:
                 self.report.kinds[kind] += 1
+
+    def run(self, progress: Callable[[str], None] | None = None) -> Report:
+        """Migrate, write, verify and compare every module added since the last run."""
+        items, self._pending = self._pending, []
+        if not items:
+            return self.report
+        before, after = self.workdir / "before", self.workdir / "after"
+        before.mkdir(parents=True, exist_ok=True)
+        after.mkdir(parents=True, exist_ok=True)
         started = time.perf_counter()
-        data = module.text.encode("utf-8")
-        try:
-            result = migrate(data, self.settings, name)
-        except Exception:  # migrate() promises never to raise
-            failure = Failure(name, "migrate-crash", traceback.format_exc(limit=8),
-                              legacy=module.text)
-            self._record(failure)
-            return [failure]
-        finally:
-            self.report.seconds["migrate"] += time.perf_counter() - started
-        failures = self._static_checks(name, module, result)
-        if isinstance(result.new_source, bytes):
-            self.report.changed_files += 1
-            (self.before / name).write_bytes(data)
-            (self.after / name).write_bytes(result.new_source)
-            self._pending.append((name, module, result))
-            if len(self._pending) >= self.batch:
-                self._submit()
-        for failure in failures:
-            self._record(failure)
-        return failures
+        results = self._migrate_all(items)
+        self.report.seconds["migrate"] += time.perf_counter() - started
+        changed: list[tuple[str, GeneratedModule, FileResult]] = []
+        for (name, module), result in zip(items, results, strict=True):
+            if isinstance(result, str):
+                self._record(Failure(name, "migrate-crash", result, legacy=module.text))
+                continue
+            for failure in self._static_checks(name, module, result):
+                self._record(failure)
+            if isinstance(result.new_source, bytes):
+                if self.alter is not None:
+                    result.new_source = self.alter(result.new_source)
+                (before / name).write_bytes(module.text.encode("utf-8"))
+                (after / name).write_bytes(result.new_source)
+                changed.append((name, module, result))
+        self.report.changed_files += len(changed)
+        if progress is not None:
+            progress(f"migrated {len(items)} modules, verifying {len(changed)} files")
+        started = time.perf_counter()
+        jobs = [job_for(folder / name) for name, _, _ in changed for folder in (before, after)]
+        outcomes = run_jobs(jobs, self.config)
+        self.report.seconds["verify"] += time.perf_counter() - started
+        for index, (name, module, result) in enumerate(changed):
+            self._compare(name, module, result, outcomes[2 * index], outcomes[2 * index + 1])
+        return self.report
+
+    def _migrate_all(self, items: list[tuple[str, GeneratedModule]]) -> list[FileResult | str]:
+        """``migrate()`` over every item, in ``jobs`` forked processes (no thread runs yet:
+        the verification pool starts its threads only afterwards)."""
+        names = [name for name, _ in items]
+        datas = [module.text.encode("utf-8") for _, module in items]
+        if self.jobs <= 1 or len(items) < 8:
+            _init_migrate(self.settings)
+            return [_migrate(n, d) for n, d in zip(names, datas, strict=True)]
+        context = multiprocessing.get_context("fork")
+        with ProcessPoolExecutor(max_workers=self.jobs, mp_context=context,
+                                 initializer=_init_migrate, initargs=(self.settings,)) as pool:
+            return list(pool.map(_migrate, names, datas, chunksize=4))
 
     def _static_checks(self, name: str, module: GeneratedModule,
                        result: FileResult) -> list[Failure]:
@@ -232,38 +279,6 @@ class RoundTrip:
             out.append(Failure(name, "static", "classes were converted but no new source "
                                "was produced", legacy=module.text))
         return out
-
-    def _submit(self) -> None:
-        if not self._pending:
-            return
-        items, self._pending = self._pending, []
-        jobs: list[LoadJob] = []
-        for name, _, _ in items:
-            jobs += [job_for(self.before / name), job_for(self.after / name)]
-        self._running.append((items, self._executor.submit(self._verify, jobs)))
-
-    def _verify(self, jobs: Sequence[LoadJob]) -> list[LoadOutcome]:
-        started = time.perf_counter()
-        try:
-            return run_jobs(jobs, self.config)
-        finally:
-            self.report.seconds["verify (background)"] += time.perf_counter() - started
-
-    # -- verification side ----------------------------------------------------------------
-
-    def finish(self) -> Report:
-        """Wait for every queued verification and compare; the report says what was found."""
-        self._submit()
-        started = time.perf_counter()
-        for items, future in self._running:
-            outcomes = future.result()
-            for index, (name, module, result) in enumerate(items):
-                self._compare(name, module, result, outcomes[2 * index],
-                              outcomes[2 * index + 1])
-        self._running.clear()
-        self._executor.shutdown()
-        self.report.seconds["wait + compare"] += time.perf_counter() - started
-        return self.report
 
     def _compare(self, name: str, module: GeneratedModule, result: FileResult,
                  before: LoadOutcome, after: LoadOutcome) -> None:

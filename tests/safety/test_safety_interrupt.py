@@ -1,0 +1,228 @@
+"""An interrupted run (SIGINT or SIGTERM at any moment) leaves every file wholly old or
+wholly new, leaves no temporary file, says what it wrote, exits 128 + the signal; a second
+run finishes the job.
+
+The corpus is the legacy fixtures copied three times into three folders. Each scenario
+starts ``rewrite`` in a subprocess and signals it after a random delay (discovery or
+migration), once its verification workers run, or right after its first file was replaced
+(the writing phase; once with two signals in a row), then checks every byte on disk against
+the original and the reference migration, the list of written files it printed against the
+disk, and that a second run finishes the job. Set EZMIGRATE_SAFETY_SEED to replay delays.
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+import random
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from safety_support import LEGACY, assert_no_traceback, cli, leftovers, snapshot, start_cli
+
+pytestmark = pytest.mark.slow
+
+COPIES = 3
+SEED = int(os.environ.get("EZMIGRATE_SAFETY_SEED", "0")) or random.randrange(1, 10**6)
+WORKER_MARK = "17.25"  # an unusual --timeout: lets the test find this run's workers
+
+
+def _build(folder: Path) -> None:
+    for copy in range(COPIES):
+        for index, source in enumerate(sorted(LEGACY.glob("*.py"))):
+            sub = folder / ("" if index % 3 == 0 else f"pkg{index % 3}")
+            sub.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(source, sub / f"{source.stem}_{copy}.py")
+
+
+@pytest.fixture(scope="module")
+def corpus(tmp_path_factory):
+    """(template folder, original bytes, reference bytes after a full run, its exit code)."""
+    template = tmp_path_factory.mktemp("template")
+    _build(template)
+    originals = snapshot(template)
+    reference = tmp_path_factory.mktemp("reference")
+    shutil.copytree(template, reference, dirs_exist_ok=True)
+    run = cli("rewrite", reference, "--no-verify")
+    assert_no_traceback(run.stderr)
+    expected = snapshot(reference)
+    assert sum(expected[n] != originals[n] for n in originals) > len(originals) // 2
+    return template, originals, expected, run.returncode
+
+
+def _inodes(folder: Path) -> dict[Path, int]:
+    return {p: p.stat().st_ino for p in folder.rglob("*.py")}
+
+
+def _signal_after_first_write(process, folder: Path, signum: int, extra: float,
+                              twice: bool) -> None:
+    """Poll inodes (``os.replace`` gives the file a new one); signal at the first change."""
+    before = _inodes(folder)
+    deadline = time.monotonic() + 600
+    while process.poll() is None and time.monotonic() < deadline:
+        if any(p.stat().st_ino != ino for p, ino in before.items()):
+            break
+        time.sleep(0.001)
+    time.sleep(extra)
+    process.send_signal(signum)
+    if twice:
+        time.sleep(0.005)
+        if process.poll() is None:
+            process.send_signal(signum)
+
+
+def _wait_until_handling(process) -> None:
+    """Until the process catches SIGTERM: its handlers are in (Python's start-up is over).
+
+    A signal before that finds Python's defaults (nothing is written yet, either way)."""
+    deadline = time.monotonic() + 120
+    while process.poll() is None and time.monotonic() < deadline:
+        try:
+            status = Path(f"/proc/{process.pid}/status").read_text()
+        except OSError:
+            return
+        caught = next((int(line.split()[1], 16) for line in status.splitlines()
+                       if line.startswith("SigCgt:")), 0)
+        if caught & (1 << (signal.SIGTERM - 1)):
+            return
+        time.sleep(0.002)
+
+
+def _workers_of_this_test() -> list[str]:
+    found = []
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            command = (entry / "cmdline").read_bytes().replace(b"\0", b" ").decode()
+        except OSError:
+            continue
+        if "ezmigrate.verify.zygote" in command and f"--timeout {WORKER_MARK}" in command:
+            found.append(command)
+    return found
+
+
+def _check_consistent(folder: Path, originals: dict[str, bytes], expected: dict[str, bytes],
+                      stderr: str) -> tuple[set[str], set[str]]:
+    """Every file old or new and parsing; no temporaries; the report matches the disk."""
+    now = snapshot(folder)
+    assert sorted(now) == sorted(originals), "no file appeared or disappeared"
+    assert leftovers(folder) == []
+    new: set[str] = set()
+    for name, data in now.items():
+        assert data in (originals[name], expected[name]), f"{name} is neither old nor new"
+        ast.parse(data)  # parses as Python, whichever it is
+        if data != originals[name]:
+            new.add(name)
+    reported = set(re.findall(r"^ezmigrate: written: (.+)$", stderr, re.M))
+    assert reported == new, "the files said to be written are exactly the new ones"
+    left = {n for n in now if expected[n] != originals[n]} - new
+    return new, left
+
+
+SCENARIOS = [  # (id, signal, verify, trigger: "write" or a delay range, extra, twice)
+    ("sigint-first-write", signal.SIGINT, False, "write", 0.0, False),
+    ("sigterm-during-writes", signal.SIGTERM, False, "write", 0.015, False),
+    ("sigint-twice-during-writes", signal.SIGINT, False, "write", 0.005, True),
+    ("sigterm-early", signal.SIGTERM, False, (0.0, 2.5), 0.0, False),
+    ("sigint-early", signal.SIGINT, False, (0.0, 2.5), 0.0, False),
+    ("sigterm-verifying-first-write", signal.SIGTERM, True, "write", 0.0, False),
+    ("sigint-while-verifying", signal.SIGINT, True, "verifying", 0.0, False),
+]
+
+
+@pytest.mark.parametrize(("signum", "verify", "trigger", "extra", "twice"),
+                         [s[1:] for s in SCENARIOS], ids=[s[0] for s in SCENARIOS])
+def test_interrupted_run_leaves_old_or_new_files_and_a_second_run_finishes(
+        corpus, tmp_path, signum, verify, trigger, extra, twice):
+    template, originals, expected, reference_code = corpus
+    folder = tmp_path / "tree"
+    shutil.copytree(template, folder)
+    rng = random.Random(f"{SEED}-{signum}-{verify}-{trigger}")
+    args = ["rewrite", folder, "--timeout", WORKER_MARK]
+    if not verify:
+        args.append("--no-verify")
+
+    process = start_cli(*args)
+    try:
+        if trigger == "write":
+            _signal_after_first_write(process, folder, signum, extra, twice)
+        elif trigger == "verifying":  # once a verification worker of this run is up
+            deadline = time.monotonic() + 600
+            while not _workers_of_this_test() and process.poll() is None \
+                    and time.monotonic() < deadline:
+                time.sleep(0.01)
+            time.sleep(rng.uniform(0.2, 1.5))
+            process.send_signal(signum)
+        else:
+            _wait_until_handling(process)
+            time.sleep(rng.uniform(*trigger))
+            process.send_signal(signum)
+        stdout, stderr = process.communicate(timeout=600)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+
+    note = f"(seed {SEED}; stderr: {stderr[-2000:]})"
+    assert process.returncode == 128 + signum, note
+    assert_no_traceback(stdout, stderr)
+    name = signal.Signals(signum).name
+    assert f"ezmigrate: interrupted by {name}" in stderr, note
+    new, left = _check_consistent(folder, originals, expected, stderr)
+    if trigger == "write":
+        assert new, "the signal came after the first write: it is kept and reported"
+        assert f"{len(new)} files written (each wholly new), {len(left)} not yet written" \
+            in stderr, note
+    elif trigger == "verifying":
+        assert not new and "before any file was written: every file is as it was" in stderr
+    else:
+        assert "every file is as it was" in stderr or new, note
+    if verify:
+        deadline = time.monotonic() + 60
+        while _workers_of_this_test() and time.monotonic() < deadline:
+            time.sleep(0.2)
+        assert _workers_of_this_test() == [], "verification workers outlived the run"
+
+    again = [a for a in args if a not in ("--timeout", WORKER_MARK)]
+    if trigger == "verifying":
+        again.append("--no-verify")  # the quick way to finish (the other case verifies)
+    second = cli(*again)
+
+    assert_no_traceback(second.stderr)
+    if "--no-verify" in again:
+        assert second.returncode == reference_code, second.stderr
+        assert snapshot(folder) == expected, "the second run finished the job"
+    else:
+        assert second.returncode in (0, 1), second.stderr
+        _check_consistent(folder, originals, expected, "".join(
+            f"ezmigrate: written: {n}\n" for n, d in snapshot(folder).items()
+            if d != originals[n]))
+    assert leftovers(folder) == []
+
+
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM, signal.SIGHUP])
+def test_stdin_mode_interrupted_while_reading_exits_cleanly(signum):
+    """``rewrite -`` waiting for its input: stopped, it writes nothing and says so."""
+    process = subprocess.Popen([sys.executable, "-m", "ezmigrate", "rewrite", "-"],
+                               stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    try:
+        _wait_until_handling(process)
+        time.sleep(0.3)
+        process.send_signal(signum)
+        stdout, stderr = process.communicate(timeout=120)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert process.returncode == 128 + signum, stderr
+    assert stdout == ""
+    assert_no_traceback(stderr)
+    assert f"interrupted by {signal.Signals(signum).name} before any file was written" in stderr

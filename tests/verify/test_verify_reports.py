@@ -1,0 +1,116 @@
+"""Reports of a verifying ``rewrite``: JSON for machines (schema version 1 plus
+``equivalent`` and ``diff``), Markdown for code review (summary table, then per file and
+skill the verdict, both sides of a difference in legacy notation, skip reasons, and the
+findings in a section of their own)."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+import pytest
+from verify_support import LATE_CONSTANT, LEGACY, cli, tree
+
+SKILL_KEYS = {"file", "class", "line", "status", "reason", "findings", "equivalent"}
+LEGACY_SIDE = "addParam('Speed', 1.0, ParamTypes.Optional)"
+MIGRATED_SIDE = "addParam('Speed', 0.5, ParamTypes.Optional)"
+
+
+@pytest.fixture(scope="module")
+def reports(tmp_path_factory):
+    """Four dry runs over one folder: JSON and Markdown, with and without verification."""
+    tmp = tmp_path_factory.mktemp("reports")
+    folder = tree(tmp / "skills", {
+        "late_constant.py": LATE_CONSTANT, "descriptions.py": LEGACY / "descriptions.py",
+        "not_convertible.py": LEGACY / "not_convertible.py",
+        "ontology_violations.py": LEGACY / "ontology_violations.py"})
+    out = {}
+    for name, extra in (("verified", ()), ("unverified", ("--no-verify",))):
+        for suffix in ("json", "md"):
+            report = tmp / f"{name}.{suffix}"
+            run = cli("rewrite", folder, "--dry-run", *extra, "--report", report)
+            assert run.returncode == 1, run.stderr  # skips and a failure need attention
+            out[f"{name}.{suffix}"] = report.read_text(encoding="utf-8")
+    return out
+
+
+def test_json_report_follows_the_schema(reports):
+    data = read_json_text(reports["verified.json"])
+    assert data["version"] == 1
+    counts = {"files": 4, "skills": 21, "converted": 9, "skipped": 11, "failed": 1}
+    assert {k: data["summary"][k] for k in counts} == counts
+    for skill in data["skills"]:
+        expected = SKILL_KEYS | ({"diff"} if skill["equivalent"] is False else set())
+        assert set(skill) == expected, skill
+        assert isinstance(skill["line"], int) and skill["line"] > 0
+        for finding in skill["findings"]:
+            assert set(finding) == {"kind", "line", "message"}, finding
+
+
+def test_json_report_says_what_was_proven(reports):
+    verified = {(s["file"], s["class"]): s for s in read_json_text(reports["verified.json"])
+                ["skills"]}
+    move = verified[("late_constant.py", "Move")]
+    assert (move["status"], move["equivalent"]) == ("failed", False)
+    assert move["diff"] == [{"where": "params", "message": "parameter #2 differs",
+                             "before": LEGACY_SIDE, "after": MIGRATED_SIDE}]
+    converted = [s for s in verified.values() if s["status"] == "converted"]
+    assert len(converted) == 9 and all(s["equivalent"] is True for s in converted)
+    stop = verified.pop(("late_constant.py", "Stop"))  # proven, but its file is not written
+    assert (stop["status"], stop["equivalent"]) == ("skipped", True)
+    skipped = [s for s in verified.values() if s["status"] == "skipped"]
+    assert len(skipped) == 10 and all(s["equivalent"] is None and s["reason"] for s in skipped)
+    hand_over = verified[("ontology_violations.py", "HandOver")]
+    assert any(f["kind"] == "range" and "skiros:hasA" in f["message"]
+               for f in hand_over["findings"])
+    unverified = read_json_text(reports["unverified.json"])["skills"]
+    assert [s["equivalent"] for s in unverified if s["status"] == "converted"] == [None] * 11
+    assert not any("diff" in s for s in unverified)
+
+
+def test_markdown_report_for_code_review(reports):
+    text = reports["verified.md"]
+    lines = text.splitlines()
+    assert lines[0] == "# ezmigrate report"
+    assert lines[2] == "Equivalence: verified by loading both versions."
+    table = lines.index("| files | skills | converted | skipped | failed | unchanged |")
+    assert lines[table + 2] == "| 4 | 21 | 9 | 11 | 1 | 0 |"
+    late = _section(text, "## `late_constant.py`")
+    assert "- **Move** (line 8): failed" in late
+    assert f"    - legacy: `{LEGACY_SIDE}`" in late
+    assert f"    - migrated: `{MIGRATED_SIDE}`" in late
+    assert "- **Stop** (line 14): skipped\n  - reason: verified, but not written" in late
+    skipped = _section(text, "## `not_convertible.py`")
+    assert "- **FollowWaypoints** (line 20): skipped\n  - reason: a loop at line 23" in skipped
+    assert "- **Navigate** (line 11): converted, equivalent" in text
+
+
+def test_markdown_lists_findings_apart_from_equivalence(reports):
+    text = reports["verified.md"]
+    heading = "## Findings (kept as they were; not equivalence problems)"
+    findings = _section(text, heading)
+    assert "`ontology_violations.py` HandOver (line 24) **range**: skiros:hasA expects object" \
+        in findings
+    assert text.index(heading) > text.index("## `ontology_violations.py`")
+    violations = _section(text, "## `ontology_violations.py`")
+    assert "**range**" not in violations and "**domain**" not in violations
+    assert violations.count("converted, equivalent") == 3
+
+
+def test_markdown_says_when_nothing_was_verified(reports):
+    text = reports["unverified.md"]
+    assert text.splitlines()[2] == "Equivalence: NOT verified."
+    assert "- **Move** (line 8): converted (not verified)" in text
+    assert "converted, equivalent" not in text
+
+
+def read_json_text(text: str) -> dict[str, Any]:
+    data: dict[str, Any] = json.loads(text)
+    return data
+
+
+def _section(text: str, heading: str) -> str:
+    start = text.index(heading + "\n")
+    end = text.find("\n## ", start + 1)
+    return text[start:end if end != -1 else len(text)]
+
