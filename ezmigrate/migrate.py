@@ -110,7 +110,7 @@ def migrate(source: bytes | str, settings: Settings | None = None,
     planned = _plan_module(module, names, settings)
     if planned is None:
         return result
-    module, plans, effective, aliases = planned
+    module, plans, _, aliases = planned
     runtime = {n for p in plans if p.result.status == "converted" for n in p.runtime}
     prefixes = {n for p in plans if p.result.status == "converted" for n in p.prefixes}
     result.skills = [p.result for p in plans]

@@ -13,8 +13,8 @@ from collections.abc import Sequence
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING
 
-from .discover import Candidate
 from .core.ir import Operation
+from .discover import Candidate
 from .migrate import Settings, exported_operations, migrate
 from .runner import Migrated, migrate_all
 

@@ -118,6 +118,9 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
         out += [f"## `{file.path}`", ""]
         if file.error:
             out += [f"**Could not be processed:** {file.error}", ""]
+        for note in file.notes:
+            head, _, body = note.partition("\n")
+            out += [f"- {head}"] + (["", "```text", body, "```", ""] if body else [])
         for skill in file.skills:
             out.append(f"- **{skill.name}** (line {skill.line}): {_verdict(skill)}")
             if skill.reason:

@@ -10,14 +10,11 @@ from __future__ import annotations
 import sys
 import tempfile
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from .diffs import unified_diff
 from .migrate import Settings, migrate
-
-if TYPE_CHECKING:
-    from .verify.compare_files import ClassVerdict
-    from .verify.protocol import LoadOutcome
+from .results import FileResult
 
 
 def rewrite_stdin(index: Any, ontology: tuple[str, ...], *, verify: bool, check: bool,
@@ -29,20 +26,7 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], *, verify: bool, check:
         print(f"-: {result.error}", file=sys.stderr)
     new = result.new_source if isinstance(result.new_source, bytes) else None
     if new is not None and verify:
-        from .verify.compare_files import compare_outcomes
-        from .verify.pool import PoolConfig, job_for, run_jobs
-
-        with tempfile.TemporaryDirectory(prefix="ezmigrate-stdin-") as folder:
-            path = Path(folder) / "stdin_module.py"
-            path.write_bytes(data)
-            before, after = run_jobs([job_for(path, data), job_for(path, new)],
-                                     PoolConfig(workers=2, timeout=timeout, ontology=ontology))
-        verdicts = compare_outcomes(before, after) if before.loaded and after.loaded else []
-        if not verdicts or not all(v.equivalent for v in verdicts):
-            why = _why_unverified(before, after, verdicts)
-            print(f"-: not rewritten: the migrated version could not be verified equivalent "
-                  f"({why})", file=sys.stderr)
-            new = None
+        new = _verified(data, result, ontology, timeout)
     if dry_run or check:
         if new is not None and dry_run:
             sys.stdout.write(unified_diff("-", data, new))
@@ -52,14 +36,29 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], *, verify: bool, check:
     return 1 if result.error or skipped or (new is None and result.changed) else 0
 
 
-def _why_unverified(before: LoadOutcome, after: LoadOutcome,
-                    verdicts: list[ClassVerdict]) -> str:
-    """One line: which version did not load, or which class differs."""
-    for side, outcome in (("the legacy version", before), ("the migrated version", after)):
-        if not outcome.loaded:
-            first = (outcome.message.splitlines() or [outcome.status])[0]
-            return f"{side} could not be loaded: {first}"
-    for verdict in verdicts:
-        if not verdict.equivalent:
-            return f"{verdict.name}: {verdict.message}"
-    return "no description class was loaded"
+def _verified(data: bytes, result: FileResult, ontology: tuple[str, ...],
+              timeout: float) -> bytes | None:
+    """The migrated bytes if they verify, by the same rules as ``rewrite``; else ``None``."""
+    from .discover import Candidate
+    from .runner import Migrated
+    from .session import RewriteOptions
+    from .verify.pool import PoolConfig, job_for, run_jobs
+    from .verify.rewrite import apply_verdicts
+    from .writing import digest
+
+    assert isinstance(result.new_source, bytes)
+    with tempfile.TemporaryDirectory(prefix="ezmigrate-stdin-") as folder:
+        path = Path(folder) / "stdin_module.py"
+        path.write_bytes(data)
+        before, after = run_jobs([job_for(path, data), job_for(path, result.new_source)],
+                                 PoolConfig(workers=2, timeout=timeout, ontology=ontology))
+    item = Migrated(Candidate(path, path.parent), data, digest(data), result)
+    apply_verdicts(item, before, after, RewriteOptions(paths=[], timeout=timeout))
+    if item.result.new_source is None:
+        why = next((f"{s.name}: {(s.reason or '').splitlines()[0]}" for s in result.skills
+                    if s.status == "failed"), "no description class was loaded")
+        print(f"-: not rewritten: the migrated version could not be verified equivalent "
+              f"({why})", file=sys.stderr)
+        return None
+    new = item.result.new_source
+    return new if isinstance(new, bytes) else None

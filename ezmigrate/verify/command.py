@@ -7,7 +7,7 @@ from pathlib import Path
 
 from ..discover import discover
 from ..results import FileResult, SkillResult, SkillStatus
-from .compare_files import compare_outcomes, load_failure
+from .compare_files import class_sources, compare_outcomes, load_failure
 from .pool import PoolConfig, job_for, run_jobs
 from .protocol import LoadJob
 
@@ -65,16 +65,20 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
             result.error = load_failure(side, outcome)
             result.error_line = outcome.line
             continue
-        same_text = old.read_bytes() == new.read_bytes()
+        old_bytes, new_bytes = old.read_bytes(), new.read_bytes()
+        old_classes, new_classes = class_sources(old_bytes), class_sources(new_bytes)
         for verdict in compare_outcomes(before, after, ignore_order=options.ignore_order,
                                         ignore_labels=options.ignore_labels):
-            status: SkillStatus = ("unchanged" if same_text else "converted") \
+            status: SkillStatus = ("unchanged" if old_bytes == new_bytes else "converted") \
                 if verdict.equivalent else "failed"
-            unverified = verdict.verdict == "unverified"  # the class loads in neither
-            unloadable = unloadable or unverified
+            reason = None if verdict.equivalent else verdict.message
+            if verdict.verdict == "unverified":  # loads in neither version: nothing to compare
+                same = old_classes.get(verdict.name) == new_classes.get(verdict.name) is not None
+                status = "unchanged" if same else "failed"
+                reason = (f"{verdict.message} (its source is unchanged)" if same
+                          else f"not verified: {verdict.message}")
             results[-1].skills.append(SkillResult(
-                verdict.name, verdict.line_after or verdict.line_before or 0, status,
-                None if verdict.equivalent else verdict.message,
-                equivalent=None if unverified else verdict.equivalent,
+                verdict.name, verdict.line_after or verdict.line_before or 0, status, reason,
+                equivalent=None if verdict.verdict == "unverified" else verdict.equivalent,
                 diff=verdict.diff or None))
     return results, unloadable

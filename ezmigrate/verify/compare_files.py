@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ast
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
@@ -79,3 +80,16 @@ def load_failure(side: str, outcome: LoadOutcome) -> str:
     """A one-line reason for a version that did not load."""
     line = f" (line {outcome.line})" if outcome.line else ""
     return f"the {side} version could not be loaded: {outcome.status}{line}: {outcome.message}"
+
+
+def class_sources(data: bytes) -> dict[str, str]:
+    """Top-level class name -> its exact source text (empty when the file does not parse)."""
+    from ..diffs import decode
+
+    text = decode(data)
+    try:
+        tree = ast.parse(text)
+    except (SyntaxError, ValueError):
+        return {}
+    return {node.name: ast.get_source_segment(text, node) or "" for node in tree.body
+            if isinstance(node, ast.ClassDef)}

@@ -95,6 +95,11 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
         if found is None:
             result.skills.append(skill)
         _fail(skill, _reason(verdict), verdict)
+    for skill in converted:  # converted, yet no class of that name was seen when loading
+        if skill.name not in verdicts:
+            all_ok = False
+            _fail(skill, "not verified: the class was not found when loading the file "
+                  "(is it defined conditionally?)")
     _attach_findings(result.skills, after)
     if not all_ok:
         for skill in converted:
@@ -140,6 +145,8 @@ def _attach_findings(skills: list[SkillResult], after: LoadOutcome) -> None:
 
 
 def _capture(notes: list[str], *outcomes: LoadOutcome) -> None:
+    """What a module that failed to load printed, for the report (the end, when long)."""
     for outcome in outcomes:
-        if outcome.stdout.strip():
-            notes.append("output while loading:\n" + outcome.stdout.strip()[-2000:])
+        for stream, text in (("stdout", outcome.stdout), ("stderr", outcome.stderr)):
+            if text.strip():
+                notes.append(f"{stream} while loading:\n" + text.strip()[-2000:])

@@ -126,3 +126,27 @@ def test_console_script_and_module_agree(repo: Path):
                        capture_output=True, check=False)
     b = ezmigrate("rewrite", "--dry-run", "--no-verify", repo)
     assert (a.returncode, a.stdout) == (b.returncode, b.stdout)
+
+
+def test_verify_classes_failing_in_both_versions(tmp_path: Path):
+    before, after = tmp_path / "before", tmp_path / "after"
+    before.mkdir()
+    after.mkdir()
+    source = FIXTURES / "legacy" / "not_convertible.py"
+    shutil.copy(source, before / "nc.py")
+    shutil.copy(source, after / "nc.py")
+    report = tmp_path / "r.json"
+    proc = ezmigrate("verify", before, after, "--report", report)
+    assert proc.returncode == 0, proc.stderr  # unchanged classes that load in neither version
+    skills = {s["class"]: s for s in json.loads(report.read_text())["skills"]}
+    assert skills["EmptyListDefault"]["status"] == "unchanged"
+    assert "its source is unchanged" in skills["EmptyListDefault"]["reason"]
+    changed = source.read_text().replace('self.addParam("Joints", [], ParamTypes.Optional)',
+                                         'self.addParam("Joints", [], ParamTypes.Required)')
+    assert changed != source.read_text()
+    (after / "nc.py").write_text(changed)
+    proc = ezmigrate("verify", before, after, "--report", report)
+    assert proc.returncode == 1
+    skills = {s["class"]: s for s in json.loads(report.read_text())["skills"]}
+    assert skills["EmptyListDefault"]["status"] == "failed"
+    assert skills["EmptyListDefault"]["reason"].startswith("not verified")
