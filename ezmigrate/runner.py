@@ -1,8 +1,15 @@
 """Run the pure core over many files: read, prefilter, migrate in parallel workers.
 
-The main process reads every candidate and drops those the prefilter rules out, so workers
-only ever see files that may hold descriptions. Workers are forked with the ontology index
-already loaded (one load per run, not per file) and return picklable ``FileResult``s.
+One pass over the candidates, in the main process: read a file, ask the prefilter, and hand
+the few files that may hold descriptions to the workers at once, so parsing overlaps the
+reading of the rest. The workers are forked when the second such file turns up (one file is
+migrated in this process: a pool would only add its start-up), with the ontology index and
+libcst already imported, so neither is loaded again per worker. libcst itself is imported
+only when some file needs parsing: a tree without legacy descriptions never pays for it.
+
+Memory stays flat on a large tree: only the bytes of files handed to the core are kept
+(the diff, the write and verification need them); for every other file ``Migrated``
+re-reads the bytes from disk when someone asks for them (a copy into ``--output-dir``).
 """
 
 from __future__ import annotations
@@ -11,30 +18,56 @@ import multiprocessing
 import os
 import traceback
 from collections.abc import Iterator, Sequence
-from concurrent.futures import ProcessPoolExecutor
-from dataclasses import dataclass
+from concurrent.futures import Future, ProcessPoolExecutor
 from typing import TYPE_CHECKING
 
 from .discover import Candidate
-from .migrate import Settings, migrate
 from .prefilter import may_hold_descriptions
 from .results import FileResult
-from .writing import digest
+from .writing import digest as content_digest
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
+    from .migrate import Settings
+
 _SETTINGS: Settings | None = None
 
 
-@dataclass
 class Migrated:
-    """One file after the core ran: what it was, its verdict, and the hash it was read with."""
+    """One file after the core ran: what it was, its verdict, and the hash it was read with.
 
-    candidate: Candidate
-    original: bytes
-    digest: str
-    result: FileResult
+    ``original`` and ``digest`` are kept from the read for every file the core looked at.
+    For a file the prefilter ruled out (never parsed, never changed, never written in
+    place) they are not kept: the first access reads the file again, as it is then.
+    """
+
+    __slots__ = ("_digest", "_original", "candidate", "result")
+
+    def __init__(self, candidate: Candidate, original: bytes | None, digest: str | None,
+                 result: FileResult) -> None:
+        self.candidate = candidate
+        self._original = original
+        self._digest = digest
+        self.result = result
+
+    @property
+    def original(self) -> bytes:
+        if self._original is None:
+            try:
+                return self.candidate.path.read_bytes()
+            except OSError:
+                return b""
+        return self._original
+
+    @property
+    def digest(self) -> str:
+        if self._digest is None:
+            self._digest = content_digest(self.original)
+        return self._digest
+
+    def __repr__(self) -> str:
+        return f"Migrated({self.candidate.relative!r}, changed={self.result.changed})"
 
 
 def _init_worker(settings: Settings) -> None:
@@ -42,8 +75,9 @@ def _init_worker(settings: Settings) -> None:
     _SETTINGS = settings
 
 
-def _migrate_one(item: tuple[str, bytes]) -> FileResult:
-    relative, data = item
+def _migrate_one(relative: str, data: bytes) -> FileResult:
+    from .migrate import migrate
+
     assert _SETTINGS is not None
     try:
         return migrate(data, _SETTINGS, relative)
@@ -65,37 +99,104 @@ def read_candidates(candidates: Sequence[Candidate]) -> Iterator[tuple[Candidate
     """Each candidate with its bytes, or an error message when it cannot be read."""
     for candidate in candidates:
         try:
-            yield candidate, candidate.path.read_bytes(), None
+            with open(candidate.path, "rb") as handle:
+                data = handle.read()
         except OSError as error:
             yield candidate, None, f"cannot read: {error.strerror or error}"
+        else:
+            yield candidate, data, None
+
+
+class _Workers:
+    """Migrates the files it is given: here for the first, in forked workers from the second."""
+
+    def __init__(self, index: OntologyIndex | None, jobs: int) -> None:
+        self.index = index
+        self.jobs = jobs
+        self._settings: Settings | None = None
+        self.pool: ProcessPoolExecutor | None = None
+        self.first: tuple[Migrated, bytes] | None = None
+        self.futures: list[tuple[Migrated, Future[FileResult]]] = []
+
+    @property
+    def settings(self) -> Settings:
+        if self._settings is None:  # imports the core, and with it libcst
+            from .migrate import Settings
+
+            self._settings = Settings(index=self.index)
+        return self._settings
+
+    def add(self, item: Migrated, data: bytes) -> None:
+        if self.jobs <= 1:
+            _init_worker(self.settings)
+            item.result = _migrate_one(item.candidate.relative, data)
+            return
+        if self.pool is None and self.first is None:
+            self.first = (item, data)
+            return
+        if self.pool is None:
+            self.pool = self._start()
+            assert self.first is not None
+            self._submit(*self.first)
+            self.first = None
+        self._submit(item, data)
+
+    def _start(self) -> ProcessPoolExecutor:
+        from .core.registry import load_rules
+
+        load_rules()  # warm before forking, so that no worker does it again
+        context = multiprocessing.get_context(
+            "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
+        return ProcessPoolExecutor(max_workers=self.jobs, mp_context=context,
+                                   initializer=_init_worker, initargs=(self.settings,))
+
+    def _submit(self, item: Migrated, data: bytes) -> None:
+        assert self.pool is not None
+        self.futures.append((item, self.pool.submit(_migrate_one, item.candidate.relative,
+                                                    data)))
+
+    def finish(self) -> None:
+        if self.first is not None:  # only one file needed the core: no pool for it
+            _init_worker(self.settings)
+            item, data = self.first
+            item.result = _migrate_one(item.candidate.relative, data)
+        if self.pool is None:
+            return
+        try:
+            for item, future in self.futures:
+                try:
+                    item.result = future.result()
+                except Exception as error:  # the worker process died (killed, out of memory)
+                    item.result = FileResult(
+                        item.candidate.relative,
+                        error=f"internal error: the migration worker died ({error})")
+        finally:
+            self.close()
+
+    def close(self) -> None:
+        if self.pool is not None:
+            self.pool.shutdown(wait=True, cancel_futures=True)
+            self.pool = None
 
 
 def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                 jobs: int) -> list[Migrated]:
     """Migrate every candidate; files the prefilter rules out get an empty result."""
-    settings = Settings(index=index)
+    workers = _Workers(index, jobs)
     done: list[Migrated] = []
-    work: list[tuple[int, tuple[str, bytes]]] = []
-    for candidate, data, error in read_candidates(candidates):
-        if data is None:
-            done.append(Migrated(candidate, b"", "", FileResult(candidate.relative, error=error)))
-            continue
-        done.append(Migrated(candidate, data, digest(data), FileResult(candidate.relative)))
-        if may_hold_descriptions(data):
-            work.append((len(done) - 1, (candidate.relative, data)))
-    if not work:
-        return done
-    items = [item for _, item in work]
-    if jobs <= 1 or len(work) < 4:
-        _init_worker(settings)
-        results = [_migrate_one(item) for item in items]
-    else:
-        context = multiprocessing.get_context(
-            "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
-        with ProcessPoolExecutor(max_workers=min(jobs, len(work)), mp_context=context,
-                                 initializer=_init_worker, initargs=(settings,)) as pool:
-            chunk = max(1, len(items) // (jobs * 8))
-            results = list(pool.map(_migrate_one, items, chunksize=chunk))
-    for (position, _), result in zip(work, results, strict=True):
-        done[position].result = result
+    try:
+        for candidate, data, error in read_candidates(candidates):
+            if data is None:
+                done.append(Migrated(candidate, b"", "",
+                                     FileResult(candidate.relative, error=error)))
+            elif may_hold_descriptions(data):
+                item = Migrated(candidate, data, content_digest(data),
+                                FileResult(candidate.relative))
+                done.append(item)
+                workers.add(item, data)
+            else:
+                done.append(Migrated(candidate, None, None, FileResult(candidate.relative)))
+        workers.finish()
+    finally:
+        workers.close()
     return done
