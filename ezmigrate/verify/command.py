@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..discover import discover
+from ..prefilter import may_hold_descriptions
 from ..results import FileResult, SkillResult, SkillStatus
 from .compare_files import class_sources, compare_outcomes, load_failure
 from .pool import PoolConfig, job_for, run_jobs
@@ -35,14 +36,36 @@ def _pairs(options: VerifyOptions) -> list[tuple[str, Path | None, Path | None]]
             for rel in sorted(set(old_map) | set(new_map))]
 
 
+def _nothing_to_compare(old: Path | None, new: Path | None) -> bool:
+    """Both versions are the same bytes and neither can hold a description of its own.
+
+    Such a pair is the bulk of a monorepo and is never imported. The one class it could
+    still hold is a subclass of a description from another file that adds nothing (no
+    ``createDescription``, no ``SkillDescription``): its parameters and conditions are its
+    base's, which are compared where the base is defined. ``rewrite`` draws the same line
+    (``prefilter.py``) when it decides which files hold descriptions.
+    """
+    if old is None or new is None:
+        return False
+    try:
+        data = old.read_bytes()
+        return data == new.read_bytes() and not may_hold_descriptions(data)
+    except OSError:
+        return False  # the load reports why the file cannot be read
+
+
 def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
     """Per-file results, and whether some file could not be loaded at all."""
     pairs = _pairs(options)
+    skipped = {index for index, (_, old, new) in enumerate(pairs)
+               if _nothing_to_compare(old, new)}
     jobs: list[LoadJob] = []
     slots: list[int] = []
-    for _, old, new in pairs:
+    for index, (_, old, new) in enumerate(pairs):
         for path, root in ((old, options.before), (new, options.after)):
-            if path is not None:
+            if index in skipped:
+                slots.append(-1)
+            elif path is not None:
                 slots.append(len(jobs))
                 jobs.append(job_for(path, None, root if root.is_dir() else None))
             else:
@@ -53,6 +76,8 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
     for index, (relative, old, new) in enumerate(pairs):
         result = FileResult(path=relative)
         results.append(result)
+        if index in skipped:
+            continue
         if old is None or new is None:
             result.error = "missing after migration" if new is None else "only in the new tree"
             result.skills.append(SkillResult("*", 0, "failed", result.error, equivalent=False))

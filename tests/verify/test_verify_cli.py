@@ -216,3 +216,35 @@ def test_without_verification_the_wrong_rewrite_is_written_and_verify_then_catch
     assert proof.returncode == 1, proof.stderr
     assert "Move" in proof.stderr and "1 not equivalent" in proof.stderr
     shutil.rmtree(folder)
+
+
+PLAIN_WITH_MARKER = '''"""A helper module: importing it leaves a marker file."""
+from pathlib import Path
+
+Path(__file__).with_name("IMPORTED").write_text("imported")
+
+
+def speed_limit() -> float:
+    return 0.5
+'''
+
+
+def test_identical_modules_without_descriptions_are_not_imported(before, tmp_path):
+    """The bulk of a monorepo: same bytes on both sides, no description marker."""
+    after = _after(tmp_path)
+    for root in (before, after):
+        (root / "helpers.py").write_text(PLAIN_WITH_MARKER, encoding="utf-8")
+    try:
+        run = cli("verify", before, after)
+        assert run.returncode == 0, run.stderr
+        assert f"4 files compared, {CLASSES} classes, {CLASSES} equivalent" in run.stderr
+        assert not (before / "IMPORTED").exists() and not (after / "IMPORTED").exists()
+        # the same module, changed on one side, is loaded (and compared) after all
+        edit(after / "helpers.py", "return 0.5", "return 1.0")
+        changed = cli("verify", before, after)
+        assert changed.returncode == 0, changed.stderr
+        assert (before / "IMPORTED").exists() and (after / "IMPORTED").exists()
+    finally:
+        for root in (before, after):
+            for name in ("helpers.py", "IMPORTED"):
+                (root / name).unlink(missing_ok=True)
