@@ -400,6 +400,15 @@ _COOKIE = re.compile(rb"^[ \t\f]*#.*?coding[:=][ \t]*([-\w.]+)")
 _EXCEPT_COMMA = re.compile(rb"\bexcept\b[^:\n]*,")
 
 
+def _python_parses(raw: bytes) -> bool:
+    """Python's own parser (C speed) accepts the module: no Python 2 syntax in it."""
+    try:
+        ast.parse(raw)
+    except (SyntaxError, ValueError, MemoryError, RecursionError):
+        return False
+    return True
+
+
 def _python2_except(module: cst.Module, source: bytes | str) -> tuple[int, int] | None:
     """Line and column of a Python 2 ``except X, e:``, if any.
 
@@ -407,8 +416,8 @@ def _python2_except(module: cst.Module, source: bytes | str) -> tuple[int, int] 
     SkiROS2 module it is Python 2 code that no supported Python can import.
     """
     raw = source.encode("utf-8", "surrogateescape") if isinstance(source, str) else source
-    if not _EXCEPT_COMMA.search(raw):
-        return None
+    if not _EXCEPT_COMMA.search(raw) or _python_parses(raw):
+        return None  # the common case: ``except (A, B):``, which Python itself accepts
     found: list[cst.ExceptHandler] = []
 
     class _Handlers(cst.CSTVisitor):
