@@ -40,9 +40,34 @@ ORDERING = (">", "<", ">=", "<=")
 OPERATORS = ("=", *ORDERING)
 
 
+_PLAIN = (bool, int, float, str, list, dict)
+
+
+def _plain_value_type(ctx: CheckContext, key: str) -> str | None:
+    """The Python type name of a parameter that is certainly no world element, else None.
+
+    A bare kind marker may carry any run-time value (``Thing: INFERRED = Element(...)``),
+    so only plain data types and literals of them count as certain.
+    """
+    spec = ctx.params.get(key)
+    if spec is None or spec.is_element:
+        return None
+    value = spec.value
+    if isinstance(value, type):
+        return value.__name__ if value in _PLAIN else None
+    return type(value).__name__ if type(value) in _PLAIN else None
+
+
 def _check_side(ctx: CheckContext, record: Recorded, cond: Cond, key: str | None,
                 exprs: Sequence[Any], side: str) -> None:
     if key is None or not exprs:
+        return
+    kind = "domain" if side == "subject" else "range"
+    what = _plain_value_type(ctx, key)
+    if what is not None:  # a float can be in no relation at all
+        ctx.add(kind, f"{cond.vocabulary} relates world elements, but parameter {key} is a "
+                      f"{what}, not an element", record.file, record.line, param=key,
+                relation=cond.vocabulary, expected="an element", actual=what)
         return
     iri, _shown = ctx.class_of(key)
     if iri is None:
@@ -53,7 +78,16 @@ def _check_side(ctx: CheckContext, record: Recorded, cond: Cond, key: str | None
         return
     expected = " and ".join(e.render(index.compact) for e in failing)
     actual = index.compact(iri)
-    kind = "domain" if side == "subject" else "range"
+    witnesses = [index.witness(iri, e) for e in failing]
+    if all(witnesses):  # may hold for a narrower element: not provably wrong
+        example = index.compact(str(witnesses[0]))
+        ctx.add(f"{kind}_unproven",
+                f"{cond.vocabulary} expects {side} of class {expected}, but parameter {key} "
+                f"is {actual}, which only some elements are ({example} is): narrow the "
+                f"parameter's type (e.g. to {example}) to be sure", record.file,
+                record.line, param=key, relation=cond.vocabulary, expected=expected,
+                actual=actual)
+        return
     ctx.add(kind, f"{cond.vocabulary} expects {side} of class {expected}, but parameter "
                   f"{key} is {actual}", record.file, record.line, param=key,
             relation=cond.vocabulary, expected=expected, actual=actual)

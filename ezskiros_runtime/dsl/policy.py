@@ -20,6 +20,8 @@ LEVELS: tuple[str, ...] = ("error", "warning", "info", "off")
 DEFAULT_SEVERITY: dict[str, str] = {
     "domain": "error",             # subject's class outside the relation/property domain
     "range": "error",              # object's class outside the relation range
+    "domain_unproven": "warning",  # subject's class wider than the domain: may not hold
+    "range_unproven": "warning",   # object's class wider than the range: may not hold
     "property_kind": "error",      # relation over a datatype property, or the reverse
     "value_type": "error",         # property value of the wrong Python type
     "operator": "error",           # > < >= <= on a non-numeric property

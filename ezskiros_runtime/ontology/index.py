@@ -190,6 +190,22 @@ class OntologyIndex:
         """IRIs of the classes with this local name, across all prefixes (sorted)."""
         return list(self._classes_by_local.get(local, ()))
 
+    def witness(self, class_iri: str, expr: ClassExpr) -> str | None:
+        """A named class at or below `class_iri` all of whose instances belong to `expr`.
+
+        A parameter declared as `class_iri` is bound at run time to an individual of some
+        class below it, so when such a class exists (`sumo:Agent` where `sumo:Device` is
+        expected: `cora:Robot` is both) the condition may hold: a checker that calls only
+        impossible conditions errors needs the difference. None when no class qualifies.
+        """
+        if class_iri not in self.classes:
+            return None
+        below = [c for c in self.classes if class_iri in self.superclasses(c)]
+        for candidate in sorted(below, key=lambda c: (len(self.superclasses(c)), c)):
+            if self._satisfies(candidate, expr) is True:
+                return candidate
+        return None
+
     def satisfies(self, class_iri: str, expr: ClassExpr) -> bool | None:
         """Does every instance of `class_iri` belong to `expr`? None when undecidable.
 

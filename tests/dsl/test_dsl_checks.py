@@ -149,12 +149,51 @@ def test_sub_properties_inherit_domain_and_range(tmp_path):
     use_ontology([PAPER, extra])
 
     class Skill(SkillDescription):
-        def description(self, P: skiros.Product, L: skiros.Location):
+        def description(self, P: skiros.Product, L: skiros.Product):
             self.pre_conditions += P.holdsPose(L)
 
     finding = only(Skill)
     assert finding.message == ("skiros:holdsPose expects object of class "
-                               "skiros:TransformationPose, but parameter L is skiros:Location")
+                               "skiros:TransformationPose, but parameter L is skiros:Product")
+
+
+def test_a_wider_class_is_a_warning_a_disjoint_one_an_error():
+    """An element declared as a superclass of what the relation expects may be bound to an
+    element of the expected class at run time: not provably wrong, so only a warning that
+    names a class that would do. A class nothing below which fits can never hold: an error.
+    """
+    use_ontology([PAPER])
+
+    class Wider(SkillDescription):
+        def description(self, P: skiros.Product, L: skiros.Location):
+            self.pre_conditions += P.hasA(L)
+
+    class Disjoint(SkillDescription):
+        def description(self, P: skiros.Product, Q: skiros.Product):
+            self.pre_conditions += P.hasA(Q)
+
+    wider = only(Wider)
+    assert (wider.kind, wider.severity, wider.param) == ("range_unproven", "warning", "L")
+    assert "skiros:TransformationPose" in wider.message and "narrow" in wider.message
+    Wider()  # loads: a warning is no reason to refuse the skill
+    disjoint = only(Disjoint)
+    assert (disjoint.kind, disjoint.severity) == ("range", "error")
+    with pytest.raises(SkillTypeError):
+        Disjoint()
+    with strict():
+        assert only(Wider).severity == "error"
+
+
+def test_a_relation_on_a_parameter_that_is_no_element_is_an_error():
+    use_ontology([PAPER])
+
+    class OnFloat(SkillDescription):
+        def description(self, P: skiros.Product, S: float):
+            self.pre_conditions += P.hasA(S)
+
+    finding = only(OnFloat)
+    assert (finding.kind, finding.severity, finding.param) == ("range", "error", "S")
+    assert "S is a float, not an element" in finding.message
 
 
 @pytest.mark.parametrize(("condition", "expected", "actual"), [
@@ -292,8 +331,8 @@ def test_findings_are_data_and_check_neither_raises_nor_warns():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         findings = check(Mixed)
-    assert [(f.kind, f.severity) for f in findings] == [("unknown_vocabulary", "warning"),
-                                                        ("domain", "error"), ("range", "error")]
+    assert [(f.kind, f.severity) for f in findings] == [
+        ("unknown_vocabulary", "warning"), ("domain", "error"), ("range_unproven", "warning")]
     data = findings[1].to_json()
     assert data["kind"] == "domain" and data["param"] == "B" and data["suggestions"] == []
     line = line_of("self.pre_conditions += B.contain(A)", HERE)
@@ -366,7 +405,7 @@ def test_severity_of_a_kind_is_configurable():
 
 def test_several_errors_are_raised_together_one_line_each():
     class Skill(SkillDescription):
-        def description(self, A: skiros.Location, B: skiros.Product):
+        def description(self, A: rparts.GripperEffector, B: skiros.Product):
             self.pre_conditions += B.contain(A)
             self.post_conditions += B.hasA(A)
 
