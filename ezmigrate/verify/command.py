@@ -11,6 +11,7 @@ from ..results import FileResult, SkillResult, SkillStatus
 from .compare_files import class_sources, compare_outcomes, load_failure
 from .pool import PoolConfig, job_for, run_jobs
 from .protocol import LoadJob
+from .rewrite import rejections
 
 
 @dataclass(frozen=True)
@@ -97,6 +98,10 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
             status: SkillStatus = ("unchanged" if old_bytes == new_bytes else "converted") \
                 if verdict.equivalent else "failed"
             reason = None if verdict.equivalent else verdict.message
+            rejected = rejections(verdict.name, after) if verdict.equivalent else []
+            if rejected and old_bytes != new_bytes:  # means the same, yet will not load
+                status, reason = "failed", ("EzSkiROS rejects the migrated class when it "
+                                            "loads: " + "; ".join(rejected))
             if verdict.verdict == "unverified":  # loads in neither version: nothing to compare
                 same = old_classes.get(verdict.name) == new_classes.get(verdict.name) is not None
                 status = "unchanged" if same else "failed"
@@ -104,6 +109,7 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
                           else f"not verified: {verdict.message}")
             results[-1].skills.append(SkillResult(
                 verdict.name, verdict.line_after or verdict.line_before or 0, status, reason,
-                equivalent=None if verdict.verdict == "unverified" else verdict.equivalent,
+                equivalent=None if verdict.verdict == "unverified" or rejected
+                else verdict.equivalent,
                 diff=verdict.diff or None))
     return results, unloadable

@@ -101,6 +101,9 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
             _fail(skill, "not verified: the class was not found when loading the file "
                   "(is it defined conditionally?)")
     _attach_findings(result.skills, after)
+    for skill in converted:
+        if skill.status == "converted" and _refuse_rejected(skill, after):
+            all_ok = False
     if not all_ok:
         for skill in converted:
             if skill.status == "converted":
@@ -127,6 +130,30 @@ def _reason(verdict: ClassVerdict) -> str:
         return f"not equivalent after migration ({verdict.message}): {first['where']}: " \
                f"{first['message']}"
     return verdict.message
+
+
+def rejections(skill: str, outcome: LoadOutcome) -> list[str]:
+    """The messages of the error-level findings of ``skill`` in a load, once each.
+
+    The child loads modules while only collecting findings; on the robot these findings
+    make the runtime raise ``SkillTypeError`` and the skill does not load at all.
+    """
+    return list(dict.fromkeys(
+        str(data.get("message", "")) for data in outcome.findings
+        if data.get("skill") == skill and data.get("severity") == "error"))
+
+
+def _refuse_rejected(skill: SkillResult, after: LoadOutcome) -> bool:
+    """Skip a skill the EzSkiROS runtime would refuse to load, whatever it means."""
+    found = rejections(skill.name, after)
+    if not found:
+        return False
+    skill.status = "skipped"
+    skill.equivalent = None
+    skill.reason = ("EzSkiROS rejects this skill when it loads (" + "; ".join(found) + "). "
+                    "The legacy code has the same problem, which SkiROS2 accepts silently: "
+                    "fix the description or the ontology, then migrate")
+    return True
 
 
 def _attach_findings(skills: list[SkillResult], after: LoadOutcome) -> None:

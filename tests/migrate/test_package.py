@@ -18,7 +18,7 @@ from skiros2_common.core.world_element import Element
 class ArmMotion(SkillDescription):
     def createDescription(self):
         self.addParam("Arm", Element("rparts:ArmDevice"), ParamTypes.Required)
-        self.addPreCondition(self.getRelationCond("RobotHasAArm", "skiros:hasA", "Robot", "Arm", True))
+        self.addPreCondition(self.getRelationCond("ArmRobotPartRobot", "cora:robotPart", "Arm", "Robot", True))
 '''
 MOVES = '''\
 from skiros2_common.core.params import ParamTypes

@@ -248,3 +248,35 @@ def test_identical_modules_without_descriptions_are_not_imported(before, tmp_pat
         for root in (before, after):
             for name in ("helpers.py", "IMPORTED"):
                 (root / name).unlink(missing_ok=True)
+
+
+REJECTED = LEGACY.parent / "rejected" / "type_errors.py"
+
+
+def test_rewrite_skips_skills_the_runtime_would_refuse_and_leaves_the_file(tmp_path):
+    """Equivalent is not enough: a migrated skill that raises SkillTypeError when it loads
+    would stop the robot's launch, so it is skipped with the finding and nothing is written."""
+    folder = tree(tmp_path / "skills", {"type_errors.py": REJECTED})
+    before = (folder / "type_errors.py").read_bytes()
+    run = cli("rewrite", folder, "--report", tmp_path / "r.json")
+    assert run.returncode == 1, run.stderr
+    assert (folder / "type_errors.py").read_bytes() == before
+    skills = {s["class"]: s for s in read_json(tmp_path / "r.json")["skills"]}
+    assert set(skills) == {"HandOver", "CheckTool", "MountCamera"}
+    for skill in skills.values():
+        assert skill["status"] == "skipped" and skill["equivalent"] is None, skill
+        assert skill["reason"].startswith("EzSkiROS rejects this skill when it loads"), skill
+    assert "parameter Gripper is rparts:GripperEffector" in skills["HandOver"]["reason"]
+    assert "HandOver: skipped: EzSkiROS rejects" in run.stderr
+
+
+def test_verify_fails_a_migrated_class_the_runtime_would_refuse(tmp_path):
+    """The same skills migrated by hand (or with --no-verify): same model, but no load."""
+    legacy = tree(tmp_path / "legacy", {"type_errors.py": REJECTED})
+    migrated = tmp_path / "migrated"
+    forced = cli("rewrite", legacy, "--no-verify", "--output-dir", migrated)
+    assert forced.returncode == 0, forced.stderr
+    run = cli("verify", legacy, migrated)
+    assert run.returncode == 1, run.stderr
+    assert run.stderr.count("EzSkiROS rejects the migrated class when it loads") == 3
+    assert "3 classes, 0 equivalent, 3 not equivalent" in run.stderr

@@ -37,7 +37,7 @@ def reports(tmp_path_factory):
 def test_json_report_follows_the_schema(reports):
     data = read_json_text(reports["verified.json"])
     assert data["version"] == 1
-    counts = {"files": 4, "skills": 21, "converted": 9, "skipped": 11, "failed": 1}
+    counts = {"files": 4, "skills": 20, "converted": 8, "skipped": 11, "failed": 1}
     assert {k: data["summary"][k] for k in counts} == counts
     for skill in data["skills"]:
         expected = SKILL_KEYS | ({"diff"} if skill["equivalent"] is False else set())
@@ -55,16 +55,16 @@ def test_json_report_says_what_was_proven(reports):
     assert move["diff"] == [{"where": "params", "message": "parameter #2 differs",
                              "before": LEGACY_SIDE, "after": MIGRATED_SIDE}]
     converted = [s for s in verified.values() if s["status"] == "converted"]
-    assert len(converted) == 9 and all(s["equivalent"] is True for s in converted)
+    assert len(converted) == 8 and all(s["equivalent"] is True for s in converted)
     stop = verified.pop(("late_constant.py", "Stop"))  # proven, but its file is not written
     assert (stop["status"], stop["equivalent"]) == ("skipped", True)
     skipped = [s for s in verified.values() if s["status"] == "skipped"]
     assert len(skipped) == 10 and all(s["equivalent"] is None and s["reason"] for s in skipped)
-    hand_over = verified[("ontology_violations.py", "HandOver")]
-    assert any(f["kind"] == "range" and "skiros:hasA" in f["message"]
-               for f in hand_over["findings"])
+    attach = verified[("ontology_violations.py", "AttachCamera")]
+    assert any(f["kind"] == "range-unproven" and "cora:robotPart" in f["message"]
+               for f in attach["findings"])
     unverified = read_json_text(reports["unverified.json"])["skills"]
-    assert [s["equivalent"] for s in unverified if s["status"] == "converted"] == [None] * 11
+    assert [s["equivalent"] for s in unverified if s["status"] == "converted"] == [None] * 10
     assert not any("diff" in s for s in unverified)
 
 
@@ -74,7 +74,7 @@ def test_markdown_report_for_code_review(reports):
     assert lines[0] == "# ezmigrate report"
     assert lines[2] == "Equivalence: verified by loading both versions."
     table = lines.index("| files | skills | converted | skipped | failed | unchanged |")
-    assert lines[table + 2] == "| 4 | 21 | 9 | 11 | 1 | 0 |"
+    assert lines[table + 2] == "| 4 | 20 | 8 | 11 | 1 | 0 |"
     late = _section(text, "## `late_constant.py`")
     assert "- **Move** (line 8): failed" in late
     assert f"    - legacy: `{LEGACY_SIDE}`" in late
@@ -89,12 +89,12 @@ def test_markdown_lists_findings_apart_from_equivalence(reports):
     text = reports["verified.md"]
     heading = "## Findings (kept as they were; not equivalence problems)"
     findings = _section(text, heading)
-    assert "`ontology_violations.py` HandOver (line 24) **range**: skiros:hasA expects object" \
-        in findings
+    assert "`ontology_violations.py` PlaceOnPose (line 31) **range-unproven**: skiros:hasA " \
+        "expects object of class skiros:TransformationPose" in findings
     assert text.index(heading) > text.index("## `ontology_violations.py`")
     violations = _section(text, "## `ontology_violations.py`")
-    assert "**range**" not in violations and "**domain**" not in violations
-    assert violations.count("converted, equivalent") == 3
+    assert "**range" not in violations and "**domain" not in violations
+    assert violations.count("converted, equivalent") == 2
 
 
 def test_markdown_says_when_nothing_was_verified(reports):
