@@ -130,9 +130,17 @@ def _write(item: Migrated, data: bytes, options: RewriteOptions, outcome: Rewrit
 
 
 def _refuse(item: Migrated, outcome: RewriteOutcome, message: str) -> None:
-    """The file keeps its content: say why, and report it as not changed."""
+    """The file keeps its content: say why, and report its skills as not migrated.
+
+    A skill proven equivalent but left unwritten is still a legacy skill on disk: the report
+    and the exit code must say so, not "converted".
+    """
     outcome.refused.append(message)
     item.result.notes.append(message)
+    if item.result.changed:
+        for skill in item.result.skills:
+            if skill.status == "converted":
+                skill.status, skill.reason = "failed", f"not written: {message}"
     item.result.new_source = None
 
 

@@ -3,6 +3,7 @@ replaced by rename; a write that fails leaves the original whole and no temporar
 
 from __future__ import annotations
 
+import json
 import os
 import resource
 import stat
@@ -84,12 +85,16 @@ def test_a_file_made_read_only_is_reported_and_left_alone(tmp_path):
     locked = tmp_path / "descriptions.py"
     os.chmod(locked, stat.S_IRUSR | stat.S_IRGRP | stat.S_IROTH)  # 0o444, even for root
 
-    run = cli("rewrite", tmp_path, "--no-verify")
+    run = cli("rewrite", tmp_path, "--no-verify", "--report", tmp_path.parent / "r.json")
 
     assert run.returncode == 1
     assert_no_traceback(run.stderr, run.stdout)
     assert f"{locked}: read-only, left alone" in run.stderr
     assert "3 files changed" in run.stderr  # the summary counts what is on disk
+    report = json.loads((tmp_path.parent / "r.json").read_text(encoding="utf-8"))
+    unwritten = [s for s in report["skills"] if s["file"] == "descriptions.py"]
+    assert unwritten and all(s["status"] == "failed" and "read-only" in s["reason"]
+                             for s in unwritten), unwritten  # still legacy on disk
     assert locked.read_bytes() == originals["descriptions.py"]
     assert mode_of(locked) == 0o444
     others = [n for n in NAMES if n != "descriptions.py"]
