@@ -13,6 +13,7 @@ import itertools
 import keyword
 import re
 import unicodedata
+from dataclasses import replace
 
 import libcst as cst
 
@@ -65,7 +66,8 @@ def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
         if earlier is not None and not _expands_options(params[earlier]) \
                 and not any(p.key == op.key for p in between) \
                 and not (_expands_options(op) and any(_expands_options(p) for p in between)):
-            params[earlier] = op
+            params[earlier] = replace(op, comments=_merged(params[earlier].comments,
+                                                           op.comments))
         else:
             params.append(op)
     declared = {op.key for op in params}
@@ -73,6 +75,13 @@ def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
     if ROBOT in used and ROBOT not in declared:
         params = [*params, ParamOp(ROBOT, ElementValue("sumo:Agent"), "Inferred", [], None, 0)]
     return params
+
+
+def _merged(first: Comments, second: Comments) -> Comments:
+    """Both declarations' comments for the one parameter that replaces them."""
+    carried = [first.trailing.value] if first.trailing is not None else []
+    return Comments(leading=[*first.leading, *second.leading],
+                    inner=[*first.inner, *carried, *second.inner], trailing=second.trailing)
 
 
 def _identifier(key: str) -> str:
@@ -132,6 +141,8 @@ def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[s
     comments, and the end-of-line comment of the item it follows.
     """
     self_param = func.params.params[0].with_changes(comma=cst.MaybeSentinel.DEFAULT)
+    header = func.body.header if isinstance(func.body, cst.IndentedBlock) else None
+    def_comment = header.comment if header is not None and params else None
     entries: list[tuple[cst.Param, Comments]] = []
     for op, name in zip(params, names, strict=True):
         annotation_text, default = annotation(op, name, ctx)
@@ -142,7 +153,9 @@ def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[s
             default=cst.parse_expression(default) if default is not None else None),
             op.comments))
     star_at = _keyword_only_from([param for param, _ in entries])
-    items: list[tuple[cst.Param | cst.ParamStar, Comments]] = [(self_param, Comments())]
+    # the ``def`` line's own comment stays at the end of the ``def`` line: after ``self,``
+    items: list[tuple[cst.Param | cst.ParamStar, Comments]] = [
+        (self_param, Comments(trailing=def_comment))]
     for index, entry in enumerate(entries):
         if index == star_at:
             items.append((cst.ParamStar(), Comments()))
@@ -176,8 +189,8 @@ def _keyword_only_from(params: list[cst.Param]) -> int | None:
 
 
 def build_body(func: cst.FunctionDef, skill: ExtractedSkill, ctx: EmitContext,
-               config: cst.PartialParserConfig,
-               header_comment: cst.Comment | None) -> cst.IndentedBlock:
+               config: cst.PartialParserConfig, header_comment: cst.Comment | None,
+               moved_def_comment: bool = False) -> cst.IndentedBlock:
     """The method body: docstring, then conditions and kept statements in legacy order."""
     statements: list[cst.BaseStatement] = []
     if skill.docstring is not None:
@@ -219,7 +232,9 @@ def build_body(func: cst.FunctionDef, skill: ExtractedSkill, ctx: EmitContext,
     indent = original.indent if isinstance(original, cst.IndentedBlock) else None
     header = original.header if isinstance(original, cst.IndentedBlock) else \
         cst.TrailingWhitespace()
-    if header_comment is not None and header.comment is None:
+    if moved_def_comment:  # build_parameters wrote it after ``self,``
+        header = header.with_changes(whitespace=cst.SimpleWhitespace(""), comment=None)
+    if header_comment is not None:
         header = header.with_changes(whitespace=cst.SimpleWhitespace("  "),
                                      comment=header_comment)
     return cst.IndentedBlock(body=statements, header=header, indent=indent, footer=footer)
@@ -230,6 +245,6 @@ def build_description(func: cst.FunctionDef, skill: ExtractedSkill, params: list
     """The complete ``description`` method for ``skill`` with the signature ``params``."""
     names = assign_names(params, ctx)
     parameters, last_comment = build_parameters(func, params, names, ctx)
-    body = build_body(func, skill, ctx, config, last_comment)
+    body = build_body(func, skill, ctx, config, last_comment, moved_def_comment=bool(params))
     return func.with_changes(name=cst.Name("description"), params=parameters, body=body,
                              whitespace_before_params=cst.SimpleWhitespace(""))

@@ -25,6 +25,7 @@ from ..core.ir import (
 )
 from ..core.registry import statement_rule
 from ..core.writer import EmitContext, quote
+from .condition_lists import statement_comments
 
 ARGUMENTS = ("key", "value", "param_type", "options", "description")
 KINDS = ("Required", "Optional", "Inferred")
@@ -51,6 +52,7 @@ def add_param(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[ParamOp
         code = ctx.code(args["description"]).strip()
     op = ParamOp(key, _value(args["value"], ctx), _kind(args["param_type"], ctx), options,
                  description, line, options_text=options_text, description_code=code)
+    op.comments = statement_comments(stmt, ctx)  # inside a multi-line call
     _findings(op, ctx)
     return [op]
 
