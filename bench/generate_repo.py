@@ -22,12 +22,14 @@ import argparse
 import functools
 import json
 import random
+import re
 import shutil
 import sys
 import time
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 MANIFEST = ".generated-repo.json"
 
@@ -407,7 +409,39 @@ def _param_line(rng: random.Random, key: str, category: str, style: tuple,
     return f"self.addParam({', '.join(args)})"
 
 
-def _condition_line(rng: random.Random, subjects: list[str], cond_classes: bool) -> str:
+@functools.cache
+def _index() -> Any:
+    from ezskiros_runtime.ontology.index import load_index
+
+    return load_index()
+
+
+def _can_hold(relation: str, subject_type: str, object_type: str) -> bool:
+    """Whether the bundled ontology lets ``relation`` hold between elements of these types.
+
+    Real skills relate a device to a robot with ``cora:robotPart`` and a product to a pose
+    with ``skiros:hasA``; random pairs would be type errors that EzSkiROS (rightly) refuses,
+    which no real repository is made of.
+    """
+    index = _index()
+    info = index.property(index.expand(relation) or "")
+    for type_string, exprs in ((subject_type, info.domains if info else ()),
+                               (object_type, info.ranges if info else ())):
+        iri = index.expand(type_string)
+        for expr in exprs:
+            if iri is not None and index.satisfies(iri, expr) is False \
+                    and index.witness(iri, expr) is None:
+                return False
+    return True
+
+
+_CONDITION = re.compile(r'add(\w+)Condition\(.*\("([^"]*)", "([^"]*)", "([^"]*)", '
+                        r'"([^"]*)", (True|False)\)')
+"""list, label, relation, subject, object, desired of a generated relation condition."""
+
+
+def _condition_line(rng: random.Random, subjects: list[str], cond_classes: bool,
+                    types: dict[str, str]) -> str:
     target = rng.choice(("Pre", "Pre", "Pre", "Pre", "Post", "Post", "Post", "Hold"))
     r = rng.random()
     desired = rng.random() < 0.7
@@ -416,6 +450,8 @@ def _condition_line(rng: random.Random, subjects: list[str], cond_classes: bool)
         rel = rng.choice(_RELATION_POOL)
         others = [k for k in subjects if k != subj]
         obj = rng.choice(others or subjects)
+        if not _can_hold(rel, types.get(subj, "sumo:Agent"), types.get(obj, "sumo:Agent")):
+            rel = "skiros:contain"
         label = _conventional("relation", subj, rel, obj, desired)
         if rng.random() < 0.2:
             label = rng.choice(FREE_LABELS)
@@ -446,6 +482,7 @@ def _description(rng: random.Random, name: str, style: tuple, consts: list[str],
     body: list[str] = []
     keys: list[str] = []
     element_keys: list[str] = []
+    types: dict[str, str] = {}
     for _ in range(rng.randint(3, 8)):
         # §7: Element values ~59%, type objects ~18%, literal defaults ~23%
         r = rng.random()
@@ -466,6 +503,8 @@ def _description(rng: random.Random, name: str, style: tuple, consts: list[str],
         if category == "element":
             element_keys.append(key)
         body.append(_param_line(rng, key, category, style, consts))
+        if category == "element":
+            types[key] = re.findall(r'\("([^"]*)"\)', body[-1])[0]
     if comments:
         body.insert(0, "#=======Params=========")
         if rng.random() < 0.3:
@@ -473,8 +512,14 @@ def _description(rng: random.Random, name: str, style: tuple, consts: list[str],
     subjects = element_keys or ["Robot"]
     if comments:
         body.append("#=======Conditions=========")
+    wanted: dict[tuple[str, ...], str] = {}
     for _ in range(rng.randint(2, 6)):
-        body.append(_condition_line(rng, subjects, cond_classes))
+        for _attempt in range(5):  # a real skill never wants one fact true and false at once
+            line = _condition_line(rng, subjects, cond_classes, types)
+            fact = _CONDITION.search(line)
+            if fact is None or wanted.setdefault(fact.group(1, 3, 4, 5), fact[6]) == fact[6]:
+                break
+        body.append(line)
     if messy:  # not declarative: keys from a loop, or a lambda condition
         if rng.random() < 0.5:
             body += ["for i in range(3):",
