@@ -67,6 +67,9 @@ class Settings:
 
     index: OntologyIndex | None = None
     external: Mapping[str, list[Operation]] = field(default_factory=dict)
+    exported: frozenset[str] = frozenset()
+    """Names other modules of the package import from this one (``*``: a star import): their
+    legacy imports stay, or migrating this file would break those modules."""
 
 
 @dataclass
@@ -118,13 +121,14 @@ def migrate(source: bytes | str, settings: Settings | None = None,
     if not any(p.result.status == "converted" for p in plans):
         return result
     new_module = _rewrite(module, plans)
-    base_name = "EzSkillDescription" if _legacy_still_used(new_module, names) else \
+    base_name = "EzSkillDescription" if _legacy_still_used(new_module, names,
+                                                           settings.exported) else \
         "SkillDescription"
     runtime_pairs = {(n, aliases.get(n, n)) for n in runtime}
     if any(p.result.status == "converted" and p.cls.base is None for p in plans):
         runtime_pairs.add(("SkillDescription", base_name))
     new_module = update_imports(new_module, runtime_pairs,
-                                {(p, aliases.get(p, p)) for p in prefixes})
+                                {(p, aliases.get(p, p)) for p in prefixes}, settings.exported)
     new_module = new_module.visit(_Rename(PLACEHOLDER, base_name))
     try:
         cst.parse_module(new_module.code)
@@ -335,9 +339,11 @@ def _convert_class(node: cst.ClassDef, plan: _Plan) -> cst.ClassDef:
     return node.with_changes(bases=bases, body=body)
 
 
-def _legacy_still_used(module: cst.Module, names: LegacyNames) -> bool:
-    """Whether unconverted code still needs the legacy ``SkillDescription`` name."""
-    return bool(names.local_names_for("SkillDescription") & used_names(module))
+def _legacy_still_used(module: cst.Module, names: LegacyNames, exported: frozenset[str]) -> bool:
+    """Whether unconverted code, here or in a module importing it from here, still needs the
+    legacy ``SkillDescription`` name."""
+    legacy = names.local_names_for("SkillDescription")
+    return bool(legacy & (used_names(module) | exported)) or bool(legacy and "*" in exported)
 
 
 class _Rename(cst.CSTTransformer):

@@ -52,7 +52,46 @@ def _matches(exporter: str, target: str) -> bool:
     return name == target or name.endswith("." + target) or target.endswith("." + name)
 
 
-def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings) -> int:
+def imported_from(migrated: Sequence[Migrated]) -> dict[str, frozenset[str]]:
+    """Relative path of a description file -> names other files import from it (``*``).
+
+    Each file is read once and parsed with ``ast`` (C speed) only when its text names the
+    module of some description file; files of the same root are matched like bases are.
+    """
+    holders = [m for m in migrated if m.result.skills or m.result.exports]
+    if not holders:
+        return {}
+    stems = {m: dotted(m.candidate.relative).rsplit(".", 1)[-1] for m in holders}
+    words = {stem.encode() for stem in stems.values() if stem}
+    found: dict[str, set[str]] = {}
+    for item in migrated:
+        data = item.original
+        if not any(word in data for word in words):
+            continue
+        for source, names in _from_imports(data):
+            target = target_module(item.candidate.relative, source)
+            for holder in holders:
+                if holder is not item and holder.candidate.root == item.candidate.root \
+                        and target.endswith(stems[holder]) \
+                        and _matches(holder.candidate.relative, target):
+                    found.setdefault(holder.candidate.relative, set()).update(names)
+    return {relative: frozenset(names) for relative, names in found.items()}
+
+
+def _from_imports(data: bytes) -> list[tuple[str, list[str]]]:
+    """``(module with its leading dots, imported names)`` of every ``from`` import."""
+    import ast
+
+    try:
+        tree = ast.parse(data)
+    except (SyntaxError, ValueError, MemoryError, RecursionError):
+        return []
+    return [("." * node.level + (node.module or ""), [a.name for a in node.names])
+            for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)]
+
+
+def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
+                       exported: dict[str, frozenset[str]] | None = None) -> int:
     """Re-migrate files whose classes derive from descriptions of sibling files.
 
     Returns how many files were migrated again. Only files under the same root are
@@ -83,8 +122,10 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings) -> int:
             if not external or key in done:
                 continue
             done.add(key)
-            result = migrate(item.original, Settings(settings.index, external),
-                             item.candidate.relative)
+            result = migrate(item.original, Settings(
+                settings.index, external, (exported or {}).get(item.candidate.relative,
+                                                               frozenset())),
+                item.candidate.relative)
             result.depends_on = sorted(set(sources))
             item.result = result
             redone += 1
@@ -96,8 +137,15 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings) -> int:
 
 def migrate_package(candidates: Sequence[Candidate], index: OntologyIndex | None,
                     jobs: int) -> list[Migrated]:
-    """Migrate every candidate in parallel, then resolve bases defined in sibling files."""
+    """Migrate every candidate in parallel, then resolve bases defined in sibling files and
+    keep the legacy imports that sibling files import from a migrated one."""
     migrated = migrate_all(candidates, index, jobs)
+    exported = imported_from(migrated)
+    for item in migrated:
+        names = exported.get(item.candidate.relative)
+        if names and item.result.changed:
+            item.result = migrate(item.original, Settings(index, exported=names),
+                                  item.candidate.relative)
     if any(m.result.foreign_bases for m in migrated):
-        resolve_cross_file(migrated, Settings(index=index))
+        resolve_cross_file(migrated, Settings(index=index), exported)
     return migrated

@@ -8,7 +8,7 @@ stood above a removed import move to the statement that takes its place, so bann
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Collection, Iterable, Sequence
 
 import libcst as cst
 
@@ -127,14 +127,18 @@ def _import_line(module: str, names: Sequence[tuple[str, str]],
 
 
 def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
-                   prefixes: Iterable[tuple[str, str]]) -> cst.Module:
+                   prefixes: Iterable[tuple[str, str]],
+                   exported: Collection[str] = ()) -> cst.Module:
     """Add the runtime and namespace imports, drop legacy imports nothing uses any more.
 
     ``runtime`` and ``prefixes`` hold ``(name, local alias)`` pairs. The new imports go where
     the first legacy import was (or after the last top-level import, or after the docstring).
+    ``exported`` names (``*``: all) are used by other modules importing them from this one.
     """
-    used = used_names(module)
     existing = imported_names(module)
+    used = used_names(module) | set(exported)
+    if "*" in exported:  # another module takes every name: no import is unused
+        used |= _all_imported(module)
     order = {name: i for i, name in enumerate(RUNTIME_ORDER)}
     wanted = sorted({pair for pair in runtime if existing.get(pair[1]) != RUNTIME},
                     key=lambda pair: order.get(pair[0], len(order)))
@@ -171,6 +175,17 @@ def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
     if anchor is None:
         anchor = last_import + 1 if last_import is not None else _after_docstring(body)
     return module.with_changes(body=body[:anchor] + additions + body[anchor:])
+
+
+def _all_imported(module: cst.Module) -> set[str]:
+    """Every local name a top-level import statement binds."""
+    found: set[str] = set()
+    for stmt in module.body:
+        for small in stmt.body if isinstance(stmt, cst.SimpleStatementLine) else ():
+            if isinstance(small, (cst.Import, cst.ImportFrom)) \
+                    and not isinstance(small.names, cst.ImportStar):
+                found.update(_local(alias) for alias in small.names)
+    return found
 
 
 def _fix_semicolons(kept: list[cst.BaseSmallStatement]) -> list[cst.BaseSmallStatement]:
