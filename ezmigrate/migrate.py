@@ -42,7 +42,12 @@ from .core.ir import (
     Unsupported,
 )
 from .core.legacy_names import LegacyNames, dotted_name, is_legacy_module
-from .core.reader import find_create_description, read_operations, self_parameter
+from .core.reader import (
+    class_bindings,
+    find_create_description,
+    read_operations,
+    self_parameter,
+)
 from .core.registry import load_rules
 from .core.replay import replay
 from .core.writer import DSL_NAMES, EmitContext
@@ -220,6 +225,7 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
     func = find_create_description(cls.node)
     plan.old_function = func
     try:
+        _check_bindings(cls, positions)
         if cls.other_bases:
             raise Unsupported(f"{cls.name} derives from several classes; a migration could "
                               "change its method resolution order")
@@ -337,6 +343,27 @@ def _convert_class(node: cst.ClassDef, plan: _Plan) -> cst.ClassDef:
         body = body.with_changes(body=[
             plan.new_function if stmt is plan.old_function else stmt for stmt in body.body])
     return node.with_changes(bases=bases, body=body)
+
+
+def _check_bindings(cls: DescriptionClass, positions: Mapping[cst.CSTNode, object]) -> None:
+    """Refuse classes whose own names the migrated method would collide with."""
+    def line(node: cst.CSTNode) -> int:
+        start = getattr(positions.get(node), "start", None)
+        return start.line if start is not None else 0
+
+    bindings = class_bindings(cls.node)
+    own = [node for name, node in bindings if name == "description"]
+    if own:
+        raise Unsupported(f"{cls.name} already defines `description` (line {line(own[0])}); "
+                          "the migrated method would replace it (rename it, then migrate)")
+    creates = [node for name, node in bindings if name == "createDescription"]
+    if len(creates) > 1:
+        raise Unsupported(f"createDescription is bound {len(creates)} times in {cls.name} "
+                          f"(lines {', '.join(str(line(n)) for n in creates)}); keep the one "
+                          "Python uses, the last, then migrate")
+    if creates and not isinstance(creates[0], cst.FunctionDef):
+        raise Unsupported(f"createDescription is assigned, not defined, in {cls.name} (line "
+                          f"{line(creates[0])}); define it with `def`, then migrate")
 
 
 def _legacy_still_used(module: cst.Module, names: LegacyNames, exported: frozenset[str]) -> bool:

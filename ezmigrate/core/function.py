@@ -97,8 +97,9 @@ def _identifier(key: str) -> str:
 
 
 def _usable_as_is(key: str) -> bool:
-    """A key Python keeps exactly as written when it is a parameter name."""
-    return key.isidentifier() and not keyword.iskeyword(key) \
+    """A key Python keeps exactly as written when it is a parameter name (inside a class,
+    ``__tool`` is mangled to ``_Skill__tool``)."""
+    return key.isidentifier() and not keyword.iskeyword(key) and not key.startswith("__") \
         and unicodedata.normalize("NFKC", key) == key
 
 

@@ -30,6 +30,20 @@ def find_create_description(classdef: cst.ClassDef) -> cst.FunctionDef | None:
     return found
 
 
+def class_bindings(classdef: cst.ClassDef) -> list[tuple[str, cst.CSTNode]]:
+    """``(name, statement)`` for each name the class body binds at its top level."""
+    found: list[tuple[str, cst.CSTNode]] = []
+    body = classdef.body.body if isinstance(classdef.body, cst.IndentedBlock) else ()
+    for stmt in body:
+        if isinstance(stmt, (cst.FunctionDef, cst.ClassDef)):
+            found.append((stmt.name.value, stmt))
+        for small in stmt.body if isinstance(stmt, cst.SimpleStatementLine) else ():
+            targets = ([t.target for t in small.targets] if isinstance(small, cst.Assign)
+                       else [small.target] if isinstance(small, cst.AnnAssign) else [])
+            found += [(t.value, small) for t in targets if isinstance(t, cst.Name)]
+    return found
+
+
 def self_parameter(func: cst.FunctionDef) -> str:
     """The name of ``createDescription``'s only parameter, or ``Unsupported``."""
     params = func.params

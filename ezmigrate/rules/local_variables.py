@@ -13,9 +13,10 @@ from __future__ import annotations
 import libcst as cst
 
 from ..core.context import ExtractContext
-from ..core.ir import CommentOnly, KeptStatement, Operation
+from ..core.ir import CommentOnly, Operation
 from ..core.registry import CONDITION_RULES, statement_rule
 from .condition_lists import statement_comments
+from .kept_statements import keep
 
 
 @statement_rule
@@ -36,4 +37,4 @@ def local_assignment(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[
         ctx.locals[name] = literal
     else:
         ctx.opaque_locals.add(name)
-    return [KeptStatement(stmt, ctx.line(stmt))]
+    return [keep(stmt, ctx)]

@@ -154,6 +154,22 @@ class S(SkillDescription):
 ''')
 
 
+def test_keys_python_would_mangle_in_a_class_get_a_key_escape():
+    """Inside a class body ``__tool`` becomes ``_S__tool``: the key would silently change."""
+    assert_migrates(case(
+        '        self.addParam("__tool", Element("skiros:Product"), ParamTypes.Required)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, REQUIRED, KEY
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    tool: REQUIRED[skiros.Product, KEY("__tool")]):
+        pass
+''')
+
+
 def test_redeclared_key_takes_the_first_position():
     assert_migrates(case(
         '        self.addParam("Speed", 0.1, ParamTypes.Optional)\n'

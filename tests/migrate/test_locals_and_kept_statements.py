@@ -81,3 +81,29 @@ def test_statements_that_could_declare_at_run_time_block_the_skill():
     assert_skipped(START + '        print("x")\n', "not a declarative description statement")
     assert_skipped(HEADER + '\n\nclass S(SkillDescription):\n    def createDescription(self, x):\n'
                    '        pass\n', "takes parameters besides self")
+
+
+def test_a_condition_local_used_for_more_than_adding_it_blocks_the_skill():
+    """``c`` disappears when it is inlined: a kept ``self.cond = c`` would be a NameError."""
+    assert_skipped(HEADER + '''
+
+class Watch(SkillDescription):
+    def createDescription(self):
+        self.addParam("A", Element("skiros:Location"), ParamTypes.Required)
+        self.addParam("B", Element("skiros:Product"), ParamTypes.Required)
+        c = self.getRelationCond("AContainB", "skiros:contain", "A", "B", True)
+        self.addPreCondition(c)
+        self.watched = c
+''', "`self.watched = c` at line 12", "condition stored in `c`")
+
+
+def test_names_the_migrated_method_would_collide_with_block_the_skill():
+    for body, reason in [
+        ("    description = 'picks things up'\n", "already defines `description` (line 7)"),
+        ("    def description(self):\n        return 'x'\n", "already defines `description`"),
+        ("    def createDescription(self):\n        pass\n", "bound 2 times in S (lines 7, 9)"),
+        ("    createDescription = None\n", "bound 2 times"),
+    ]:
+        assert_skipped(HEADER + "\n\nclass S(SkillDescription):\n" + body
+                       + "    def createDescription(self):\n"
+                       + '        self.addParam("A", float, 0)\n', reason)
