@@ -241,6 +241,7 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
         ctx = ExtractContext(module=module, names=names, positions=positions, skill=skill,
                              constants=constants,
                              self_name=self_parameter(func), class_name=cls.name,
+                             class_names=frozenset(n for n, _ in class_bindings(cls.node)),
                              base_names=[cls.base] if cls.base else [],
                              parent_operations=lambda base: effective[base])
         read_operations(func, ctx)

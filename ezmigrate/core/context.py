@@ -29,6 +29,8 @@ class ExtractContext:
     skill: ExtractedSkill
     self_name: str = "self"
     class_name: str = ""
+    class_names: frozenset[str] = frozenset()
+    """Names the class body binds: a signature default would see them, not the module's."""
     base_names: Sequence[str] = ()
     constants: Mapping[str, Literal] = field(default_factory=dict)
     locals: dict[str, Literal | CondSpec] = field(default_factory=dict)

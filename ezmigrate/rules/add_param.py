@@ -74,6 +74,14 @@ def _value(node: cst.BaseExpression, ctx: ExtractContext) -> ParamValue:
             root = root.value
         if isinstance(root, cst.Name) and root.value not in (ctx.self_name, *ctx.locals,
                                                              *ctx.opaque_locals):
+            if root.value in ctx.class_names or root.value == ctx.class_name:
+                raise Unsupported(
+                    f"the value of addParam at line {ctx.line(node)} is "
+                    f"`{ctx.code(node).strip()}`; as a default in the signature it would be "
+                    f"read in the class body, where {ctx.class_name} "
+                    + ("is not defined yet" if root.value == ctx.class_name else
+                       f"binds its own `{root.value}`")
+                    + " (rename one of them, then migrate)", node)
             known = ctx.constants.get(node.value) if isinstance(node, cst.Name) else None
             return OpaqueValue(ctx.code(node).strip(), known)
     raise Unsupported(f"the value of addParam at line {ctx.line(node)} is "

@@ -230,3 +230,15 @@ def test_fork_api_and_runtime_keys_are_skipped_with_reasons():
     assert_skipped(case('        key = self.name()\n        self.addParam(key, float, 0)\n'),
                    "computed at run time")
     assert_skipped(case('        self.addParam("A", [], ParamTypes.Optional)\n'), "reject")
+
+
+def test_defaults_the_class_body_would_read_differently_block_the_skill():
+    """In ``createDescription`` ``SPEED`` is the module's; as a signature default it is read
+    in the class body, which may bind its own, or name the class before it exists."""
+    module = HEADER + "\nSPEED = 0.5\n\n\nclass Move(SkillDescription):\n"
+    assert_skipped(module + "    SPEED = 2.0\n\n    def createDescription(self):\n"
+                   '        self.addParam("Speed", SPEED, ParamTypes.Optional)\n',
+                   "`SPEED`", "binds its own `SPEED`")
+    assert_skipped(module + "    LIMIT = 2.0\n\n    def createDescription(self):\n"
+                   '        self.addParam("Speed", Move.LIMIT, ParamTypes.Optional)\n',
+                   "`Move.LIMIT`", "Move is not defined yet")
