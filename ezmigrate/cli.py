@@ -9,6 +9,7 @@ found changes, a skill was skipped or failed verification, a file could not be p
 from __future__ import annotations
 
 import contextlib
+import os
 import sys
 import threading
 import traceback
@@ -24,6 +25,7 @@ from .report import MarkdownOptions, Summary, json_report, markdown_report
 from .results import FileResult
 
 EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
+EXIT_BROKEN_PIPE = 128 + 13  # as a shell reports a process ended by SIGPIPE
 
 
 def _fail(message: str, debug: bool) -> NoReturn:
@@ -63,10 +65,20 @@ class _Main(click.Group):
         except (click.exceptions.ClickException, click.exceptions.Exit,
                 click.exceptions.Abort):
             raise
+        except BrokenPipeError:  # `ezmigrate rewrite --dry-run . | head`: the reader left
+            _quiet_stdout()
+            sys.exit(EXIT_BROKEN_PIPE)
         except Exception as error:  # never a raw traceback for the user
             _fail(f"internal error: {error}", debug)
         finally:
             threading.excepthook = previous_hook
+
+
+def _quiet_stdout() -> None:
+    """Point stdout at /dev/null so that flushing it at exit raises nothing more."""
+    with contextlib.suppress(OSError, ValueError):
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
 
 
 def _thread_failed(args: Any, debug: bool) -> None:
@@ -94,8 +106,17 @@ def _load_index(ontology: tuple[Path, ...], start: Path) -> tuple[Any, tuple[str
         sys.exit(EXIT_ERROR)
 
 
+def _report_path(path: Path | None) -> Path | None:
+    """The report's format comes from its name: refuse a name that says neither."""
+    if path is not None and str(path) != "-" and path.suffix.lower() not in (".md", ".json"):
+        raise click.BadParameter(f"{path}: name it *.md for Markdown or *.json for JSON "
+                                 "(or - for JSON on stdout)", param_hint="'--report'")
+    return path
+
+
 def _write_report(path: Path, results: list[FileResult], options: MarkdownOptions) -> None:
-    text = markdown_report(results, options) if path.suffix == ".md" else json_report(results)
+    markdown = path.suffix.lower() == ".md"
+    text = markdown_report(results, options) if markdown else json_report(results)
     if str(path) == "-":
         click.echo(text, nl=False)
         return
@@ -114,11 +135,13 @@ def main() -> None:
 
 
 @main.command()
-@click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path, allow_dash=True))
+@click.argument("paths", nargs=-1, required=True,
+                type=click.Path(path_type=Path, allow_dash=True, exists=True))
 @click.option("--dry-run", is_flag=True, help="Write nothing; print a unified diff per file.")
 @click.option("--check", is_flag=True, help="Write nothing; exit 1 if any file would change.")
-@click.option("--report", type=click.Path(path_type=Path, dir_okay=False),
-              help="Write a report: Markdown for .md, JSON otherwise.")
+@click.option("--report", type=click.Path(path_type=Path, dir_okay=False, allow_dash=True),
+              callback=lambda _ctx, _param, value: _report_path(value),
+              help="Write a report: Markdown for .md, JSON for .json (- for JSON on stdout).")
 @click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
 @click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
               help="Ontology file or folder (repeatable).")
@@ -197,8 +220,9 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
 @main.command()
 @click.argument("before", type=click.Path(path_type=Path, exists=True))
 @click.argument("after", type=click.Path(path_type=Path, exists=True))
-@click.option("--report", type=click.Path(path_type=Path, dir_okay=False),
-              help="Write a report: Markdown for .md, JSON otherwise.")
+@click.option("--report", type=click.Path(path_type=Path, dir_okay=False, allow_dash=True),
+              callback=lambda _ctx, _param, value: _report_path(value),
+              help="Write a report: Markdown for .md, JSON for .json (- for JSON on stdout).")
 @click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
               help="Ontology file or folder (repeatable).")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")

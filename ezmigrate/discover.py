@@ -43,6 +43,17 @@ def _excluded(relative: str, patterns: Sequence[str]) -> bool:
     return False
 
 
+def _spellings(given: Path) -> set[str]:
+    """A file named on the command line as excludes should see it: as given and relative to
+    the working directory (pre-commit passes ``src/legacy/a.py``; ``legacy`` or
+    ``legacy/*`` must exclude it, as with black and ruff)."""
+    names = {given.as_posix().removeprefix("./"), given.name}
+    relative = os.path.relpath(given)
+    if not relative.startswith(".."):
+        names.add(Path(relative).as_posix())
+    return names
+
+
 def _inside(real: str, roots: Iterable[str]) -> bool:
     """Whether the resolved path ``real`` is one of the resolved ``roots`` or below one."""
     return any(real == r or real.startswith(os.path.join(r, "")) for r in roots)
@@ -65,8 +76,7 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
         root = given if given.is_dir() else given.parent
         real_roots = [os.path.realpath(root)]
         if given.is_file():
-            rel = given.name
-            if not _excluded(rel, exclude):
+            if not any(_excluded(name, exclude) for name in _spellings(given)):
                 found.setdefault(os.path.realpath(given), Candidate(given, root))
             continue
         for file, real in _walk(given, real_roots, notes):

@@ -150,3 +150,41 @@ def test_verify_classes_failing_in_both_versions(tmp_path: Path):
     skills = {s["class"]: s for s in json.loads(report.read_text())["skills"]}
     assert skills["EmptyListDefault"]["status"] == "failed"
     assert skills["EmptyListDefault"]["reason"].startswith("not verified")
+
+
+@pytest.mark.parametrize("pattern", ["skills", "skills/*", "skills/pick.py", "pick.py"])
+def test_excludes_see_the_folders_of_explicit_files(repo: Path, pattern: str):
+    """pre-commit passes ``skills/pick.py``: a folder pattern must exclude it, as in ruff."""
+    proc = ezmigrate("rewrite", "--check", "--no-verify", "--exclude", pattern,
+                     Path("skills") / "pick.py", cwd=repo)
+    assert proc.returncode == 0 and "0 files scanned" in proc.stderr.decode(), proc.stderr
+    kept = ezmigrate("rewrite", "--check", "--no-verify", "--exclude", "other",
+                     Path("skills") / "pick.py", cwd=repo)
+    assert kept.returncode == 1 and "would rewrite" in kept.stdout.decode()
+
+
+def test_a_path_that_does_not_exist_is_a_usage_error(repo: Path):
+    proc = ezmigrate("rewrite", "--check", repo / "missing.py")
+    assert proc.returncode == 2
+    assert "missing.py" in proc.stderr.decode() and "does not exist" in proc.stderr.decode()
+
+
+def test_a_report_name_must_say_its_format(repo: Path, tmp_path: Path):
+    wrong = ezmigrate("rewrite", "--check", "--no-verify", "--report", tmp_path / "r.txt", repo)
+    assert wrong.returncode == 2 and "*.md for Markdown" in wrong.stderr.decode()
+    assert not (tmp_path / "r.txt").exists()
+    upper = ezmigrate("rewrite", "--check", "--no-verify", "--report", tmp_path / "R.MD", repo)
+    assert upper.returncode == 1
+    assert (tmp_path / "R.MD").read_text(encoding="utf-8").startswith("# ezmigrate report")
+
+
+def test_a_reader_that_stops_early_ends_the_run_quietly(repo: Path):
+    """``ezmigrate rewrite --dry-run . | head -1``: no traceback, no "internal error"."""
+    proc = subprocess.Popen([sys.executable, "-m", "ezmigrate", "rewrite", "--dry-run",
+                             "--no-verify", repo / "skills" / "pick.py"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert proc.stdout is not None and proc.stderr is not None
+    proc.stdout.close()  # the reader is gone before the first diff line
+    stderr = proc.stderr.read().decode()
+    assert proc.wait(timeout=300) == 141, stderr
+    assert "internal error" not in stderr and "Traceback" not in stderr
