@@ -72,6 +72,8 @@ class Settings:
 
     index: OntologyIndex | None = None
     external: Mapping[str, list[Operation]] = field(default_factory=dict)
+    held: Mapping[str, str] = field(default_factory=dict)
+    """Classes to leave exactly as they are, with the reason (verification refused them)."""
     exported: frozenset[str] = frozenset()
     """Names other modules of the package import from this one (``*``: a star import): their
     legacy imports stay, or migrating this file would break those modules."""
@@ -225,6 +227,8 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
     func = find_create_description(cls.node)
     plan.old_function = func
     try:
+        if cls.name in settings.held:
+            raise Unsupported(settings.held[cls.name])
         _check_bindings(cls, positions)
         if cls.other_bases:
             raise Unsupported(f"{cls.name} derives from several classes; a migration could "

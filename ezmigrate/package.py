@@ -122,10 +122,9 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
             if not external or key in done:
                 continue
             done.add(key)
-            result = migrate(item.original, Settings(
-                settings.index, external, (exported or {}).get(item.candidate.relative,
-                                                               frozenset())),
-                item.candidate.relative)
+            item.settings = Settings(settings.index, external, exported=(exported or {}).get(
+                item.candidate.relative, frozenset()))
+            result = migrate(item.original, item.settings, item.candidate.relative)
             result.depends_on = sorted(set(sources))
             item.result = result
             redone += 1
@@ -144,8 +143,8 @@ def migrate_package(candidates: Sequence[Candidate], index: OntologyIndex | None
     for item in migrated:
         names = exported.get(item.candidate.relative)
         if names and item.result.changed:
-            item.result = migrate(item.original, Settings(index, exported=names),
-                                  item.candidate.relative)
+            item.settings = Settings(index, exported=names)
+            item.result = migrate(item.original, item.settings, item.candidate.relative)
     if any(m.result.foreign_bases for m in migrated):
         resolve_cross_file(migrated, Settings(index=index), exported)
     return migrated

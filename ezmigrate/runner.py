@@ -42,14 +42,16 @@ class Migrated:
     place) they are not kept: the first access reads the file again, as it is then.
     """
 
-    __slots__ = ("_digest", "_original", "candidate", "result")
+    __slots__ = ("_digest", "_original", "candidate", "result", "settings")
 
     def __init__(self, candidate: Candidate, original: bytes | None, digest: str | None,
-                 result: FileResult) -> None:
+                 result: FileResult, settings: Settings | None = None) -> None:
         self.candidate = candidate
         self._original = original
         self._digest = digest
         self.result = result
+        self.settings = settings
+        """What the core migrated this file with (to migrate it again, holding classes)."""
 
     @property
     def original(self) -> bytes:
@@ -127,6 +129,7 @@ class _Workers:
         return self._settings
 
     def add(self, item: Migrated, data: bytes) -> None:
+        item.settings = self.settings
         if self.jobs <= 1:
             _init_worker(self.settings)
             item.result = _migrate_one(item.candidate.relative, data)

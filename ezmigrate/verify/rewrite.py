@@ -8,6 +8,8 @@ the file keeps its old content and its other converted skills are reported as no
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ..results import Finding, SkillResult
 from ..runner import Migrated
 from ..session import RewriteOptions
@@ -15,25 +17,66 @@ from .compare_files import ClassVerdict, compare_outcomes, load_failure
 from .pool import PoolConfig, job_for, run_jobs
 from .protocol import LoadOutcome
 
+MAX_ROUNDS = 3
+"""Rounds of holding refused classes back and verifying the rest of their files again."""
+
 
 def verify_migrated(migrated: list[Migrated], options: RewriteOptions) -> None:
-    """Verify every changed file; revert (in memory) those that do not verify."""
+    """Verify every changed file; revert (in memory) what does not verify.
+
+    A class that fails (or that the runtime would refuse to load) is held as it was and its
+    file is migrated again without it, so the classes beside it that verified still land.
+    Files whose descriptions derive from a file migrated again are verified again with it.
+    """
     if not migrated:
         return
     by_relative = {item.candidate.relative: item for item in migrated}
-    jobs = []
-    for item in migrated:
-        assert isinstance(item.result.new_source, bytes)
-        root = item.candidate.root
-        jobs.append(job_for(item.candidate.path, item.original, root))
-        after = job_for(item.candidate.path, item.result.new_source, root)
-        after.overlays = _overlays(item, by_relative)
-        jobs.append(after)
     config = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=options.ontology)
-    outcomes = run_jobs(jobs, config)
-    for index, item in enumerate(migrated):
-        apply_verdicts(item, outcomes[2 * index], outcomes[2 * index + 1], options)
+    pending = list(migrated)
+    for _ in range(MAX_ROUNDS):
+        jobs = []
+        for item in pending:
+            assert isinstance(item.result.new_source, bytes)
+            root = item.candidate.root
+            jobs.append(job_for(item.candidate.path, item.original, root))
+            after = job_for(item.candidate.path, item.result.new_source, root)
+            after.overlays = _overlays(item, by_relative)
+            jobs.append(after)
+        outcomes = run_jobs(jobs, config)
+        again = []
+        for index, item in enumerate(pending):
+            culprits = apply_verdicts(item, outcomes[2 * index], outcomes[2 * index + 1],
+                                      options)
+            if culprits and _migrate_holding(item, culprits):
+                again.append(item)
+        redone = {item.candidate.relative for item in again}
+        again += [item for item in migrated if item not in again and item.result.changed
+                  and redone & set(item.result.depends_on)]
+        if not again:
+            break
+        pending = again
+    else:  # still unsettled after the last round: write none of it
+        for item in pending:
+            for skill in item.result.skills:
+                if skill.status == "converted":
+                    _fail(skill, "not verified: its file changed in every verification round")
+            item.result.new_source = None
     _hold_dependents(migrated, by_relative)
+
+
+def _migrate_holding(item: Migrated, culprits: dict[str, SkillResult]) -> bool:
+    """Migrate ``item`` again leaving ``culprits`` as they are; True when something still
+    changes (and so must be verified again)."""
+    from ..migrate import Settings, migrate
+
+    settings = item.settings or Settings()
+    held = {**settings.held, **{name: skill.reason or "held" for name, skill in culprits.items()}}
+    item.settings = replace(settings, held=held)
+    result = migrate(item.original, item.settings, item.candidate.relative)
+    result.skills = [culprits.get(skill.name, skill) for skill in result.skills]
+    result.notes = item.result.notes + result.notes
+    item.result = result
+    return result.changed
 
 
 def _overlays(item: Migrated, by_relative: dict[str, Migrated]) -> dict[str, bytes]:
@@ -66,8 +109,12 @@ def _hold_dependents(migrated: list[Migrated], by_relative: dict[str, Migrated])
 
 
 def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
-                   options: RewriteOptions) -> None:
-    """Mark skills from the two loads; drop the new content unless everything verified."""
+                   options: RewriteOptions) -> dict[str, SkillResult]:
+    """Mark skills from the two loads; drop the new content unless everything verified.
+
+    Returns the converted classes that did not verify when others in the file did: held
+    as they were, the file can be migrated again without them.
+    """
     result = item.result
     converted = [s for s in result.skills if s.status == "converted"]
     if not before.loaded or not after.loaded:
@@ -76,7 +123,7 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
             _fail(skill, load_failure(side, outcome))
         _capture(result.notes, before, after)
         result.new_source = None
-        return
+        return {}
     verdicts = {v.name: v for v in compare_outcomes(
         before, after, ignore_order=options.ignore_order, ignore_labels=options.ignore_labels)}
     by_name = {s.name: s for s in result.skills}
@@ -104,12 +151,15 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
     for skill in converted:
         if skill.status == "converted" and _refuse_rejected(skill, after):
             all_ok = False
-    if not all_ok:
-        for skill in converted:
-            if skill.status == "converted":
-                skill.status = "skipped"
-                skill.reason = "verified, but not written: another class in this file failed"
-        result.new_source = None
+    if all_ok:
+        return {}
+    culprits = {s.name: s for s in converted if s.status != "converted"}
+    verified = [s for s in converted if s.status == "converted"]
+    for skill in verified:
+        skill.status = "skipped"
+        skill.reason = "verified, but not written: another class in this file failed"
+    result.new_source = None
+    return culprits if verified else {}
 
 
 STATIC_KINDS = frozenset({"unknown-vocabulary", "undeclared-parameter"})

@@ -175,10 +175,11 @@ def rewritten(tmp_path_factory):
     return folder, original, run, read_json(report)
 
 
-def test_rewrite_writes_no_file_in_which_a_converted_skill_is_not_equivalent(rewritten):
+def test_a_class_that_is_not_equivalent_is_held_and_its_neighbour_lands(rewritten):
+    """Every class converted in a written file verified: ``Move`` (not equivalent) stays as
+    it was, the file is migrated again without it, and ``Stop`` beside it is written."""
     folder, original, run, report = rewritten
     assert run.returncode == 1, run.stderr
-    assert (folder / "late_constant.py").read_bytes() == original["late_constant.py"]
     move = skills_of(report, "late_constant.py")["Move"]
     assert move["status"] == "failed" and move["equivalent"] is False
     assert "not equivalent" in move["reason"]
@@ -186,8 +187,13 @@ def test_rewrite_writes_no_file_in_which_a_converted_skill_is_not_equivalent(rew
         ("addParam('Speed', 1.0, ParamTypes.Optional)",
          "addParam('Speed', 0.5, ParamTypes.Optional)")]
     stop = skills_of(report, "late_constant.py")["Stop"]
-    assert stop["status"] == "skipped" and "not written" in stop["reason"]
+    assert stop["status"] == "converted" and stop["equivalent"] is True
     assert "late_constant.py:8: Move: failed: not equivalent" in run.stderr
+    text = (folder / "late_constant.py").read_text(encoding="utf-8")
+    assert text != original["late_constant.py"].decode()
+    move_source = text[text.index("class Move"):text.index("class Stop")]
+    assert 'self.addParam("Speed", SPEED, ParamTypes.Optional)' in move_source  # as it was
+    assert "def description(self," in text[text.index("class Stop"):]
 
 
 def test_rewrite_writes_no_file_in_which_a_converted_skill_cannot_be_loaded(rewritten):
@@ -280,3 +286,34 @@ def test_verify_fails_a_migrated_class_the_runtime_would_refuse(tmp_path):
     assert run.returncode == 1, run.stderr
     assert run.stderr.count("EzSkiROS rejects the migrated class when it loads") == 3
     assert "3 classes, 0 equivalent, 3 not equivalent" in run.stderr
+
+
+def test_a_refused_class_is_held_and_the_rest_of_its_file_still_lands(tmp_path):
+    """The file is migrated again with the refused classes left as they were (and a child
+    inheriting the problem with them), verified again, and written."""
+    source = REJECTED.read_text(encoding="utf-8") + '''
+
+class FineOne(SkillDescription):
+    def createDescription(self):
+        self.addParam("Camera", Element("skiros:DepthCamera"), ParamTypes.Required)
+
+
+class FineChild(HandOver):
+    def createDescription(self):
+        HandOver.createDescription(self)
+        self.addParam("Extra", 1.0, ParamTypes.Optional)
+'''
+    original = tree(tmp_path / "original", {"type_errors.py": source})
+    folder = tree(tmp_path / "skills", {"type_errors.py": source})
+    run = cli("rewrite", folder, "--report", tmp_path / "r.json")
+    assert run.returncode == 1, run.stderr  # skipped skills need attention
+    statuses = {s["class"]: s["status"] for s in read_json(tmp_path / "r.json")["skills"]}
+    assert statuses == {"HandOver": "skipped", "CheckTool": "skipped",
+                        "MountCamera": "skipped", "FineOne": "converted",
+                        "FineChild": "skipped"}
+    text = (folder / "type_errors.py").read_text(encoding="utf-8")
+    assert "class FineOne(EzSkillDescription):" in text
+    assert text.count("def createDescription(self):") == 5  # 4 held + the implementation
+    proof = cli("verify", original, folder)
+    assert proof.returncode == 0, proof.stderr
+    assert "5 classes, 5 equivalent" in proof.stderr

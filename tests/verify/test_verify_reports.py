@@ -37,7 +37,7 @@ def reports(tmp_path_factory):
 def test_json_report_follows_the_schema(reports):
     data = read_json_text(reports["verified.json"])
     assert data["version"] == 1
-    counts = {"files": 4, "skills": 20, "converted": 8, "skipped": 11, "failed": 1}
+    counts = {"files": 4, "skills": 20, "converted": 9, "skipped": 10, "failed": 1}
     assert {k: data["summary"][k] for k in counts} == counts
     for skill in data["skills"]:
         expected = SKILL_KEYS | ({"diff"} if skill["equivalent"] is False else set())
@@ -55,9 +55,9 @@ def test_json_report_says_what_was_proven(reports):
     assert move["diff"] == [{"where": "params", "message": "parameter #2 differs",
                              "before": LEGACY_SIDE, "after": MIGRATED_SIDE}]
     converted = [s for s in verified.values() if s["status"] == "converted"]
-    assert len(converted) == 8 and all(s["equivalent"] is True for s in converted)
-    stop = verified.pop(("late_constant.py", "Stop"))  # proven, but its file is not written
-    assert (stop["status"], stop["equivalent"]) == ("skipped", True)
+    assert len(converted) == 9 and all(s["equivalent"] is True for s in converted)
+    stop = verified[("late_constant.py", "Stop")]  # written, with Move held as it was
+    assert (stop["status"], stop["equivalent"]) == ("converted", True)
     skipped = [s for s in verified.values() if s["status"] == "skipped"]
     assert len(skipped) == 10 and all(s["equivalent"] is None and s["reason"] for s in skipped)
     attach = verified[("ontology_violations.py", "AttachCamera")]
@@ -74,12 +74,12 @@ def test_markdown_report_for_code_review(reports):
     assert lines[0] == "# ezmigrate report"
     assert lines[2] == "Equivalence: verified by loading both versions."
     table = lines.index("| files | skills | converted | skipped | failed | unchanged |")
-    assert lines[table + 2] == "| 4 | 20 | 8 | 11 | 1 | 0 |"
+    assert lines[table + 2] == "| 4 | 20 | 9 | 10 | 1 | 0 |"
     late = _section(text, "## `late_constant.py`")
     assert "- **Move** (line 8): failed" in late
     assert f"    - legacy: `{LEGACY_SIDE}`" in late
     assert f"    - migrated: `{MIGRATED_SIDE}`" in late
-    assert "- **Stop** (line 14): skipped\n  - reason: verified, but not written" in late
+    assert "- **Stop** (line 14): converted, equivalent" in late
     skipped = _section(text, "## `not_convertible.py`")
     assert "- **FollowWaypoints** (line 20): skipped\n  - reason: a loop at line 23" in skipped
     assert "- **Navigate** (line 11): converted, equivalent" in text
