@@ -2,7 +2,8 @@
 
 The short forms (``Object: skiros.Product``, ``A.contain(B)``) are used only when the
 ontology given to the migration knows the term under exactly that prefix and, for a
-relation, under no other prefix; otherwise the verbatim string forms are written
+relation or property, under no other prefix and in the default ``skiros`` prefix (the one a
+short name unknown at run time falls back to); otherwise the verbatim string forms are written
 (``ELEMENT(":Location")``, ``A.relation("turtlebot:docked", B)``), which lower to the same
 legacy strings whatever ontology is loaded later. Meaning never depends on the ontology.
 """
@@ -94,9 +95,14 @@ class EmitContext:
         return f"{self.namespace(found[0])}.{found[1]}"
 
     def short_property(self, vocabulary: str) -> str | None:
-        """``contain`` for ``"skiros:contain"`` when that local name is unambiguous."""
+        """``contain`` for ``"skiros:contain"`` when that local name is unambiguous.
+
+        Only for the default prefix: the runtime reads a short name it does not know as the
+        default prefix's (SkiROS2's ``:name``), so ``A.robotPart(B)`` would silently become
+        ``skiros:robotPart`` on a robot whose ontology lacks ``cora:robotPart``.
+        """
         found = self._qname(vocabulary)
-        if found is None or not self.index:
+        if found is None or not self.index or found[0] != self.index.default_prefix:
             return None
         _, local, iri = found
         if local in SYMBOL_METHODS or local.startswith("_"):
