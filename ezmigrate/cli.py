@@ -117,6 +117,8 @@ def _report_path(path: Path | None) -> Path | None:
 def _write_report(path: Path, results: list[FileResult], options: MarkdownOptions) -> None:
     markdown = path.suffix.lower() == ".md"
     text = markdown_report(results, options) if markdown else json_report(results)
+    # a file name that is not valid UTF-8 reaches us as lone surrogates: escape them
+    text = text.encode("utf-8", "backslashreplace").decode("utf-8")
     if str(path) == "-":
         click.echo(text, nl=False)
         return

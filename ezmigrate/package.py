@@ -9,6 +9,7 @@ deriving files again with them. Chains across several files resolve in a few rou
 
 from __future__ import annotations
 
+import os
 from collections.abc import Sequence
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING
@@ -62,7 +63,7 @@ def imported_from(migrated: Sequence[Migrated]) -> dict[str, frozenset[str]]:
     if not holders:
         return {}
     stems = {m: dotted(m.candidate.relative).rsplit(".", 1)[-1] for m in holders}
-    words = {stem.encode() for stem in stems.values() if stem}
+    words = {os.fsencode(stem) for stem in stems.values() if stem}
     found: dict[str, set[str]] = {}
     for item in migrated:
         data = item.original

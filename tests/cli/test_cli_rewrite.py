@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -188,3 +189,18 @@ def test_a_reader_that_stops_early_ends_the_run_quietly(repo: Path):
     stderr = proc.stderr.read().decode()
     assert proc.wait(timeout=300) == 141, stderr
     assert "internal error" not in stderr and "Traceback" not in stderr
+
+
+@pytest.mark.parametrize("suffix", [".json", ".md"])
+def test_a_file_name_that_is_not_utf8_is_migrated_and_reported(tmp_path: Path, suffix: str):
+    """Linux file names are bytes: ``caf\\xe9.py`` (latin-1) must not end in an internal error
+    after the files were written."""
+    folder = tmp_path / "skills"
+    folder.mkdir()
+    name = os.fsdecode(b"caf\xe9.py")
+    shutil.copy(PICK, folder / name)
+    report = tmp_path / f"r{suffix}"
+    proc = ezmigrate("rewrite", folder, "--report", report)
+    assert proc.returncode == 0, proc.stderr
+    assert (folder / name).read_bytes() == PICK_MIGRATED.read_bytes()
+    assert "caf\\udce9.py" in report.read_text(encoding="utf-8")
