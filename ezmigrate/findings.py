@@ -19,6 +19,8 @@ if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
 _CANONICAL = re.compile(r"[A-Za-z][\w.-]*:[A-Za-z_][\w.-]*\Z")
+UNKNOWN_TYPE = "Unknown"
+"""What SkiROS2 stores for ``Element()``: its own default, not a misspelling."""
 
 
 def _walk(conditions: tuple[Condition, ...]) -> list[Condition]:
@@ -42,7 +44,7 @@ def skill_findings(model: SkillModel, index: OntologyIndex | None) -> list[Findi
                                      "declares (SkiROS2 accepts this silently)"))
     types = [p.element_type for p in model.params if p.element_type is not None]
     for type_string in types:
-        if not _CANONICAL.match(type_string):
+        if not _CANONICAL.match(type_string) and type_string != UNKNOWN_TYPE:
             found.append(Finding("element-type-spelling", 0, f"Element type {type_string!r} is "
                                  "not written as prefix:Name; SkiROS2 stores it verbatim "
                                  "(kept as is)"))
@@ -54,7 +56,7 @@ def skill_findings(model: SkillModel, index: OntologyIndex | None) -> list[Findi
             iri = index.expand(term)
             known = iri is not None and (index.is_class(iri) if what == "class"
                                          else index.property(iri) is not None)
-            if not known and term != "Unknown":
+            if not known and term != UNKNOWN_TYPE:
                 hint = _close(term, index.suggest(
                     term, ("class",) if what == "class" else ("object", "data")))
                 extra = f"; did you mean {', '.join(hint)}?" if hint else ""

@@ -52,8 +52,8 @@ def typed(value: Any) -> Typed:
         return ("bool", value)
     if isinstance(value, int):
         return ("int", value)
-    if isinstance(value, float):
-        return ("float", value if math.isfinite(value) else repr(value))
+    if isinstance(value, float):  # + 0.0: -0.0 equals 0.0, so it must serialize alike
+        return ("float", value + 0.0 if math.isfinite(value) else repr(value))
     if isinstance(value, str):
         return ("str", value)
     if isinstance(value, (list, tuple)):

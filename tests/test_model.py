@@ -251,3 +251,12 @@ def test_compare_type_difference_and_difference_text() -> None:
     diffs = compare(pick(), pick(type="skiros:Other"))
     assert diffs[0].where == "type" and diffs[0].to_json()["after"] == "skiros:Other"
     assert str(diffs[0]) == "type: skill type differs\n  - skiros:Pick\n  + skiros:Other"
+
+
+def test_equal_models_have_equal_canonical_json_even_for_negative_zero() -> None:
+    """``-0.0 == 0.0``: a model equal to another must also serialize to the same text."""
+    negative = pick(params=(Param("Speed", "Optional", "float", values=(typed(-0.0),)),))
+    positive = pick(params=(Param("Speed", "Optional", "float", values=(typed(0.0),)),))
+    assert negative == positive
+    assert negative.canonical_json() == positive.canonical_json()
+    assert SkillModel.from_json(json.loads(json.dumps(negative.to_json()))) == positive

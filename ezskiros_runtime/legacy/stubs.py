@@ -174,6 +174,8 @@ for _name in ("neg", "pos", "abs", "invert", "round", "trunc", "floor", "ceil"):
 
 
 _MARK = "__ezmigrate_stub__"
+STUB_VERSION = "0.0.0"
+"""A stub module's ``__version__``: a string every version parser and comparison accepts."""
 
 
 def is_stub(value: Any) -> bool:
@@ -198,4 +200,5 @@ def make_stub_module(module: ModuleType) -> None:
 
     module.__dict__["__getattr__"] = __getattr__
     module.__dict__["__all__"] = []
+    module.__dict__["__version__"] = STUB_VERSION  # `if np.__version__ >= "1.20":` runs
     module.__dict__[_MARK] = True

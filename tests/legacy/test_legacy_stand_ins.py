@@ -329,3 +329,21 @@ def test_realistic_package_needs_permissive_mode(tmp_path: Path) -> None:
     path = write_package(tmp_path)
     with pytest.raises(ModuleLoadError, match=r"skills\.py:4: .*ModuleNotFoundError.*rospy"):
         load_file(path, permissive=False)
+
+
+def test_a_version_check_on_a_stub_module_runs(tmp_path: Path) -> None:
+    """``if np.__version__ >= "1.20"`` at module level must not make a legacy file
+    unloadable: stub modules carry a version string every comparison accepts."""
+    path = tmp_path / "versioned.py"
+    path.write_text(
+        "import numpy as np\n"
+        "from skiros2_common.core.abstract_skill import SkillDescription\n"
+        "from skiros2_common.core.params import ParamTypes\n"
+        "NEW_API = np.__version__ >= '1.20'\n\n\n"
+        "class Measure(SkillDescription):\n"
+        "    def createDescription(self):\n"
+        "        self.addParam('Fast', NEW_API, ParamTypes.Optional)\n", encoding="utf-8")
+    result = load_file(path)
+    assert result.errors == [], result.errors
+    (model,) = result.models
+    assert model.params[0].key == "Fast" and model.params[0].values == (typed(False),)

@@ -27,7 +27,7 @@ class S(SkillDescription):
 
 
 def test_verbatim_element_strings_and_unknown_vocabulary():
-    assert_migrates(case(
+    result = assert_migrates(case(
         '        self.addParam("A", Element(":Location"), ParamTypes.Required)\n'
         '        self.addParam("B", Element("Location"), ParamTypes.Required)\n'
         '        self.addParam("C", Element(), ParamTypes.Required)\n'
@@ -44,6 +44,9 @@ class S(SkillDescription):
                     D: ELEMENT("scalable:Ur5")):
         pass
 ''')
+    spelled = [f.message for f in result.skills[0].findings if f.kind == "element-type-spelling"]
+    assert len(spelled) == 2 and "':Location'" in spelled[0] and "'Location'" in spelled[1]
+    assert not any("Unknown" in f.message for f in result.skills[0].findings)  # Element()
 
 
 def test_type_objects_and_literal_defaults_keep_exact_types():
