@@ -128,7 +128,7 @@ def test_unmutated_skills_and_their_clones_verify_equivalent(mutation_run):
     assert not broken, broken
 
 
-def test_every_single_field_mutant_is_reported_not_equivalent(mutation_run):
+def test_every_single_field_mutant_is_reported_not_equivalent(mutation_run, summary_line):
     skills: dict[str, list[Skill]] = mutation_run["skills"]
     verdicts = mutation_run["verdicts"]
     mutants = [m for group in skills.values() for s in group for m in s.mutants]
@@ -149,11 +149,11 @@ def test_every_single_field_mutant_is_reported_not_equivalent(mutation_run):
     total = len(mutants)
     caught = sum(caught_by.values())
     per_operator = Counter(m.operator for m in mutants)
-    print(f"\n{total} mutants of {sum(len(g) for g in skills.values())} skills in "
-          f"{len(skills)} files, {caught} caught ({100 * caught / total:.0f}%): "
-          + ", ".join(f"{n} by {why}" for why, n in caught_by.most_common()))
-    print("mutants per operator: " + ", ".join(f"{k} {v}" for k, v in
-                                              sorted(per_operator.items())))
+    summary_line(f"mutation test: {total} mutants of {sum(len(g) for g in skills.values())} "
+                 f"skills in {len(skills)} files, {caught} caught ({100 * caught / total:.0f}%): "
+                 + ", ".join(f"{n} by {why}" for why, n in caught_by.most_common()))
+    summary_line("mutants per operator: " + ", ".join(f"{k} {v}" for k, v in
+                                                      sorted(per_operator.items())))
     assert not survivors, "mutants reported equivalent:\n" + "\n\n".join(
         f"{d}\n{method}" for d, method in survivors[:10])
     assert caught == total

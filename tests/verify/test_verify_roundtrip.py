@@ -32,7 +32,7 @@ def _settings() -> Settings:
     return Settings(index=load_index())
 
 
-def test_generated_legacy_modules_migrate_to_equivalent_descriptions(tmp_path):
+def test_generated_legacy_modules_migrate_to_equivalent_descriptions(tmp_path, summary_line):
     trip = RoundTrip(tmp_path, _settings(), jobs=2, limit=MODULES)
     for round_seed in range(8):  # fixed seeds: the same modules in every run
         if trip.full:
@@ -48,9 +48,9 @@ def test_generated_legacy_modules_migrate_to_equivalent_descriptions(tmp_path):
 
         collect()
     report = trip.run()
-    print("\n" + report.summary())
-    print("skip reasons: " + ("; ".join(report.skip_lines()) or "none"))
-    print("constructs (modules containing each): " + ", ".join(
+    summary_line("round-trip property: " + report.summary())
+    summary_line("skip reasons: " + ("; ".join(report.skip_lines()) or "none"))
+    summary_line("constructs (modules containing each): " + ", ".join(
         f"{k} {v}" for k, v in report.kinds.most_common()))
     assert report.failure_count == 0, report.explain()
     assert report.modules == MODULES
