@@ -19,7 +19,7 @@ from typing import Any, NoReturn
 import click
 
 from . import __version__, interrupt
-from .config import load_project_config
+from .config import ConfigError, load_project_config
 from .diffs import colour, unified_diff
 from .report import MarkdownOptions, Summary, json_report, markdown_report
 from .results import FileResult
@@ -65,6 +65,9 @@ class _Main(click.Group):
         except (click.exceptions.ClickException, click.exceptions.Exit,
                 click.exceptions.Abort):
             raise
+        except ConfigError as error:
+            click.echo(f"ezmigrate: error: {error}", err=True)
+            sys.exit(EXIT_ERROR)
         except BrokenPipeError:  # `ezmigrate rewrite --dry-run . | head`: the reader left
             _quiet_stdout()
             sys.exit(EXIT_BROKEN_PIPE)
@@ -162,32 +165,27 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             output_dir: Path | None, verify: bool, timeout: float | None, ignore_order: bool,
             ignore_labels: bool, color: bool | None, debug: bool) -> None:
     """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin)."""
-    try:
-        if [str(p) for p in paths] == ["-"]:
-            from .stdin import rewrite_stdin
+    if [str(p) for p in paths] == ["-"]:
+        from .stdin import rewrite_stdin
 
-            index, ontology_files = _load_index(ontology, Path.cwd())
-            sys.exit(rewrite_stdin(index, ontology_files, verify=verify, check=check,
-                                   dry_run=dry_run, timeout=timeout or 20.0))
-        from .session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
+        index, ontology_files = _load_index(ontology, Path.cwd())
+        sys.exit(rewrite_stdin(index, ontology_files, verify=verify, check=check,
+                               dry_run=dry_run, timeout=timeout or 20.0))
+    from .session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
 
-        start = paths[0]
-        project = load_project_config(start)
-        index, ontology_files = _load_index(ontology, start)
-        options = RewriteOptions(
-            paths=list(paths), dry_run=dry_run, check=check,
-            exclude=tuple(exclude) + project.exclude, output_dir=output_dir, verify=verify,
-            timeout=timeout or project.timeout or 20.0, ignore_order=ignore_order,
-            ignore_labels=ignore_labels, ontology=ontology_files)
-        if jobs or project.jobs:
-            options.jobs = jobs or project.jobs or 1
-        from .verify.rewrite import verify_migrated
+    start = paths[0]
+    project = load_project_config(start)
+    index, ontology_files = _load_index(ontology, start)
+    options = RewriteOptions(
+        paths=list(paths), dry_run=dry_run, check=check,
+        exclude=tuple(exclude) + project.exclude, output_dir=output_dir, verify=verify,
+        timeout=timeout or project.timeout or 20.0, ignore_order=ignore_order,
+        ignore_labels=ignore_labels, ontology=ontology_files)
+    if jobs or project.jobs:
+        options.jobs = jobs or project.jobs or 1
+    from .verify.rewrite import verify_migrated
 
-        outcome = run_rewrite(options, index, verifier=verify_migrated)
-    except SystemExit:
-        raise
-    except Exception as error:  # never a raw traceback for the user
-        _fail(f"internal error: {error}", debug)
+    outcome = run_rewrite(options, index, verifier=verify_migrated)
     use_colour = sys.stdout.isatty() if color is None else color
     results = [m.result for m in outcome.migrated]
     for note in outcome.notes:
@@ -241,15 +239,12 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
     from .verify.command import VerifyOptions, run_verify
     from .verify.pool import PoolConfig
 
-    try:
-        project = load_project_config(before)
-        _, ontology_files = _load_index(ontology, before)
-        pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
-                          timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
-        results, unloadable = run_verify(VerifyOptions(
-            before, after, pool, ignore_order, ignore_labels, tuple(exclude) + project.exclude))
-    except Exception as error:  # never a raw traceback for the user
-        _fail(f"internal error: {error}", debug)
+    project = load_project_config(before)
+    _, ontology_files = _load_index(ontology, before)
+    pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
+                      timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
+    results, unloadable = run_verify(VerifyOptions(
+        before, after, pool, ignore_order, ignore_labels, tuple(exclude) + project.exclude))
     for result in results:
         if result.error:
             click.echo(f"{result.path}: {_short(result.error, debug)}", err=True)
@@ -289,14 +284,11 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], jobs: int | None,
     from .runner import default_jobs
     from .verify.pool import PoolConfig
 
-    try:
-        project = load_project_config(paths[0])
-        index, ontology_files = _load_index(ontology, paths[0])
-        pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
-                          timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
-        outcome = run_check(list(paths), index, pool, tuple(exclude) + project.exclude)
-    except Exception as error:  # never a raw traceback for the user
-        _fail(f"internal error: {error}", debug)
+    project = load_project_config(paths[0])
+    index, ontology_files = _load_index(ontology, paths[0])
+    pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
+                      timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
+    outcome = run_check(list(paths), index, pool, tuple(exclude) + project.exclude)
     for message in outcome.messages:
         if not quiet or message.severity == "error":
             click.echo(str(message), err=True)

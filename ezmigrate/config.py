@@ -51,9 +51,20 @@ def load_project_config(start: Path) -> ProjectConfig:
     if not isinstance(section, dict):
         return ProjectConfig()
     exclude = section.get("exclude", [])
-    return ProjectConfig(
-        exclude=tuple(str(e) for e in exclude) if isinstance(exclude, list) else (),
-        jobs=section.get("jobs") if isinstance(section.get("jobs"), int) else None,
-        timeout=float(section["timeout"]) if isinstance(section.get("timeout"), (int, float))
-        else None,
-        source=path)
+    if not (isinstance(exclude, list) and all(isinstance(e, str) for e in exclude)):
+        raise ConfigError(f"{path}: [tool.ezmigrate] exclude must be a list of globs, "
+                          f"not {exclude!r}")
+    jobs, timeout = section.get("jobs"), section.get("timeout")
+    if jobs is not None and (isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1):
+        raise ConfigError(f"{path}: [tool.ezmigrate] jobs must be a whole number of at least "
+                          f"1, not {jobs!r}")
+    if timeout is not None and (isinstance(timeout, bool)
+                                or not isinstance(timeout, (int, float)) or timeout <= 0):
+        raise ConfigError(f"{path}: [tool.ezmigrate] timeout must be a positive number of "
+                          f"seconds, not {timeout!r}")
+    return ProjectConfig(exclude=tuple(exclude), jobs=jobs,
+                         timeout=float(timeout) if timeout is not None else None, source=path)
+
+
+class ConfigError(ValueError):
+    """A ``[tool.ezmigrate]`` value the tool cannot use: a usage error (exit 2), not a guess."""

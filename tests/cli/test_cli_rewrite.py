@@ -204,3 +204,19 @@ def test_a_file_name_that_is_not_utf8_is_migrated_and_reported(tmp_path: Path, s
     assert proc.returncode == 0, proc.stderr
     assert (folder / name).read_bytes() == PICK_MIGRATED.read_bytes()
     assert "caf\\udce9.py" in report.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize(("setting", "complaint"), [
+    ("timeout = -1", "timeout must be a positive number of seconds, not -1"),
+    ("jobs = 0", "jobs must be a whole number of at least 1, not 0"),
+    ('exclude = "legacy"', "exclude must be a list of globs"),
+])
+def test_a_project_setting_the_tool_cannot_use_is_a_usage_error(repo: Path, setting: str,
+                                                                complaint: str):
+    (repo / "pyproject.toml").write_text(f"[tool.ezmigrate]\n{setting}\n", encoding="utf-8")
+    for command in (("rewrite", "--check", repo), ("verify", repo, repo), ("check", repo)):
+        proc = ezmigrate(*command)
+        stderr = proc.stderr.decode()
+        assert proc.returncode == 2, (command, stderr)
+        assert "pyproject.toml: [tool.ezmigrate] " + complaint in stderr, stderr
+        assert "internal error" not in stderr and "Traceback" not in stderr
