@@ -169,8 +169,14 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         from .stdin import rewrite_stdin
 
         index, ontology_files = _load_index(ontology, Path.cwd())
-        sys.exit(rewrite_stdin(index, ontology_files, verify=verify, check=check,
-                               dry_run=dry_run, timeout=timeout or 20.0))
+        data, result = rewrite_stdin(index, ontology_files, verify=verify,
+                                     timeout=timeout or 20.0)
+        _print_result("-", "-", data, result, dry_run, check, color, debug)
+        if not (dry_run or check):  # whatever happened, stdout gets a whole file
+            new = result.new_source
+            sys.stdout.buffer.write(new if isinstance(new, bytes) else data)
+        _finish([result], report, not (dry_run or check), check, [],
+                 MarkdownOptions(verify, ignore_order, ignore_labels))
     from .session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
 
     start = paths[0]
@@ -186,34 +192,45 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     from .verify.rewrite import verify_migrated
 
     outcome = run_rewrite(options, index, verifier=verify_migrated)
-    use_colour = sys.stdout.isatty() if color is None else color
-    results = [m.result for m in outcome.migrated]
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
     for item in outcome.migrated:
-        result = item.result
-        if result.error:
-            click.echo(f"{item.candidate.path}: {_short(result.error, debug)}", err=True)
-        for skill in result.skills:
-            if skill.status in ("skipped", "failed"):
-                click.echo(f"{item.candidate.path}:{skill.line}: {skill.name}: {skill.status}: "
-                           f"{(skill.reason or '').splitlines()[0] if skill.reason else ''}",
-                           err=True)
-        if result.changed and dry_run:
-            assert isinstance(result.new_source, bytes)
-            diff = unified_diff(item.candidate.relative, item.original, result.new_source)
-            click.echo(colour(diff) if use_colour else diff, nl=False)
-        elif result.changed and check:
-            click.echo(f"would rewrite {item.candidate.path}")
+        _print_result(str(item.candidate.path), item.candidate.relative, item.original,
+                      item.result, dry_run, check, color, debug)
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
+    _finish([m.result for m in outcome.migrated], report, options.writes, check,
+            outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels))
+
+
+def _print_result(shown: str, relative: str, original: bytes, result: FileResult,
+                  dry_run: bool, check: bool, color: bool | None, debug: bool) -> None:
+    """One file's problems on stderr; its diff (``--dry-run``) or name (``--check``)."""
+    if result.error:
+        click.echo(f"{shown}: {_short(result.error, debug)}", err=True)
+    for skill in result.skills:
+        if skill.status in ("skipped", "failed"):
+            click.echo(f"{shown}:{skill.line}: {skill.name}: {skill.status}: "
+                       f"{(skill.reason or '').splitlines()[0] if skill.reason else ''}",
+                       err=True)
+    if result.changed and dry_run:
+        assert isinstance(result.new_source, bytes)
+        diff = unified_diff(relative, original, result.new_source)
+        use_colour = sys.stdout.isatty() if color is None else color
+        click.echo(colour(diff) if use_colour else diff, nl=False)
+    elif result.changed and check:
+        click.echo(f"would rewrite {shown}")
+
+
+def _finish(results: list[FileResult], report: Path | None, writes: bool, check: bool,
+            refused: list[str], options: MarkdownOptions) -> NoReturn:
+    """The report, the summary line, and the exit code every ``rewrite`` ends with."""
     if report is not None:
-        _write_report(report, results, MarkdownOptions(verified=verify, ignore_order=ignore_order,
-                                                       ignore_labels=ignore_labels))
+        _write_report(report, results, options)
     summary = Summary.of(results)
-    click.echo(f"ezmigrate: {summary.line(dry=not options.writes)}", err=True)
+    click.echo(f"ezmigrate: {summary.line(dry=not writes)}", err=True)
     would_change = summary.changed_files > 0 and check
-    sys.exit(EXIT_ATTENTION if would_change or summary.needs_attention() or outcome.refused
+    sys.exit(EXIT_ATTENTION if would_change or summary.needs_attention() or refused
              else EXIT_OK)
 
 

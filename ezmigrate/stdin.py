@@ -12,28 +12,19 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
-from .diffs import unified_diff
 from .migrate import Settings, migrate
 from .results import FileResult
 
 
-def rewrite_stdin(index: Any, ontology: tuple[str, ...], *, verify: bool, check: bool,
-                  dry_run: bool, timeout: float) -> int:
-    """Exit code as for files; stdout gets the (possibly unchanged) source or a diff."""
+def rewrite_stdin(index: Any, ontology: tuple[str, ...], *, verify: bool,
+                  timeout: float) -> tuple[bytes, FileResult]:
+    """Stdin's bytes and their result; ``new_source`` is set only when it verified (or
+    verification is off). The command line prints and exits exactly as for a file."""
     data = sys.stdin.buffer.read()
     result = migrate(data, Settings(index=index), "-")
-    if result.error:
-        print(f"-: {result.error}", file=sys.stderr)
-    new = result.new_source if isinstance(result.new_source, bytes) else None
-    if new is not None and verify:
-        new = _verified(data, result, ontology, timeout)
-    if dry_run or check:
-        if new is not None and dry_run:
-            sys.stdout.write(unified_diff("-", data, new))
-        return 1 if new is not None and check else 0 if result.error is None else 1
-    sys.stdout.buffer.write(new if new is not None else data)
-    skipped = any(s.status in ("skipped", "failed") for s in result.skills)
-    return 1 if result.error or skipped or (new is None and result.changed) else 0
+    if isinstance(result.new_source, bytes) and verify:
+        result.new_source = _verified(data, result, ontology, timeout)
+    return data, result
 
 
 def _verified(data: bytes, result: FileResult, ontology: tuple[str, ...],
@@ -54,11 +45,5 @@ def _verified(data: bytes, result: FileResult, ontology: tuple[str, ...],
                                  PoolConfig(workers=2, timeout=timeout, ontology=ontology))
     item = Migrated(Candidate(path, path.parent), data, digest(data), result)
     apply_verdicts(item, before, after, RewriteOptions(paths=[], timeout=timeout))
-    if item.result.new_source is None:
-        why = next((f"{s.name}: {(s.reason or '').splitlines()[0]}" for s in result.skills
-                    if s.status == "failed"), "no description class was loaded")
-        print(f"-: not rewritten: the migrated version could not be verified equivalent "
-              f"({why})", file=sys.stderr)
-        return None
     new = item.result.new_source
     return new if isinstance(new, bytes) else None

@@ -220,3 +220,22 @@ def test_a_project_setting_the_tool_cannot_use_is_a_usage_error(repo: Path, sett
         assert proc.returncode == 2, (command, stderr)
         assert "pyproject.toml: [tool.ezmigrate] " + complaint in stderr, stderr
         assert "internal error" not in stderr and "Traceback" not in stderr
+
+
+def test_stdin_is_a_one_file_run_with_reasons_summary_and_report(tmp_path: Path):
+    """``-`` behaves like a path: skip reasons and the summary on stderr, the report written
+    when asked, the same exit codes; stdout still gets a whole file."""
+    skipped = (FIXTURES / "legacy" / "not_convertible.py").read_bytes()
+    proc = ezmigrate("rewrite", "--no-verify", "-", stdin=skipped, cwd=tmp_path)
+    stderr = proc.stderr.decode()
+    assert proc.returncode == 1 and proc.stdout == skipped
+    assert "-:20: FollowWaypoints: skipped: a loop at line 23" in stderr
+    assert "ezmigrate: 1 files scanned, 10 skills found, 0 converted, 10 skipped" in stderr
+    dry = ezmigrate("rewrite", "--no-verify", "--dry-run", "-", stdin=skipped, cwd=tmp_path)
+    assert dry.returncode == 1 and dry.stdout == b""  # as the same file given by path
+    report = tmp_path / "r.json"
+    check = ezmigrate("rewrite", "--check", "--report", report, "-", stdin=PICK.read_bytes(),
+                      cwd=tmp_path)
+    assert check.returncode == 1 and check.stdout.decode() == "would rewrite -\n"
+    data = json.loads(report.read_text(encoding="utf-8"))
+    assert data["summary"]["converted"] == 3 and data["skills"][0]["file"] == "-"
