@@ -10,6 +10,7 @@ deriving files again with them. Chains across several files resolve in a few rou
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Sequence
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING
@@ -53,27 +54,34 @@ def _matches(exporter: str, target: str) -> bool:
     return name == target or name.endswith("." + target) or target.endswith("." + name)
 
 
+_FROM = re.compile(rb"^[ \t]*from[ \t]+(\.*[\w.]*)[ \t]+import\b", re.MULTILINE)
+
+
 def imported_from(migrated: Sequence[Migrated]) -> dict[str, frozenset[str]]:
     """Relative path of a description file -> names other files import from it (``*``).
 
-    Each file is read once and parsed with ``ast`` (C speed) only when its text names the
-    module of some description file; files of the same root are matched like bases are.
+    Every file is read once; a regular expression finds its ``from X import`` lines, and
+    only a file whose ``X`` ends in the module name of a description file is parsed (with
+    ``ast``) to read the names; the module is then matched like a base's is.
     """
-    holders = [m for m in migrated if m.result.skills or m.result.exports]
-    if not holders:
+    by_stem: dict[str, list[Migrated]] = {}
+    for item in migrated:
+        if item.result.skills or item.result.exports:
+            by_stem.setdefault(dotted(item.candidate.relative).rsplit(".", 1)[-1], []).append(
+                item)
+    if not by_stem:
         return {}
-    stems = {m: dotted(m.candidate.relative).rsplit(".", 1)[-1] for m in holders}
-    words = {os.fsencode(stem) for stem in stems.values() if stem}
+    stems = {os.fsencode(stem) for stem in by_stem}
     found: dict[str, set[str]] = {}
     for item in migrated:
         data = item.original
-        if not any(word in data for word in words):
+        named = {m.rsplit(b".", 1)[-1] for m in _FROM.findall(data)}
+        if not named & stems:
             continue
         for source, names in _from_imports(data):
             target = target_module(item.candidate.relative, source)
-            for holder in holders:
+            for holder in by_stem.get(target.rsplit(".", 1)[-1], ()):
                 if holder is not item and holder.candidate.root == item.candidate.root \
-                        and target.endswith(stems[holder]) \
                         and _matches(holder.candidate.relative, target):
                     found.setdefault(holder.candidate.relative, set()).update(names)
     return {relative: frozenset(names) for relative, names in found.items()}
