@@ -152,7 +152,9 @@ def main() -> None:
               help="Ontology file or folder (repeatable).")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
 @click.option("--output-dir", type=click.Path(path_type=Path, file_okay=False),
-              help="Write migrated copies here instead of in place.")
+              help="Write migrated copies here instead of in place, each at its path "
+                   "relative to the PATH it was found under; a second file with the same "
+                   "relative path (c1/x.py and c2/x.py) is refused, and the run exits 1.")
 @click.option("--verify/--no-verify", default=True, show_default=True,
               help="Load both versions and demand equivalence before writing.")
 @click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file when verifying.")
@@ -164,7 +166,11 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
             output_dir: Path | None, verify: bool, timeout: float | None, ignore_order: bool,
             ignore_labels: bool, color: bool | None, debug: bool) -> None:
-    """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin)."""
+    """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin).
+
+    Temporary files (.NAME.XXXXXXXX.ezmigrate) that a killed run left beside PATHS are
+    listed; a run that writes removes them (they never hold the only copy of anything).
+    """
     if [str(p) for p in paths] == ["-"]:
         from .stdin import rewrite_stdin
 

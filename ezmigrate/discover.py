@@ -15,6 +15,8 @@ from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from .writing import is_temporary_name
+
 ALWAYS_EXCLUDED = frozenset({".git", ".hg", ".svn", "__pycache__", ".venv", "venv", ".tox",
                              ".mypy_cache", ".ruff_cache", ".pytest_cache", "node_modules",
                              "build", "dist", ".eggs"})
@@ -60,8 +62,13 @@ def _inside(real: str, roots: Iterable[str]) -> bool:
 
 
 def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
-             respect_gitignore: bool = True) -> tuple[list[Candidate], list[str]]:
+             respect_gitignore: bool = True,
+             stale: list[Path] | None = None) -> tuple[list[Candidate], list[str]]:
     """All candidate files, sorted and unique, plus messages about what was passed over.
+
+    ``stale`` (when given) collects temporary files of ours (``.NAME.XXXXXXXX.ezmigrate``)
+    found beside the candidates: only a SIGKILLed run leaves them. Discovery only lists
+    them; ``session.run_rewrite`` decides whether to remove them (only when it writes).
 
     Each file's real path (symlinks resolved) is worked out once, from its folder's real
     path, which is resolved once per folder: a tree of 20,000 files costs one ``stat`` per
@@ -78,8 +85,10 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
         if given.is_file():
             if not any(_excluded(name, exclude) for name in _spellings(given)):
                 found.setdefault(os.path.realpath(given), Candidate(given, root))
+                if stale is not None:
+                    stale.extend(_temporaries_of(given))
             continue
-        for file, real in _walk(given, real_roots, notes):
+        for file, real in _walk(given, real_roots, notes, stale):
             candidate = Candidate(file, root)
             if exclude and _excluded(candidate.relative, exclude):
                 continue
@@ -91,8 +100,20 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
     return [c for _, c in ordered], notes
 
 
-def _walk(top: Path, roots: list[str], notes: list[str]) -> Iterator[tuple[Path, str]]:
-    """``.py`` files under ``top`` with their real paths (depth first, names sorted)."""
+def _temporaries_of(file: Path) -> list[Path]:
+    """Our temporary files for ``file`` (``.NAME.XXXXXXXX.ezmigrate`` beside it)."""
+    try:
+        with os.scandir(file.parent) as listing:
+            return sorted(Path(e.path) for e in listing
+                          if e.name.startswith(f".{file.name}.") and is_temporary_name(e.name))
+    except OSError:
+        return []
+
+
+def _walk(top: Path, roots: list[str], notes: list[str],
+          stale: list[Path] | None = None) -> Iterator[tuple[Path, str]]:
+    """``.py`` files under ``top`` with their real paths (depth first, names sorted), and
+    our temporary files into ``stale`` when it is given."""
     seen: set[str] = set()
     stack = [top]
     while stack:
@@ -110,6 +131,10 @@ def _walk(top: Path, roots: list[str], notes: list[str]) -> Iterator[tuple[Path,
             continue
         for entry in entries:
             if entry.name in ALWAYS_EXCLUDED:
+                continue
+            if stale is not None and is_temporary_name(entry.name):
+                if not entry.is_symlink() and entry.is_file(follow_symlinks=False):
+                    stale.append(Path(entry.path))
                 continue
             link = entry.is_symlink()
             target = os.path.realpath(entry.path) if link else os.path.join(real, entry.name)

@@ -22,7 +22,7 @@ from . import interrupt
 from .discover import Candidate, discover
 from .package import migrate_package
 from .runner import Migrated, default_jobs
-from .writing import WriteRefused, atomic_write
+from .writing import WriteRefused, atomic_write, remove_stale_temporary
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -70,7 +70,9 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
 
     Raises ``interrupt.Interrupted`` when a signal stops the run (see the module doc).
     """
-    candidates, notes = discover(options.paths, options.exclude)
+    stale: list[Path] = []
+    candidates, notes = discover(options.paths, options.exclude, stale=stale)
+    notes += _stale_notes(stale, options.writes)
     migrated = migrate_package(candidates, index, options.jobs)
     outcome = RewriteOutcome(migrated, notes)
     if options.verify and verifier is not None:
@@ -79,10 +81,20 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
         return outcome
     interrupt.track(outcome.written, [i.candidate.relative for i in migrated
                                       if i.result.changed])
+    copies: dict[Path, Path] = {}  # --output-dir: target -> the source written there
     for item in migrated:
         content = _content(item, options.output_dir)  # a copy is read only now
         if content is None:
             continue
+        target = _target(item.candidate, options.output_dir)
+        if target is not None:
+            first = copies.setdefault(target, item.candidate.path)
+            if first != item.candidate.path:
+                _refuse(item, outcome, f"{item.candidate.path}: its copy {target} would "
+                        f"overwrite the copy of {first} (both are {item.candidate.relative} "
+                        "under the paths given), not written; give each its own "
+                        "--output-dir")
+                continue
         interrupt.check()
         with interrupt.deferred():
             _write(item, content, options, outcome, on_written)
@@ -97,6 +109,26 @@ def _content(item: Migrated, output_dir: Path | None) -> bytes | None:
     if item.result.error is not None and item.original == b"":
         return None  # unreadable: nothing to copy
     return data if isinstance(data, bytes) else item.original
+
+
+def _stale_notes(stale: list[Path], writes: bool) -> list[str]:
+    """Say what became of temporary files a killed run left; remove them only when writing.
+
+    Removing one loses nothing (see ``writing.remove_stale_temporary``), but ``--dry-run``
+    and ``--check`` promise to write nothing, so there they are only listed.
+    """
+    notes = []
+    for path in stale:
+        if not writes:
+            notes.append(f"{path}: temporary file left by an interrupted run (its original "
+                         "is whole); a run that writes removes it")
+        elif remove_stale_temporary(path):
+            notes.append(f"{path}: removed, a temporary file left by an interrupted run "
+                         "(its original is whole)")
+        else:
+            notes.append(f"{path}: temporary file in use by another running ezmigrate, "
+                         "left alone")
+    return notes
 
 
 def _target(candidate: Candidate, output_dir: Path | None) -> Path | None:

@@ -15,8 +15,10 @@ was given; otherwise the target is left alone.
 
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import os
+import re
 import stat
 import tempfile
 from collections.abc import Sequence
@@ -76,7 +78,6 @@ def atomic_write(path: Path, data: bytes, expected_digest: str | None = None, *,
     if info is not None:
         if not stat.S_ISREG(info.st_mode):
             raise WriteRefused(f"{path}: no longer a regular file, left alone")
-        _check_unchanged(path, target, expected_digest)
         mode = stat.S_IMODE(info.st_mode)
         if not mode & stat.S_IWUSR or not os.access(target, os.W_OK):
             raise WriteRefused(f"{path}: read-only, left alone")
@@ -84,7 +85,7 @@ def atomic_write(path: Path, data: bytes, expected_digest: str | None = None, *,
         umask = os.umask(0)
         os.umask(umask)
         mode = 0o666 & ~umask
-    _replace(path, target, data, mode, info)
+    _replace(path, target, data, mode, info, expected_digest)
 
 
 def _check_unchanged(path: Path, target: Path, expected_digest: str | None) -> None:
@@ -101,7 +102,15 @@ def _check_unchanged(path: Path, target: Path, expected_digest: str | None) -> N
 
 
 def _replace(path: Path, target: Path, data: bytes, mode: int,
-             info: os.stat_result | None) -> None:
+             info: os.stat_result | None, expected_digest: str | None) -> None:
+    """Write ``data`` to a locked temporary file, then rename it over ``target``.
+
+    The content check comes last, right before the rename, after the slow part (writing
+    and ``fsync``): an edit saved while we flushed is still seen. The temporary file stays
+    locked (``flock``) until it is renamed or removed, which is how a later run tells a
+    temporary file left by a killed run (unlocked: safe to remove) from one a running
+    ezmigrate is still writing (locked: left alone), see ``remove_stale_temporary``.
+    """
     folder = target.parent
     try:
         fd, temp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=TEMP_SUFFIX, dir=folder)
@@ -109,19 +118,22 @@ def _replace(path: Path, target: Path, data: bytes, mode: int,
         raise WriteRefused(f"{path}: cannot create a temporary file in {folder} "
                            f"({error.strerror})") from error
     try:
-        try:
-            with os.fdopen(fd, "wb") as handle:
+        with os.fdopen(fd, "wb") as handle:
+            try:
+                with suppress(OSError):  # a file system without locks: no stale detection
+                    fcntl.flock(handle.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
                 handle.write(data)
                 handle.flush()
                 os.fsync(handle.fileno())
-            os.chmod(temp, mode)
-            if info is not None and (info.st_uid, info.st_gid) != _owner(temp):
-                with suppress(OSError):  # only root may give a file away
-                    os.chown(temp, info.st_uid, info.st_gid)
-            os.replace(temp, target)
-        except OSError as error:
-            raise WriteRefused(f"{path}: could not be written ({error.strerror}), "
-                               "left as it was") from error
+                os.chmod(temp, mode)
+                if info is not None and (info.st_uid, info.st_gid) != _owner(temp):
+                    with suppress(OSError):  # only root may give a file away
+                        os.chown(temp, info.st_uid, info.st_gid)
+                _check_unchanged(path, target, expected_digest)
+                os.replace(temp, target)
+            except OSError as error:
+                raise WriteRefused(f"{path}: could not be written ({error.strerror}), "
+                                   "left as it was") from error
     except BaseException:
         with suppress(OSError):
             os.unlink(temp)
@@ -143,6 +155,43 @@ def _sync_folder(folder: Path) -> None:
     try:
         with suppress(OSError):
             os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
+TEMP_NAME = re.compile(r"\A\..+\.[a-z0-9_]{8}" + re.escape(TEMP_SUFFIX) + r"\Z", re.S)
+"""Names ``_replace`` gives its temporary files (``tempfile.mkstemp``'s 8 random characters)."""
+
+
+def is_temporary_name(name: str) -> bool:
+    """Whether ``name`` is one of our temporary file names (never a ``.py`` file)."""
+    return TEMP_NAME.match(name) is not None
+
+
+def remove_stale_temporary(path: Path) -> bool:
+    """Remove a temporary file of ours that no running write holds; ``False``: left alone.
+
+    Safe because such a file is never the only copy of anything: ``os.replace`` either
+    happened (then this name is gone) or not (then the original is whole and the file holds
+    a migration that the next run computes again). A live writer keeps its temporary file
+    locked until the rename, so a lock we can take means its writer is gone (SIGKILL, power
+    cut). Symlinks and anything but a regular file are left alone.
+    """
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    except OSError:
+        return False
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        opened = os.fstat(fd)
+        named = os.lstat(path)
+        if not stat.S_ISREG(opened.st_mode) or (opened.st_dev, opened.st_ino) != (
+                named.st_dev, named.st_ino):
+            return False
+        os.unlink(path)
+        return True
+    except OSError:  # locked by a running write, or gone meanwhile
+        return False
     finally:
         os.close(fd)
 

@@ -198,15 +198,13 @@ def _own_expressions(
 def _effective(
     iri: str, own: dict[str, tuple[ClassExpr, ...]], parents: dict[str, set[str]]
 ) -> tuple[tuple[ClassExpr, ...], tuple[str, ...]]:
-    """Own expressions, else those of the nearest super-properties that declare any.
+    """Own expressions plus those of every super-property (in a stable order).
 
-    Walks up breadth-first through every branch that has none of its own, so a property
-    under two annotated parents gets both (they must all hold, like several rdfs:domain).
+    RDFS: ``x P y`` with ``P subPropertyOf Q`` entails ``x Q y``, so ``Q``'s domain and range
+    hold for ``P`` too (rdfs7 with rdfs2/rdfs3); like several ``rdfs:domain``, all must hold.
     """
-    if iri in own:
-        return own[iri], (iri,)
-    collected: list[ClassExpr] = []
-    sources: list[str] = []
+    collected: list[ClassExpr] = list(own.get(iri, ()))
+    sources: list[str] = [iri] if iri in own else []
     seen = {iri}
     frontier = sorted(parents.get(iri, ()))
     while frontier:
@@ -218,8 +216,7 @@ def _effective(
             if parent in own:
                 collected.extend(own[parent])
                 sources.append(parent)
-            else:
-                upper.extend(sorted(parents.get(parent, ())))
+            upper.extend(sorted(parents.get(parent, ())))
         frontier = upper
     return _ordered_unique(collected), tuple(sources)
 

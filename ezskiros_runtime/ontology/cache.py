@@ -28,7 +28,7 @@ if TYPE_CHECKING:
     from .index import OntologyIndex
     from .loading import OntologyFile
 
-CACHE_FORMAT_VERSION = "1"
+CACHE_FORMAT_VERSION = "2"  # 2: sub-properties add their parents' domains and ranges
 """Bump when the pickled shape of the index changes incompatibly."""
 
 _INDEX_CODE = (

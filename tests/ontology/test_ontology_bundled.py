@@ -96,8 +96,8 @@ def test_paper_domain_and_range_of_has_a(bundled: OntologyIndex) -> None:
 def test_robot_part_agent_and_state_property(bundled: OntologyIndex) -> None:
     robot_part = bundled.property(CORA + "robotPart")
     assert robot_part is not None
-    assert robot_part.domains == (Named(SUMO + "Device"),)
-    assert robot_part.ranges == (Named(CORA + "Robot"),)
+    assert robot_part.domains == (Named(SUMO + "Device"), Named(SUMO + "Object"))  # + sumo:part
+    assert robot_part.ranges == (Named(CORA + "Robot"), Named(SUMO + "Object"))
     assert bundled.is_class(SUMO + "Agent")  # type of SkiROS2's automatic Robot parameter
     state = bundled.property(SKIROS + "StateProperty")
     assert state is not None and state.kind == "data"

@@ -165,10 +165,12 @@ def test_inherits_through_two_levels(workcell: OntologyIndex) -> None:
     assert touches.ranges == (Named(WC + "Part"),)
 
 
-def test_own_domain_wins_range_still_inherited(workcell: OntologyIndex) -> None:
+def test_own_domain_adds_to_the_inherited_ones(workcell: OntologyIndex) -> None:
+    """RDFS: ``x holds y`` entails ``x related y``, so related's domain binds holds too."""
     holds = _prop(workcell, WC + "holds")
-    assert holds.domains == (Named(WC + "Hand"),)
-    assert holds.domain_sources == (WC + "holds",)
+    related = _prop(workcell, WC + "related")
+    assert holds.domains == (Named(WC + "Hand"), *related.domains)
+    assert holds.domain_sources == (WC + "holds", WC + "related")
     assert holds.ranges == (Named(WC + "Part"),)
 
 

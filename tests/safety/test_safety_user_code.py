@@ -126,6 +126,10 @@ def test_reasons_say_what_the_module_did(hostile_run):
     assert "ValueError: configuration missing" in reason("prints_fake_traceback.py")
     assert "sys.exit" in reason("calls_sys_exit.py")
     assert "RuntimeError: cell configuration not found" in reason("raises_on_import.py")
+    # 4 GiB under the 2 GiB cap: the allocation fails inside the child, not the machine
+    assert "MemoryError" in reason("allocates_memory.py"), _skills(data, "allocates_memory.py")
+    assert {s["class"]: s["status"] for s in _skills(data, "allocates_memory.py")} == {
+        "BuildMap": "failed", "SaveMap": "converted"}
 
 
 def test_forged_protocol_lines_are_not_believed(hostile_run):
