@@ -7,11 +7,14 @@ spawns workers with ``subprocess`` (fork+exec), so its own threads are safe.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import queue
+import signal
 import subprocess
 import sys
 import threading
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -29,15 +32,60 @@ class PoolConfig:
     ontology: tuple[str, ...] = ()
 
 
+class _Stopped(Exception):
+    """The pool is stopping: no new worker starts."""
+
+
+class _Crew:
+    """Every worker process the pool started, so that an interrupt or an error stops all.
+
+    A worker told to stop (SIGTERM) kills its current child's whole process group before it
+    exits (``zygote.run_job``); a worker that does not exit in time is killed.
+    """
+
+    GRACE = 5.0
+    """Seconds a worker gets to kill its child and exit before it is killed itself."""
+
+    def __init__(self) -> None:
+        self.lock = threading.Lock()
+        self.processes: list[subprocess.Popen[str]] = []
+        self.stopping = False
+
+    def spawn(self, args: list[str]) -> subprocess.Popen[str]:
+        with self.lock:  # a worker is either recorded here or never started
+            if self.stopping:
+                raise _Stopped
+            process = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                       stderr=subprocess.DEVNULL, text=True, bufsize=1)
+            self.processes.append(process)
+            return process
+
+    def stop(self) -> None:
+        """Stop every worker (and so their children); never raises."""
+        with self.lock:
+            self.stopping = True
+            processes = list(self.processes)
+        for process in processes:
+            with contextlib.suppress(OSError):
+                process.send_signal(signal.SIGTERM)
+        deadline = time.monotonic() + self.GRACE
+        for process in processes:
+            try:
+                process.wait(timeout=max(0.0, deadline - time.monotonic()))
+            except subprocess.TimeoutExpired:
+                with contextlib.suppress(OSError):
+                    process.kill()
+                    process.wait()
+
+
 class _Worker:
-    def __init__(self, config: PoolConfig) -> None:
+    def __init__(self, config: PoolConfig, crew: _Crew) -> None:
         self.config = config
         args = [sys.executable, "-m", "ezmigrate.verify.zygote", "--timeout",
                 str(config.timeout), "--memory-mb", str(config.memory_mb)]
         for path in config.ontology:
             args += ["--ontology", path]
-        self.process = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                        stderr=subprocess.DEVNULL, text=True, bufsize=1)
+        self.process = crew.spawn(args)
         ready = self.process.stdout.readline() if self.process.stdout else ""
         if '"ready"' not in ready:
             raise RuntimeError("a verification worker failed to start")
@@ -67,12 +115,17 @@ class _Worker:
 
 def run_jobs(jobs: Sequence[LoadJob], config: PoolConfig,
              progress: Callable[[int, LoadOutcome], None] | None = None) -> list[LoadOutcome]:
-    """Run every job on the pool; outcomes in job order."""
+    """Run every job on the pool; outcomes in job order.
+
+    An interrupt or error while they run stops every worker and their children before it
+    propagates: a module looping at import must not outlive the run until its timeout.
+    """
     results: list[LoadOutcome | None] = [None] * len(jobs)
     todo: queue.Queue[int] = queue.Queue()
     for index in range(len(jobs)):
         todo.put(index)
     lock = threading.Lock()
+    crew = _Crew()
 
     def serve() -> None:
         worker: _Worker | None = None
@@ -83,7 +136,10 @@ def run_jobs(jobs: Sequence[LoadJob], config: PoolConfig,
                 except queue.Empty:
                     return
                 if worker is None:
-                    worker = _Worker(config)
+                    try:
+                        worker = _Worker(config, crew)
+                    except _Stopped:
+                        return
                 outcome = worker.run(jobs[index])
                 if outcome is None:  # the worker died: replace it, report this file
                     worker.close()
@@ -100,10 +156,14 @@ def run_jobs(jobs: Sequence[LoadJob], config: PoolConfig,
 
     count = max(1, min(config.workers, len(jobs)))
     threads = [threading.Thread(target=serve, daemon=True) for _ in range(count)]
-    for thread in threads:
-        thread.start()
-    for thread in threads:
-        thread.join()
+    try:
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            thread.join()
+    except BaseException:  # Interrupted (a signal), KeyboardInterrupt, anything
+        crew.stop()
+        raise
     return [r if r is not None else LoadOutcome("crashed", "no result") for r in results]
 
 

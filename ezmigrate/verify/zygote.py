@@ -35,8 +35,18 @@ from .child import run_child
 from .protocol import LoadJob, LoadOutcome
 
 
-def _wait(pid: int, timeout: float) -> int | None:
-    """The child's wait status, or ``None`` if it was still running at the timeout."""
+class ParentGone(Exception):
+    """The pool hung up our stdin (it stopped or died): end the job, serve no more."""
+
+
+def _wait(pid: int, timeout: float, watch: int | None = None) -> bool:
+    """Whether the child ended within ``timeout``. It is left unreaped (``WNOWAIT``), so its
+    pid still names its process group when ``_end`` kills that group.
+
+    ``watch`` is our end of the pool's pipe: when every writer has gone (the pool stopped,
+    or ezmigrate was killed, even by SIGKILL) it hangs up and ``ParentGone`` is raised, so
+    a child looping in user code is stopped at once, not when its timeout expires.
+    """
     deadline = time.monotonic() + timeout
     pidfd = None
     if hasattr(os, "pidfd_open"):
@@ -44,21 +54,55 @@ def _wait(pid: int, timeout: float) -> int | None:
             pidfd = os.pidfd_open(pid)
         except OSError:
             pidfd = None
+    poller = select.poll()
+    if pidfd is not None:
+        poller.register(pidfd, select.POLLIN)
+    if watch is not None:
+        poller.register(watch, 0)  # data never wakes us; a hang-up always does
     try:
         while True:
-            done, status = os.waitpid(pid, os.WNOHANG)
-            if done:
-                return status
+            if os.waitid(os.P_PID, pid, os.WEXITED | os.WNOHANG | os.WNOWAIT) is not None:
+                return True
             remaining = deadline - time.monotonic()
             if remaining <= 0:
-                return None
-            if pidfd is not None:
-                select.select([pidfd], [], [], remaining)
-            else:
-                time.sleep(min(remaining, 0.002))
+                return False
+            step = remaining if pidfd is not None else min(remaining, 0.002)
+            for fd, events in poller.poll(step * 1000):
+                if fd == watch and events & (select.POLLHUP | select.POLLERR):
+                    raise ParentGone
     finally:
         if pidfd is not None:
             os.close(pidfd)
+
+
+def _own_group() -> None:
+    """In a new child: lead a process group of its own, with the default signal handlers.
+
+    Whatever the user's module forks joins that group, so killing the group (``_end``)
+    leaves no orphan; the worker's handlers (``_stop``) must not run in user code.
+    """
+    with contextlib.suppress(OSError):
+        os.setpgid(0, 0)
+    for signum in (signal.SIGTERM, signal.SIGHUP):
+        signal.signal(signum, signal.SIG_DFL)
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
+def _end(pid: int) -> int:
+    """Kill the child and everything in its process group, then reap it: its wait status.
+
+    The group is killed while the child is unreaped, so its id cannot have been reused.
+    """
+    with contextlib.suppress(OSError):
+        os.killpg(pid, signal.SIGKILL)
+    with contextlib.suppress(OSError):
+        os.kill(pid, signal.SIGKILL)  # in case it could not get a group of its own
+    return os.waitpid(pid, 0)[1]
+
+
+def _stop(signum: int, _frame: object) -> None:
+    """SIGTERM, SIGHUP or SIGINT in the worker: unwind, so ``run_job`` kills the child."""
+    raise SystemExit(128 + signum)
 
 
 def _scratch_base() -> str | None:
@@ -77,8 +121,14 @@ def _scratch_base() -> str | None:
 _SCRATCH_BASE = _scratch_base()
 
 
-def run_job(job: LoadJob, timeout: float, memory_bytes: int | None) -> LoadOutcome:
-    """Fork a child for ``job``, wait for it, and read what it reported."""
+def run_job(job: LoadJob, timeout: float, memory_bytes: int | None,
+            watch: int | None = None) -> LoadOutcome:
+    """Fork a child for ``job``, wait for it, and read what it reported.
+
+    The child and whatever it forked are killed when it times out, when it is done (a
+    daemon its module started must not outlive the load), and when the worker stops (a
+    signal, ``ParentGone`` from ``watch``), so nothing of a job ever outlives it.
+    """
     with tempfile.TemporaryDirectory(prefix="ezmigrate-", dir=_SCRATCH_BASE) as scratch:
         result = os.path.join(scratch, "result.json")
         out = os.path.join(scratch, "stdout")
@@ -88,11 +138,18 @@ def run_job(job: LoadJob, timeout: float, memory_bytes: int | None) -> LoadOutco
         started = time.perf_counter()
         pid = os.fork()
         if pid == 0:  # the child never returns from here
-            run_child(job, result, out, err, memory_bytes)
-        status = _wait(pid, timeout)
-        if status is None:
-            os.kill(pid, signal.SIGKILL)
-            os.waitpid(pid, 0)
+            try:
+                _own_group()
+            finally:
+                run_child(job, result, out, err, memory_bytes)
+        with contextlib.suppress(OSError):  # here too: killpg must find it from now on
+            os.setpgid(pid, pid)
+        ended = False
+        try:
+            ended = _wait(pid, timeout, watch)
+        finally:
+            status = _end(pid)
+        if not ended:
             outcome = LoadOutcome("timeout", f"loading took longer than {timeout:g} s and "
                                   "was stopped")
         else:
@@ -189,6 +246,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--timeout", type=float, default=20.0)
     parser.add_argument("--memory-mb", type=int, default=2048)
     args = parser.parse_args(argv)
+    for signum in (signal.SIGTERM, signal.SIGHUP, signal.SIGINT):
+        signal.signal(signum, _stop)
     os.environ["EZSKIROS_BACKEND"] = "legacy"
     from ezskiros_runtime.ontology.active import use_ontology
     from ezskiros_runtime.ontology.index import load_index
@@ -214,7 +273,10 @@ def main(argv: list[str] | None = None) -> int:
         if not line.strip():
             continue
         job = LoadJob.from_json(json.loads(line))
-        outcome = run_job(job, args.timeout, memory)
+        try:
+            outcome = run_job(job, args.timeout, memory, watch=sys.stdin.fileno())
+        except ParentGone:
+            return 0
         print(json.dumps(outcome.to_json()), file=protocol_out, flush=True)
     return 0
 

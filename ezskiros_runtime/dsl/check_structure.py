@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..model import typed
 from ..notation import render_condition
 from .check_context import ROBOT_KEY, CheckContext
 from .collectors import Recorded
@@ -79,6 +80,24 @@ def check_contradictions(ctx: CheckContext) -> None:
                 f"{record.which}-condition {render_condition(cond.to_model())} contradicts "
                 f"line {first.line}, which requires the opposite: it can never be met",
                 record.file, record.line, param=cond.subject, relation=cond.vocabulary)
+    _check_equal_values(ctx)
+
+
+def _check_equal_values(ctx: CheckContext) -> None:
+    """One list cannot want a property equal to two different values (``L.Open == True``
+    and ``L.Open == False``): SkiROS2 compares the property's one value with each."""
+    wanted: dict[tuple[str, str | None, str | None], Recorded] = {}
+    for record in ctx.trace.recorded:
+        cond = record.condition
+        if cond.kind != "property" or cond.operator != "=" or cond.desired is not True:
+            continue
+        first = wanted.setdefault((record.which, cond.vocabulary, cond.subject), record)
+        if first is not record and typed(first.condition.value) != typed(cond.value):
+            ctx.add("contradiction",
+                    f"{record.which}-condition {render_condition(cond.to_model())} wants "
+                    f"{cond.vocabulary} of {cond.subject} to be {cond.value!r}, but line "
+                    f"{first.line} wants {first.condition.value!r}: it can never be met",
+                    record.file, record.line, param=cond.subject, relation=cond.vocabulary)
 
 
 __all__ = ["check_contradictions", "check_declared", "check_defaults", "check_inferable"]

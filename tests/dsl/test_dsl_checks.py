@@ -292,6 +292,28 @@ def test_the_same_condition_wanted_and_unwanted_in_one_list_is_a_contradiction()
         f"contradicts line {first}, which requires the opposite: it can never be met")
 
 
+def test_one_property_wanted_equal_to_two_values_in_one_list_is_a_contradiction():
+    class Skill(SkillDescription):
+        def description(self, L: skiros.Location):
+            self.pre_conditions += L.PublishTf == True  # noqa: E712
+            self.post_conditions += L.PublishTf == False  # noqa: E712 - pre and post differ
+            self.pre_conditions += L.PublishTf == False  # noqa: E712
+
+    finding = only(Skill)
+    assert (finding.kind, finding.severity) == ("contradiction", "error")
+    assert finding.line == line_of("self.pre_conditions += L.PublishTf == False", HERE)
+    first = line_of("self.pre_conditions += L.PublishTf == True", HERE)
+    assert f"wants skiros:PublishTf of L to be False, but line {first} wants True" in \
+        finding.message
+
+    class Fine(SkillDescription):
+        def description(self, L: skiros.Location):
+            self.pre_conditions += L.PublishTf == True  # noqa: E712
+            self.pre_conditions += ~ (L.PublishTf == False)  # noqa: E712 - not equal: fine
+
+    assert check(Fine) == []
+
+
 def test_a_condition_on_an_undeclared_key_is_kept_and_reported():
     class Skill(SkillDescription):
         def description(self, A: skiros.Location):
