@@ -89,6 +89,21 @@ class DescriptionError(TypeError):
     """
 
 
+class UnknownPrefixError(ImportError):
+    """``from ezskiros_runtime.ontology import skirso``: no such prefix in the ontology.
+
+    An ``ImportError``, not an ``AttributeError``: Python replaces an ``AttributeError``
+    raised during ``from ... import`` by its own message, which would drop the "did you
+    mean". (``hasattr`` on the ontology *module* therefore raises for unknown prefixes;
+    namespaces such as ``skiros`` keep ``AttributeError`` for unknown classes.)
+    """
+
+    def __init__(self, message: str, *, name: str, suggestions: Iterable[str] = ()) -> None:
+        super().__init__(message, name="ezskiros_runtime.ontology")
+        self.prefix = name
+        self.suggestions = tuple(suggestions)
+
+
 class UnknownVocabularyError(AttributeError):
     """A namespace or ontology-module attribute names nothing the active ontology defines.
 

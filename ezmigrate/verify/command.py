@@ -10,8 +10,8 @@ from ..prefilter import may_hold_descriptions
 from ..results import FileResult, SkillResult, SkillStatus
 from .compare_files import class_sources, compare_outcomes, load_failure
 from .pool import PoolConfig, job_for, run_jobs
-from .protocol import LoadJob
-from .rewrite import rejections
+from .protocol import LoadJob, LoadOutcome
+from .rewrite import attach_findings, capture, rejections
 
 
 @dataclass(frozen=True)
@@ -26,11 +26,30 @@ class VerifyOptions:
     exclude: tuple[str, ...] = ()
 
 
-def _pairs(options: VerifyOptions) -> list[tuple[str, Path | None, Path | None]]:
-    if options.before.is_file() or options.after.is_file():
-        return [(options.after.name, options.before, options.after)]
-    old, _ = discover([options.before], options.exclude)
-    new, _ = discover([options.after], options.exclude)
+class PathsMismatch(ValueError):
+    """BEFORE and AFTER cannot be paired: a file against a folder without that file."""
+
+
+def _sides(options: VerifyOptions) -> tuple[Path, Path]:
+    """The two paths to compare. A file against a folder means the file of that name in
+    the folder (``verify old/skill.py new/``), as ``diff`` and ``cp`` read it."""
+    before, after = options.before, options.after
+    if before.is_dir() == after.is_dir():
+        return before, after
+    file, folder = (after, before) if before.is_dir() else (before, after)
+    inside = folder / file.name
+    if not inside.is_file():
+        raise PathsMismatch(f"cannot compare the file {file} with the folder {folder}: "
+                            f"{inside} does not exist (give two files or two folders)")
+    return (inside, after) if before.is_dir() else (before, inside)
+
+
+def _pairs(before: Path, after: Path,
+           exclude: tuple[str, ...]) -> list[tuple[str, Path | None, Path | None]]:
+    if not before.is_dir():
+        return [(after.name, before, after)]
+    old, _ = discover([before], exclude)
+    new, _ = discover([after], exclude)
     old_map = {c.relative: c.path for c in old}
     new_map = {c.relative: c.path for c in new}
     return [(rel, old_map.get(rel), new_map.get(rel))
@@ -55,22 +74,32 @@ def _nothing_to_compare(old: Path | None, new: Path | None) -> bool:
         return False  # the load reports why the file cannot be read
 
 
+def _same_bytes(old: Path, new: Path) -> bool:
+    try:
+        return old.read_bytes() == new.read_bytes()
+    except OSError:
+        return False
+
+
 def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
-    """Per-file results, and whether some file could not be loaded at all."""
-    pairs = _pairs(options)
+    """Per-file results, and whether some file could not be loaded at all.
+
+    Raises ``PathsMismatch`` when a file is given against a folder that lacks it.
+    """
+    before_path, after_path = _sides(options)
+    roots = (before_path, after_path) if before_path.is_dir() else (None, None)
+    pairs = _pairs(before_path, after_path, options.exclude)
     skipped = {index for index, (_, old, new) in enumerate(pairs)
                if _nothing_to_compare(old, new)}
     jobs: list[LoadJob] = []
     slots: list[int] = []
     for index, (_, old, new) in enumerate(pairs):
-        for path, root in ((old, options.before), (new, options.after)):
-            if index in skipped:
+        for path, root in ((old, roots[0]), (new, roots[1])):
+            if index in skipped or path is None:
                 slots.append(-1)
-            elif path is not None:
-                slots.append(len(jobs))
-                jobs.append(job_for(path, None, root if root.is_dir() else None))
             else:
-                slots.append(-1)
+                slots.append(len(jobs))
+                jobs.append(job_for(path, None, root))
     outcomes = run_jobs(jobs, options.pool)
     results: list[FileResult] = []
     unloadable = False
@@ -86,30 +115,50 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
         before = outcomes[slots[2 * index]]
         after = outcomes[slots[2 * index + 1]]
         if not before.loaded or not after.loaded:
+            capture(result.notes, before, after)
+            if _same_bytes(old, new):  # nothing was migrated: a note, not an error
+                result.notes.insert(0, "unchanged, not loadable: "
+                                    + load_failure("unchanged", before))
+                continue
             unloadable = True
             side, outcome = ("legacy", before) if not before.loaded else ("migrated", after)
             result.error = load_failure(side, outcome)
             result.error_line = outcome.line
             continue
-        old_bytes, new_bytes = old.read_bytes(), new.read_bytes()
-        old_classes, new_classes = class_sources(old_bytes), class_sources(new_bytes)
-        for verdict in compare_outcomes(before, after, ignore_order=options.ignore_order,
-                                        ignore_labels=options.ignore_labels):
-            status: SkillStatus = ("unchanged" if old_bytes == new_bytes else "converted") \
-                if verdict.equivalent else "failed"
-            reason = None if verdict.equivalent else verdict.message
-            rejected = rejections(verdict.name, after) if verdict.equivalent else []
-            if rejected and old_bytes != new_bytes:  # means the same, yet will not load
-                status, reason = "failed", ("EzSkiROS rejects the migrated class when it "
-                                            "loads: " + "; ".join(rejected))
-            if verdict.verdict == "unverified":  # loads in neither version: nothing to compare
-                same = old_classes.get(verdict.name) == new_classes.get(verdict.name) is not None
-                status = "unchanged" if same else "failed"
-                reason = (f"{verdict.message} (its source is unchanged)" if same
-                          else f"not verified: {verdict.message}")
-            results[-1].skills.append(SkillResult(
-                verdict.name, verdict.line_after or verdict.line_before or 0, status, reason,
-                equivalent=None if verdict.verdict == "unverified" or rejected
-                else verdict.equivalent,
-                diff=verdict.diff or None))
+        result.skills = _compare(old.read_bytes(), new.read_bytes(), before, after, options)
+        attach_findings(result.skills, after, skip=frozenset())
     return results, unloadable
+
+
+def _compare(old_bytes: bytes, new_bytes: bytes, before: LoadOutcome, after: LoadOutcome,
+             options: VerifyOptions) -> list[SkillResult]:
+    """One result per class of a file that loaded in both versions.
+
+    A class equivalent to its legacy original that the EzSkiROS runtime would refuse to
+    load (an error-level finding) fails: the legacy one loaded in SkiROS2, the migrated one
+    will not load on the robot. When the runtime refuses both versions the same way (the
+    same EzSkiROS file on both sides), nothing was broken by migrating: a finding only.
+    """
+    old_classes, new_classes = class_sources(old_bytes), class_sources(new_bytes)
+    skills = []
+    for verdict in compare_outcomes(before, after, ignore_order=options.ignore_order,
+                                    ignore_labels=options.ignore_labels):
+        status: SkillStatus = ("unchanged" if old_bytes == new_bytes else "converted") \
+            if verdict.equivalent else "failed"
+        reason = None if verdict.equivalent else verdict.message
+        rejected = rejections(verdict.name, after) \
+            if verdict.equivalent and not rejections(verdict.name, before) else []
+        if rejected:  # means the same, yet will not load
+            status, reason = "failed", ("EzSkiROS rejects the migrated class when it "
+                                        "loads: " + "; ".join(rejected))
+        if verdict.verdict == "unverified":  # loads in neither version: nothing to compare
+            same = old_classes.get(verdict.name) == new_classes.get(verdict.name) is not None
+            status = "unchanged" if same else "failed"
+            reason = (f"{verdict.message} (its source is unchanged)" if same
+                      else f"not verified: {verdict.message}")
+        skills.append(SkillResult(
+            verdict.name, verdict.line_after or verdict.line_before or 0, status, reason,
+            equivalent=None if verdict.verdict == "unverified" or rejected
+            else verdict.equivalent,
+            diff=verdict.diff or None))
+    return skills

@@ -9,6 +9,9 @@ the file keeps its old content and its other converted skills are reported as no
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import Any
+
+from ezskiros_runtime.dsl.policy import severity_of
 
 from ..results import Finding, SkillResult
 from ..runner import Migrated
@@ -121,7 +124,7 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
         side, outcome = ("legacy", before) if not before.loaded else ("migrated", after)
         for skill in converted:
             _fail(skill, load_failure(side, outcome))
-        _capture(result.notes, before, after)
+        capture(result.notes, before, after)
         result.new_source = None
         return {}
     verdicts = {v.name: v for v in compare_outcomes(
@@ -147,7 +150,7 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
             all_ok = False
             _fail(skill, "not verified: the class was not found when loading the file "
                   "(is it defined conditionally?)")
-    _attach_findings(result.skills, after)
+    attach_findings(result.skills, after)
     for skill in converted:
         if skill.status == "converted" and _refuse_rejected(skill, after):
             all_ok = False
@@ -182,32 +185,54 @@ def _reason(verdict: ClassVerdict) -> str:
     return verdict.message
 
 
-def rejections(skill: str, outcome: LoadOutcome) -> list[str]:
-    """The messages of the error-level findings of ``skill`` in a load, once each.
+def rejects(finding: dict[str, Any]) -> bool:
+    """Whether the EzSkiROS runtime refuses to load a skill with this finding.
 
-    The child loads modules while only collecting findings; on the robot these findings
-    make the runtime raise ``SkillTypeError`` and the skill does not load at all.
+    The child loads modules under ``collecting()``, which records findings instead of
+    raising; the runtime stamps each with ``severity_of(kind)`` in that child, under the
+    same policy (and ``EZSKIROS_STRICT``) the robot applies. A finding without a severity
+    is judged here by the same policy, never by a list of kinds of our own.
+    """
+    severity = finding.get("severity") or severity_of(str(finding.get("kind", "")))
+    return severity == "error"
+
+
+def rejections(skill: str, outcome: LoadOutcome, line: str = "line {}") -> list[str]:
+    """The error-level findings of ``skill`` in a load, each with its line, once each.
+
+    On the robot these findings make the runtime raise ``SkillTypeError``: the skill does
+    not load at all. ``line`` words the line number (whose file it is depends on the caller).
     """
     return list(dict.fromkeys(
-        str(data.get("message", "")) for data in outcome.findings
-        if data.get("skill") == skill and data.get("severity") == "error"))
+        str(data.get("message", "")) + (f" ({line.format(data['line'])})"
+                                        if data.get("line") else "")
+        for data in outcome.findings if data.get("skill") == skill and rejects(data)))
 
 
 def _refuse_rejected(skill: SkillResult, after: LoadOutcome) -> bool:
-    """Skip a skill the EzSkiROS runtime would refuse to load, whatever it means."""
-    found = rejections(skill.name, after)
+    """Skip a skill the EzSkiROS runtime would refuse to load, whatever it means.
+
+    Its lines are those of the migrated version, which is not written: the legacy class it
+    stays as is the one that gives the same finding once migrated.
+    """
+    found = rejections(skill.name, after, "line {} once migrated")
     if not found:
         return False
     skill.status = "skipped"
     skill.equivalent = None
-    skill.reason = ("EzSkiROS rejects this skill when it loads (" + "; ".join(found) + "). "
-                    "The legacy code has the same problem, which SkiROS2 accepts silently: "
+    skill.reason = ("EzSkiROS rejects this skill when it loads: " + "; ".join(found) + ". "
+                    "The legacy code has the same problem (SkiROS2 accepted it silently); "
                     "fix the description or the ontology, then migrate")
     return True
 
 
-def _attach_findings(skills: list[SkillResult], after: LoadOutcome) -> None:
-    """Runtime check findings (domain/range, datatypes...) of the migrated skills."""
+def attach_findings(skills: list[SkillResult], after: LoadOutcome,
+                     skip: frozenset[str] = STATIC_KINDS) -> None:
+    """Runtime check findings (domain/range, datatypes...) of the migrated skills.
+
+    ``skip``: kinds reported elsewhere. ``rewrite``'s static pass already reports
+    ``STATIC_KINDS`` once per term; ``verify`` has no static pass and keeps them all.
+    """
     by_name = {s.name: s for s in skills}
     for data in after.findings:
         skill = by_name.get(str(data.get("skill", "")))
@@ -215,15 +240,20 @@ def _attach_findings(skills: list[SkillResult], after: LoadOutcome) -> None:
             continue
         kind = str(data.get("kind", "check")).replace("_", "-")
         message = str(data.get("message", ""))
-        if kind in STATIC_KINDS:  # already reported by the static pass, once per term
+        if kind in skip:
             continue
         if not any(f.message == message for f in skill.findings):
             skill.findings.append(Finding(kind, int(data.get("line") or 0), message))
 
 
-def _capture(notes: list[str], *outcomes: LoadOutcome) -> None:
-    """What a module that failed to load printed, for the report (the end, when long)."""
-    for outcome in outcomes:
+def capture(notes: list[str], before: LoadOutcome, after: LoadOutcome) -> None:
+    """What the two versions printed while loading, for the report (the end, when long).
+
+    Called when a version failed to load: its traceback or the module's own complaints are
+    often the only explanation. Each side is named, as both are loaded.
+    """
+    for side, outcome in (("legacy", before), ("migrated", after)):
         for stream, text in (("stdout", outcome.stdout), ("stderr", outcome.stderr)):
             if text.strip():
-                notes.append(f"{stream} while loading:\n" + text.strip()[-2000:])
+                notes.append(f"{stream} of the {side} version while loading:\n"
+                             + text.strip()[-2000:])

@@ -36,9 +36,14 @@ def __getattr__(name: str) -> Any:
         return getattr(importlib.import_module(f"{__name__}.{module_name}"), name)
     if importlib.util.find_spec(f"{__name__}.{name}") is not None:
         return importlib.import_module(f"{__name__}.{name}")
+    from ..diagnostics import UnknownPrefixError, UnknownVocabularyError
     from .namespaces import namespace
 
-    return namespace(name)
+    try:
+        return namespace(name)
+    except UnknownVocabularyError as unknown:  # keep the "did you mean" through the import
+        raise UnknownPrefixError(str(unknown), name=name,
+                                 suggestions=unknown.suggestions) from None
 
 
 def __dir__() -> list[str]:

@@ -295,9 +295,9 @@ def test_the_same_condition_wanted_and_unwanted_in_one_list_is_a_contradiction()
 def test_one_property_wanted_equal_to_two_values_in_one_list_is_a_contradiction():
     class Skill(SkillDescription):
         def description(self, L: skiros.Location):
-            self.pre_conditions += L.PublishTf == True  # noqa: E712
-            self.post_conditions += L.PublishTf == False  # noqa: E712 - pre and post differ
-            self.pre_conditions += L.PublishTf == False  # noqa: E712
+            self.pre_conditions += L.PublishTf == True
+            self.post_conditions += L.PublishTf == False
+            self.pre_conditions += L.PublishTf == False
 
     finding = only(Skill)
     assert (finding.kind, finding.severity) == ("contradiction", "error")
@@ -308,8 +308,8 @@ def test_one_property_wanted_equal_to_two_values_in_one_list_is_a_contradiction(
 
     class Fine(SkillDescription):
         def description(self, L: skiros.Location):
-            self.pre_conditions += L.PublishTf == True  # noqa: E712
-            self.pre_conditions += ~ (L.PublishTf == False)  # noqa: E712 - not equal: fine
+            self.pre_conditions += L.PublishTf == True
+            self.pre_conditions += ~ (L.PublishTf == False)
 
     assert check(Fine) == []
 

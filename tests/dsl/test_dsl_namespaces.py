@@ -10,6 +10,7 @@ from dsl_support import ROOT, paper  # noqa: F401 - paper is a fixture
 
 import ezskiros_runtime.ontology as ontology
 from ezskiros_runtime import UnknownVocabularyError
+from ezskiros_runtime.diagnostics import UnknownPrefixError
 from ezskiros_runtime.ontology import cora, load_index, rparts, skiros, sumo, use_ontology
 from ezskiros_runtime.ontology.namespaces import OwlClass, PropertyRef
 
@@ -57,11 +58,15 @@ def test_an_unknown_name_is_an_attribute_error_with_suggestions():
 
 
 def test_an_unknown_prefix_fails_with_a_suggestion():
-    with pytest.raises(UnknownVocabularyError, match=r"no ontology prefix 'skirso' in the "
-                                                     r"active ontology \(did you mean skiros\?\)"):
+    message = r"no ontology prefix 'skirso' in the active ontology \(did you mean skiros\?\)"
+    with pytest.raises(UnknownPrefixError, match=message):
         ontology.skirso  # noqa: B018
-    with pytest.raises(ImportError):
+    with pytest.raises(ImportError, match=message) as raised:  # the import statement, too
         from ezskiros_runtime.ontology import skirso  # noqa: F401
+    assert raised.value.suggestions == ("skiros",)
+    with pytest.raises(UnknownVocabularyError, match=r"did you mean skiros\.Product"):
+        skiros.Prodcut  # noqa: B018 - inside a namespace: an AttributeError, as hasattr expects
+    assert not hasattr(skiros, "Prodcut")
     assert ontology.use_ontology is use_ontology  # helpers are not prefixes
 
 
