@@ -15,13 +15,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .discover import discover
-from .package import migrate_package
+from .package import RUNTIME_MARKER, migrate_package
 from .verify.pool import PoolConfig, job_for, run_jobs
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
-
-RUNTIME_MARKER = b"ezskiros_runtime"
 
 
 @dataclass

@@ -21,7 +21,7 @@ import click
 from . import __version__, interrupt
 from .config import ConfigError, load_project_config
 from .diffs import colour, unified_diff
-from .report import MarkdownOptions, Summary, json_report, markdown_report
+from .report import MarkdownOptions, Summary, json_report, markdown_report, relaxed
 from .results import FileResult
 
 EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
@@ -119,8 +119,11 @@ def _report_path(path: Path | None) -> Path | None:
 
 def _write_report(path: Path, results: list[FileResult], options: MarkdownOptions) -> None:
     markdown = path.suffix.lower() == ".md"
-    text = markdown_report(results, options) if markdown else json_report(results)
-    # a file name that is not valid UTF-8 reaches us as lone surrogates: escape them
+    text = markdown_report(results, options) if markdown else json_report(results,
+                                                                          options=options)
+    # a file name that is not valid UTF-8 reaches us as lone surrogates (caf\udce9.py), which
+    # UTF-8 cannot encode: written as the text \udce9, which in JSON is the escape of that
+    # very surrogate (json.load and os.fsencode give back the file's real bytes)
     text = text.encode("utf-8", "backslashreplace").decode("utf-8")
     if str(path) == "-":
         click.echo(text, nl=False)
@@ -192,7 +195,8 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         paths=list(paths), dry_run=dry_run, check=check,
         exclude=tuple(exclude) + project.exclude, output_dir=output_dir, verify=verify,
         timeout=timeout or project.timeout or 20.0, ignore_order=ignore_order,
-        ignore_labels=ignore_labels, ontology=ontology_files)
+        ignore_labels=ignore_labels, ontology=ontology_files,
+        project=project.source.parent if project.source else None)
     if jobs or project.jobs:
         options.jobs = jobs or project.jobs or 1
     from .verify.rewrite import verify_migrated
@@ -259,18 +263,23 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
            ignore_order: bool, ignore_labels: bool, debug: bool) -> None:
     """Prove AFTER means what BEFORE meant (two files, or two folders by relative path)."""
     from .runner import default_jobs
-    from .verify.command import VerifyOptions, run_verify
+    from .verify.command import PathsMismatch, VerifyOptions, run_verify
     from .verify.pool import PoolConfig
 
     project = load_project_config(before)
     _, ontology_files = _load_index(ontology, before)
     pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
                       timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
-    results, unloadable = run_verify(VerifyOptions(
-        before, after, pool, ignore_order, ignore_labels, tuple(exclude) + project.exclude))
+    try:
+        results, unloadable = run_verify(VerifyOptions(
+            before, after, pool, ignore_order, ignore_labels, tuple(exclude) + project.exclude))
+    except PathsMismatch as error:
+        raise click.UsageError(str(error)) from None
     for result in results:
         if result.error:
             click.echo(f"{result.path}: {_short(result.error, debug)}", err=True)
+        for note in result.notes:  # an unchanged file that cannot load; captured output
+            click.echo(f"{result.path}: {_short(note, debug)}", err=True)
         for skill in result.skills:
             if skill.status == "failed":
                 click.echo(f"{result.path}:{skill.line}: {skill.name}: "
@@ -287,6 +296,7 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
     bad = sum(1 for r in results for s in r.skills if s.status == "failed")
     click.echo(f"ezmigrate: {len(results)} files compared, {total} classes, "
                f"{total - bad} equivalent, {bad} not equivalent"
+               + (f" ({relax})" if (relax := relaxed(ignore_order, ignore_labels)) else "")
                + (", some files could not be loaded" if unloadable else ""), err=True)
     sys.exit(EXIT_ERROR if unloadable else EXIT_ATTENTION if bad else EXIT_OK)
 

@@ -45,14 +45,26 @@ def _excluded(relative: str, patterns: Sequence[str]) -> bool:
     return False
 
 
-def _spellings(given: Path) -> set[str]:
-    """A file named on the command line as excludes should see it: as given and relative to
-    the working directory (pre-commit passes ``src/legacy/a.py``; ``legacy`` or
-    ``legacy/*`` must exclude it, as with black and ruff)."""
-    names = {given.as_posix().removeprefix("./"), given.name}
-    relative = os.path.relpath(given)
-    if not relative.startswith(".."):
-        names.add(Path(relative).as_posix())
+def _spellings(path: Path, project: Path | None, named: bool) -> set[str]:
+    """Relative spellings of ``path`` for excludes to match (with each folder in them).
+
+    Always relative to the project (the folder of the ``pyproject.toml``), as ruff does:
+    ``exclude = ["src/legacy"]`` there holds whatever folder the run starts from. A file
+    ``named`` on the command line also as given and relative to the working directory:
+    pre-commit passes ``src/legacy/a.py``, and ``legacy`` or ``legacy/*`` must exclude it,
+    as with black and ruff. Absolute spellings are never used: every folder above the
+    project (``/tmp``, ``/home``) would then be matched too.
+    """
+    names = {path.name}
+    starts: list[str | Path] = [project] if project is not None else []
+    if named:
+        starts.append(os.curdir)
+        if not path.is_absolute():
+            names.add(path.as_posix().removeprefix("./"))
+    for start in starts:
+        relative = os.path.relpath(path, start)
+        if not relative.startswith(".."):
+            names.add(Path(relative).as_posix())
     return names
 
 
@@ -63,12 +75,14 @@ def _inside(real: str, roots: Iterable[str]) -> bool:
 
 def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
              respect_gitignore: bool = True,
-             stale: list[Path] | None = None) -> tuple[list[Candidate], list[str]]:
+             stale: list[Path] | None = None,
+             project: Path | None = None) -> tuple[list[Candidate], list[str]]:
     """All candidate files, sorted and unique, plus messages about what was passed over.
 
     ``stale`` (when given) collects temporary files of ours (``.NAME.XXXXXXXX.ezmigrate``)
     found beside the candidates: only a SIGKILLed run leaves them. Discovery only lists
     them; ``session.run_rewrite`` decides whether to remove them (only when it writes).
+    ``project``: the folder excludes are also matched relative to (see ``_spellings``).
 
     Each file's real path (symlinks resolved) is worked out once, from its folder's real
     path, which is resolved once per folder: a tree of 20,000 files costs one ``stat`` per
@@ -83,14 +97,15 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
         root = given if given.is_dir() else given.parent
         real_roots = [os.path.realpath(root)]
         if given.is_file():
-            if not any(_excluded(name, exclude) for name in _spellings(given)):
+            if not any(_excluded(name, exclude) for name in _spellings(given, project, named=True)):
                 found.setdefault(os.path.realpath(given), Candidate(given, root))
                 if stale is not None:
                     stale.extend(_temporaries_of(given))
             continue
         for file, real in _walk(given, real_roots, notes, stale):
             candidate = Candidate(file, root)
-            if exclude and _excluded(candidate.relative, exclude):
+            if exclude and any(_excluded(name, exclude) for name in
+                               {candidate.relative, *_spellings(file, project, named=False)}):
                 continue
             found.setdefault(real, candidate)
     ordered = sorted(found.items(), key=lambda pair: str(pair[1].path))

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import difflib
 import re
+from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from ezskiros_runtime.model import Condition, SkillModel
@@ -31,28 +32,35 @@ def _walk(conditions: tuple[Condition, ...]) -> list[Condition]:
     return out
 
 
-def skill_findings(model: SkillModel, index: OntologyIndex | None) -> list[Finding]:
-    """Findings from the static model of one skill (line 0: the skill as a whole)."""
+def skill_findings(model: SkillModel, index: OntologyIndex | None,
+                   lines: Mapping[tuple[str, str], int] | None = None) -> list[Finding]:
+    """Findings from the static model of one skill.
+
+    ``lines`` (``ExtractedSkill.source_lines``) gives each finding the line of the
+    ``addParam`` or condition that causes it; line 0 stands for the skill as a whole.
+    """
+    where = lines or {}
     found: list[Finding] = []
     keys = {p.key for p in model.params}
     conditions = [c for which in ("pre", "hold", "post") for c in _walk(model.conditions(which))]
     for cond in conditions:
         for key in (cond.subject, cond.object):
             if key is not None and key not in keys:
-                found.append(Finding("undeclared-key", 0, f"a {cond.kind} condition "
+                found.append(Finding("undeclared-key", where.get(("key", key), 0),
+                                     f"a {cond.kind} condition "
                                      f"({cond.label!r}) refers to {key!r}, which no addParam "
                                      "declares (SkiROS2 accepts this silently)"))
     types = [p.element_type for p in model.params if p.element_type is not None]
     for type_string in types:
         if not _CANONICAL.match(type_string) and type_string != UNKNOWN_TYPE:
-            found.append(Finding("element-type-spelling", 0, f"Element type {type_string!r} is "
-                                 "not written as prefix:Name; SkiROS2 stores it verbatim "
-                                 "(kept as is)"))
+            found.append(Finding("element-type-spelling", where.get(("type", type_string), 0),
+                                 f"Element type {type_string!r} is not written as "
+                                 "prefix:Name; SkiROS2 stores it verbatim (kept as is)"))
     if index is not None:
-        vocabulary = [(t, "class") for t in types] + [
-            (c.vocabulary, "class" if c.kind == "on_type" else "property")
-            for c in conditions if c.vocabulary and c.kind != "or"]
-        for term, what in vocabulary:
+        vocabulary = [(t, "class", ("type", t)) for t in types] + [
+            (c.vocabulary, "class" if c.kind == "on_type" else "property",
+             ("vocabulary", c.vocabulary)) for c in conditions if c.vocabulary and c.kind != "or"]
+        for term, what, source in vocabulary:
             iri = index.expand(term)
             known = iri is not None and (index.is_class(iri) if what == "class"
                                          else index.property(iri) is not None)
@@ -60,7 +68,7 @@ def skill_findings(model: SkillModel, index: OntologyIndex | None) -> list[Findi
                 hint = _close(term, index.suggest(
                     term, ("class",) if what == "class" else ("object", "data")))
                 extra = f"; did you mean {', '.join(hint)}?" if hint else ""
-                found.append(Finding("unknown-vocabulary", 0,
+                found.append(Finding("unknown-vocabulary", where.get(source, 0),
                                      f"{what} {term!r} is not in the loaded ontology{extra}"))
     return _unique(found)
 

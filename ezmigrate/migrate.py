@@ -77,6 +77,12 @@ class Settings:
     exported: frozenset[str] = frozenset()
     """Names other modules of the package import from this one (``*``: a star import): their
     legacy imports stay, or migrating this file would break those modules."""
+    migrated_bases: frozenset[str] = frozenset()
+    """Imported bases that a sibling file defines as EzSkiROS descriptions (an earlier run
+    migrated them): a class here deriving from one with a ``createDescription`` is legacy."""
+    unresolved_bases: Mapping[str, str] = field(default_factory=dict)
+    """Imported bases whose file is not part of the run -> why a class deriving from one with
+    a ``createDescription`` is kept (its base's declarations cannot be read)."""
 
 
 @dataclass
@@ -108,6 +114,21 @@ def migrate(source: bytes | str, settings: Settings | None = None,
     except (UnicodeDecodeError, LookupError, SyntaxError) as error:
         result.error, result.error_line = decode_error_message(source, error)
         return result
+    try:
+        return _migrate_module(module, source, settings, result)
+    except RecursionError:
+        deep = too_deep_line(module)
+        where = f" (the statement at line {deep})" if deep is not None else ""
+        result.skills, result.new_source = [], None
+        result.error = (f"nested too deeply to migrate{where}: libcst walks the syntax tree "
+                        "recursively; split that expression into smaller ones, then migrate")
+        result.error_line = deep
+        return result
+
+
+def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
+                    result: FileResult) -> FileResult:
+    """``migrate`` once the source parsed."""
     python2 = _python2_except(module, source)
     if python2 is not None:
         line, column = python2
@@ -152,7 +173,8 @@ def migrate(source: bytes | str, settings: Settings | None = None,
 def _plan_module(module: cst.Module, names: LegacyNames, settings: Settings) -> tuple[
         cst.Module, list[_Plan], dict[str, list[Operation]], dict[str, str]] | None:
     """Plan every description class of the module, bases before children."""
-    classes = description_classes(module, names, settings.external.keys())
+    classes = description_classes(module, names, settings.external.keys(),
+                                  settings.migrated_bases, settings.unresolved_bases)
     if not classes:
         return None
     module, positions = positions_of(module)  # same tree: the class nodes stay valid
@@ -170,6 +192,22 @@ def _plan_module(module: cst.Module, names: LegacyNames, settings: Settings) -> 
     return module, plans, effective, aliases
 
 
+def too_deep_line(module: cst.Module) -> int | None:
+    """First line of the top-level statement too deeply nested for libcst to walk, if any.
+
+    Generating the code of each statement alone finds it without a position pass (which
+    is itself recursive); the lines before it are counted from the code of the ones before.
+    """
+    lines = "".join(module.code_for_node(line) for line in module.header).count("\n")
+    for stmt in module.body:
+        try:
+            code = module.code_for_node(stmt)
+        except RecursionError:
+            return lines + len(stmt.leading_lines) + 1
+        lines += code.count("\n")
+    return None
+
+
 def exported_operations(source: bytes | str, wanted: Collection[str],
                         settings: Settings) -> dict[str, list[Operation]]:
     """The operations of the ``wanted`` description classes of a module that convert.
@@ -182,7 +220,10 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
         module = cst.parse_module(source)
     except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError):
         return {}
-    planned = _plan_module(module, LegacyNames.of_module(module), settings)
+    try:
+        planned = _plan_module(module, LegacyNames.of_module(module), settings)
+    except RecursionError:  # its own migration reports the file
+        return {}
     if planned is None:
         return {}
     _, plans, effective, _ = planned
@@ -191,12 +232,14 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
 
 
 def foreign_bases(module: cst.Module, names: LegacyNames) -> list[tuple[str, str]]:
-    """``(base name, imported-from module)`` for class bases imported from user modules.
+    """``(base, imported-from module)`` for class bases imported from user modules.
 
     Candidates for descriptions defined in another file of the same package; the module
-    is written with its leading dots for relative imports (``".base"``).
+    is written with its leading dots for relative imports (``".base"``). ``base`` is spelled
+    as the import spells it: ``"Navigate"``, or ``"Navigate as Nav2"`` when the class derives
+    from an alias (the sibling defines ``Navigate``; this module's classes name ``Nav2``).
     """
-    imported: dict[str, str] = {}
+    imported: dict[str, tuple[str, str]] = {}
     for stmt in module.body:
         if not isinstance(stmt, cst.SimpleStatementLine):
             continue
@@ -206,14 +249,20 @@ def foreign_bases(module: cst.Module, names: LegacyNames) -> list[tuple[str, str
                     dotted_name(small.module) or "" if small.module is not None else "")
                 if small.relative or not is_legacy_module(source):
                     for alias in small.names:
-                        if alias.asname is None and isinstance(alias.name, cst.Name):
-                            imported[alias.name.value] = source
+                        if not isinstance(alias.name, cst.Name):
+                            continue
+                        name = alias.name.value
+                        local = alias.asname.name if alias.asname is not None else None
+                        if isinstance(local, cst.Name) and local.value != name:
+                            imported[local.value] = (f"{name} as {local.value}", source)
+                        elif local is None or isinstance(local, cst.Name):
+                            imported[name] = (name, source)
     found = []
     for stmt in module.body:
         if isinstance(stmt, cst.ClassDef):
             for arg in stmt.bases:
                 if isinstance(arg.value, cst.Name) and arg.value.value in imported:
-                    found.append((arg.value.value, imported[arg.value.value]))
+                    found.append(imported[arg.value.value])
     return found
 
 
@@ -229,11 +278,13 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
     try:
         if cls.name in settings.held:
             raise Unsupported(settings.held[cls.name])
+        if cls.kept is not None:
+            raise Unsupported(cls.kept)
         _check_bindings(cls, positions)
         if cls.other_bases:
             raise Unsupported(f"{cls.name} derives from several classes; a migration could "
                               "change its method resolution order")
-        if cls.base is not None and cls.base not in converted:
+        if cls.base is not None and cls.base not in converted and not cls.migrated_base:
             raise Unsupported(f"its base class {cls.base} was not converted")
         if func is None:
             effective[cls.name] = effective.get(cls.base or "", []) if cls.base else []
@@ -247,7 +298,8 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
                              self_name=self_parameter(func), class_name=cls.name,
                              class_names=frozenset(n for n, _ in class_bindings(cls.node)),
                              base_names=[cls.base] if cls.base else [],
-                             parent_operations=lambda base: effective[base])
+                             parent_operations=lambda base: _parent_operations(cls, base,
+                                                                               effective))
         read_operations(func, ctx)
         params = emitted_params(skill)
         model = _checked_model(cls.name, skill.operations, params)
@@ -261,17 +313,34 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
         plan.result.status = "converted"
         plan.result.model = model.to_json()
         plan.result.findings = [Finding(k, ln, m) for k, ln, m in skill.findings] + \
-            skill_findings(model, settings.index)
+            skill_findings(model, settings.index, skill.source_lines())
         plan.runtime, plan.prefixes = emit.runtime_names, emit.prefixes
     except Unsupported as unsupported:
         plan.result.status = "skipped"
         plan.result.reason = unsupported.reason
+    except RecursionError:  # a problem with the file, not this skill: ``migrate`` says so
+        raise
     except Exception as error:  # the legacy backend rejects what SkiROS2 rejects
         plan.result.status = "skipped"
         plan.result.reason = f"SkiROS2 would reject this description: {error}"
         if not isinstance(error, (ValueError, TypeError, KeyError)):
             plan.result.reason += "\n" + traceback.format_exc(limit=3)
     return plan
+
+
+def _parent_operations(cls: DescriptionClass, base: str,
+                       effective: Mapping[str, list[Operation]]) -> list[Operation]:
+    """What a call to ``base``'s ``createDescription`` declares, for inlining into ``cls``.
+
+    A base that an earlier run already migrated has only its EzSkiROS form left, which
+    ezmigrate does not read back: the child cannot be converted automatically.
+    """
+    if cls.migrated_base and base == cls.base:
+        raise Unsupported(f"it calls createDescription of its base class {base}, which is "
+                          "already an EzSkiROS description (migrated by an earlier run); "
+                          "ezmigrate cannot inline a migrated description: migrate "
+                          f"{cls.name} by hand")
+    return effective[base]
 
 
 def _checked_model(name: str, operations: list[Operation], params: list[ParamOp]) -> SkillModel:

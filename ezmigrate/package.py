@@ -12,9 +12,10 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Sequence
-from pathlib import PurePosixPath
+from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING
 
+from .core.classes import RUNTIME_ROOT, ezskiros_classes
 from .core.ir import Operation
 from .discover import Candidate
 from .migrate import Settings, exported_operations, migrate
@@ -24,6 +25,7 @@ if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
 MAX_ROUNDS = 4
+RUNTIME_MARKER = RUNTIME_ROOT.encode()
 
 
 def dotted(relative: str) -> str:
@@ -54,15 +56,20 @@ def _matches(exporter: str, target: str) -> bool:
     return name == target or name.endswith("." + target) or target.endswith("." + name)
 
 
-_FROM = re.compile(rb"^[ \t]*from[ \t]+(\.*[\w.]*)[ \t]+import\b", re.MULTILINE)
+_IMPORTS = re.compile(
+    rb"^[ \t]*(?:from[ \t]+(\.*[\w.]*)[ \t]+import\b[ \t]*(\([^)]*\)|[^\n]*)"
+    rb"|import[ \t]+([^\n]*))", re.MULTILINE)
+_WORD = re.compile(rb"\w+")
 
 
 def imported_from(migrated: Sequence[Migrated]) -> dict[str, frozenset[str]]:
     """Relative path of a description file -> names other files import from it (``*``).
 
-    Every file is read once; a regular expression finds its ``from X import`` lines, and
-    only a file whose ``X`` ends in the module name of a description file is parsed (with
-    ``ast``) to read the names; the module is then matched like a base's is.
+    Every file is read once; a regular expression finds its import statements, and only a
+    file whose imports mention the module name of a description file is parsed (with
+    ``ast``) to read the names: ``from .m import X``, ``from m import *``, and ``X`` in
+    ``mod.X`` after ``import pkg.m as mod`` or ``from pkg import m as mod``. The module is
+    then matched like a base's is.
     """
     by_stem: dict[str, list[Migrated]] = {}
     for item in migrated:
@@ -75,11 +82,12 @@ def imported_from(migrated: Sequence[Migrated]) -> dict[str, frozenset[str]]:
     found: dict[str, set[str]] = {}
     for item in migrated:
         data = item.original
-        named = {m.rsplit(b".", 1)[-1] for m in _FROM.findall(data)}
+        named: set[bytes] = set()
+        for source, names, plain in _IMPORTS.findall(data):
+            named.update(_WORD.findall(source + b" " + names + b" " + plain))
         if not named & stems:
             continue
-        for source, names in _from_imports(data):
-            target = target_module(item.candidate.relative, source)
+        for target, names in _imports_of(item.candidate.relative, data):
             for holder in by_stem.get(target.rsplit(".", 1)[-1], ()):
                 if holder is not item and holder.candidate.root == item.candidate.root \
                         and _matches(holder.candidate.relative, target):
@@ -87,16 +95,96 @@ def imported_from(migrated: Sequence[Migrated]) -> dict[str, frozenset[str]]:
     return {relative: frozenset(names) for relative, names in found.items()}
 
 
-def _from_imports(data: bytes) -> list[tuple[str, list[str]]]:
-    """``(module with its leading dots, imported names)`` of every ``from`` import."""
+def _imports_of(importer: str, data: bytes) -> list[tuple[str, set[str]]]:
+    """``(dotted module, names used from it)`` for the imports of file ``importer``.
+
+    ``from a import b`` counts both ways, as names of ``a`` and as module ``a.b`` (whose
+    attributes the file reads): only one of the two is a file of the package.
+    """
     import ast
 
     try:
         tree = ast.parse(data)
     except (SyntaxError, ValueError, MemoryError, RecursionError):
         return []
-    return [("." * node.level + (node.module or ""), [a.name for a in node.names])
-            for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)]
+    used: list[tuple[str, set[str]]] = []
+    modules: dict[str, str] = {}  # local spelling -> dotted module it names
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            target = target_module(importer, "." * node.level + (node.module or ""))
+            used.append((target, {alias.name for alias in node.names}))
+            for alias in node.names:
+                modules[alias.asname or alias.name] = \
+                    f"{target}.{alias.name}" if target else alias.name
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                modules[alias.asname or alias.name] = alias.name
+    if not modules:
+        return used
+    attributes: dict[str, set[str]] = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute):
+            spelled = _spelled(node.value)
+            if spelled in modules:
+                attributes.setdefault(modules[spelled], set()).add(node.attr)
+    return used + list(attributes.items())
+
+
+def _spelled(node: object) -> str | None:
+    """``a.b.c`` for an ``ast`` Name/Attribute chain, else ``None``."""
+    import ast
+
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        head = _spelled(node.value)
+        return None if head is None else f"{head}.{node.attr}"
+    return None
+
+
+def _split(spelling: str) -> tuple[str, str]:
+    """``"Navigate as Nav2"`` (see ``migrate.foreign_bases``) -> ``("Navigate", "Nav2")``."""
+    name, _, local = spelling.partition(" as ")
+    return name, local or name
+
+
+def _on_disk(importer: Path, source: str) -> Path | None:
+    """The file a ``from source import X`` in ``importer`` names, if it exists beside it.
+
+    Relative imports are resolved from the importer's folder; absolute ones from each of
+    its parent folders (the package may start anywhere above it).
+    """
+    level = len(source) - len(source.lstrip("."))
+    parts = source[level:].split(".") if source[level:] else []
+    if not parts:
+        return None
+    starts = [importer.parent.parents[level - 2] if level > 1 else importer.parent] \
+        if level else list(importer.parents)[:6]
+    for start in starts:
+        for path in (start.joinpath(*parts).with_suffix(".py"),
+                     start.joinpath(*parts, "__init__.py")):
+            if path.is_file():
+                return path
+    return None
+
+
+def _ezskiros_classes(item: Migrated) -> set[str]:
+    """EzSkiROS description classes of a file; parsed only when a sibling derives from a
+    class of it that is no legacy description there (rare: after a partial earlier run)."""
+    if RUNTIME_MARKER not in item.original:
+        return set()
+    import libcst as cst
+
+    try:
+        return ezskiros_classes(cst.parse_module(item.original))
+    except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError,
+            RecursionError):
+        return set()
+
+
+def _others_at(items: Sequence[Migrated], importer: Migrated, target: str) -> list[Migrated]:
+    """The files among ``items``, other than ``importer``, that module ``target`` names."""
+    return [e for e in items if e is not importer and _matches(e.candidate.relative, target)]
 
 
 def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
@@ -104,35 +192,67 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
     """Re-migrate files whose classes derive from descriptions of sibling files.
 
     Returns how many files were migrated again. Only files under the same root are
-    matched, and only when exactly one file there defines the imported name.
+    matched, and only when exactly one file there defines the imported name. A base the
+    sibling defines as an EzSkiROS description (an earlier run migrated it), a base that
+    did not convert there, and a base whose file exists but was not given are passed on
+    too, so that a deriving class with a ``createDescription`` is reported, not ignored.
     """
     redone = 0
-    done: set[tuple[int, frozenset[str]]] = set()
+    done: set[tuple[int, frozenset[str], frozenset[str], frozenset[tuple[str, str]]]] = set()
+    ezskiros: dict[str, set[str]] = {}
     for _ in range(MAX_ROUNDS):
         changed = False
         exporters: dict[tuple[str, str], list[Migrated]] = {}
+        described: dict[tuple[str, str], list[Migrated]] = {}
+        by_root: dict[str, list[Migrated]] = {}
         for item in migrated:
+            root = str(item.candidate.root)
+            by_root.setdefault(root, []).append(item)
             for name in item.result.exports:
-                exporters.setdefault((str(item.candidate.root), name), []).append(item)
+                exporters.setdefault((root, name), []).append(item)
+            for skill in item.result.skills:
+                described.setdefault((root, skill.name), []).append(item)
         for item in migrated:
+            root = str(item.candidate.root)
             external: dict[str, list[Operation]] = {}
+            migrated_bases: set[str] = set()
+            unresolved: dict[str, str] = {}
             sources: list[str] = []
-            for base, source in item.result.foreign_bases:
+            for spelling, source in item.result.foreign_bases:
+                name, local = _split(spelling)
                 target = target_module(item.candidate.relative, source)
-                found = [e for e in exporters.get((str(item.candidate.root), base), [])
-                         if e is not item and _matches(e.candidate.relative, target)]
-                if len(found) != 1:
+                found = _others_at(exporters.get((root, name), []), item, target)
+                if len(found) == 1:
+                    operations = exported_operations(found[0].original, [name], settings)
+                    if name in operations:
+                        external[local] = operations[name]
+                        sources.append(found[0].candidate.relative)
                     continue
-                operations = exported_operations(found[0].original, [base], settings)
-                if base in operations:
-                    external[base] = operations[base]
-                    sources.append(found[0].candidate.relative)
-            key = (id(item), frozenset(external))
-            if not external or key in done:
+                if found:
+                    continue  # several files define it: nothing is certain
+                if _others_at(described.get((root, name), []), item, target):
+                    unresolved[local] = f"its base class {name} was not converted (in " \
+                        f"{source})"
+                    continue
+                files = _others_at(by_root.get(root, []), item, target)
+                if files:
+                    for file in files:
+                        if file.candidate.relative not in ezskiros:
+                            ezskiros[file.candidate.relative] = _ezskiros_classes(file)
+                    if any(name in ezskiros[f.candidate.relative] for f in files):
+                        migrated_bases.add(local)
+                    continue
+                if _on_disk(item.candidate.path, source) is not None:
+                    unresolved[local] = (f"its base {name} is imported from {source}, which "
+                                         "was not given: pass the package folder")
+            key = (id(item), frozenset(external), frozenset(migrated_bases),
+                   frozenset(unresolved.items()))
+            if not (external or migrated_bases or unresolved) or key in done:
                 continue
             done.add(key)
             item.settings = Settings(settings.index, external, exported=(exported or {}).get(
-                item.candidate.relative, frozenset()))
+                item.candidate.relative, frozenset()), migrated_bases=frozenset(migrated_bases),
+                unresolved_bases=unresolved)
             result = migrate(item.original, item.settings, item.candidate.relative)
             result.depends_on = sorted(set(sources))
             item.result = result

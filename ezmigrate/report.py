@@ -51,6 +51,17 @@ class Summary:
         return bool(self.skipped or self.failed or self.file_errors)
 
 
+@dataclass
+class MarkdownOptions:
+    """How equivalence was judged, as both reports say it (Markdown in words, JSON as
+    ``"options"``); ``notes`` are Markdown only."""
+
+    verified: bool = True
+    ignore_order: bool = False
+    ignore_labels: bool = False
+    notes: list[str] = field(default_factory=list)
+
+
 def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
     data: dict[str, Any] = {
         "file": file.path, "class": skill.name, "line": skill.line, "status": skill.status,
@@ -63,11 +74,18 @@ def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
     return data
 
 
-def json_report(results: Sequence[FileResult], extra: dict[str, Any] | None = None) -> str:
-    """The JSON report (schema version 1 of the rewrite issue, plus ``equivalent``/``diff``)."""
+def json_report(results: Sequence[FileResult], extra: dict[str, Any] | None = None,
+                options: MarkdownOptions | None = None) -> str:
+    """The JSON report (schema version 1 of the rewrite issue, plus ``equivalent``/``diff``).
+
+    ``options`` says how equivalence was judged (``"options"``): a verdict reached with
+    ``--ignore-order`` or ``--ignore-labels`` proves less, and a reader must be able to tell.
+    """
     summary = Summary.of(results)
     data: dict[str, Any] = {
         "version": SCHEMA_VERSION,
+        **({"options": {"verified": options.verified, "ignore_order": options.ignore_order,
+                        "ignore_labels": options.ignore_labels}} if options else {}),
         "summary": {"files": summary.files, "skills": summary.skills,
                     "converted": summary.converted, "skipped": summary.skipped,
                     "failed": summary.failed},
@@ -80,14 +98,12 @@ def json_report(results: Sequence[FileResult], extra: dict[str, Any] | None = No
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 
-@dataclass
-class MarkdownOptions:
-    """What the Markdown report says about how equivalence was judged."""
-
-    verified: bool = True
-    ignore_order: bool = False
-    ignore_labels: bool = False
-    notes: list[str] = field(default_factory=list)
+def relaxed(ignore_order: bool, ignore_labels: bool) -> str:
+    """What equivalence was judged without (``ignoring labels``), or ``""``: worded once for
+    the Markdown report and ``verify``'s summary line."""
+    relax = [w for w, on in (("parameter/condition order", ignore_order),
+                             ("labels", ignore_labels)) if on]
+    return f"ignoring {' and '.join(relax)}" if relax else ""
 
 
 def _verdict(skill: SkillResult) -> str:
@@ -102,10 +118,8 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
     s = Summary.of(results)
     out = ["# ezmigrate report", ""]
     how = "verified by loading both versions" if options.verified else "NOT verified"
-    relax = [w for w, on in (("parameter/condition order", options.ignore_order),
-                             ("labels", options.ignore_labels)) if on]
-    out.append(f"Equivalence: {how}" + (f"; ignoring {' and '.join(relax)}" if relax else "")
-               + ".")
+    relax = relaxed(options.ignore_order, options.ignore_labels)
+    out.append(f"Equivalence: {how}" + (f"; {relax}" if relax else "") + ".")
     out += ["", "| files | skills | converted | skipped | failed | unchanged |",
             "|---:|---:|---:|---:|---:|---:|",
             f"| {s.files} | {s.skills} | {s.converted} | {s.skipped} | {s.failed} | "
@@ -113,7 +127,7 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
     out += [f"- {note}" for note in options.notes]
     findings: list[str] = []
     for file in results:
-        if not file.skills and not file.error:
+        if not file.skills and not file.error and not file.notes:
             continue
         out += [f"## `{file.path}`", ""]
         if file.error:

@@ -44,6 +44,8 @@ class RewriteOptions:
     ignore_labels: bool = False
     ontology: tuple[str, ...] = ()
     """Resolved ontology files for verification workers (empty: the bundled default)."""
+    project: Path | None = None
+    """The folder of the ``pyproject.toml`` in use: excludes also match relative to it."""
 
     @property
     def writes(self) -> bool:
@@ -71,7 +73,8 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     Raises ``interrupt.Interrupted`` when a signal stops the run (see the module doc).
     """
     stale: list[Path] = []
-    candidates, notes = discover(options.paths, options.exclude, stale=stale)
+    candidates, notes = discover(options.paths, options.exclude, stale=stale,
+                                 project=options.project)
     notes += _stale_notes(stale, options.writes)
     migrated = migrate_package(candidates, index, options.jobs)
     outcome = RewriteOutcome(migrated, notes)

@@ -118,8 +118,8 @@ def _replace(path: Path, target: Path, data: bytes, mode: int,
         raise WriteRefused(f"{path}: cannot create a temporary file in {folder} "
                            f"({error.strerror})") from error
     try:
-        with os.fdopen(fd, "wb") as handle:
-            try:
+        try:  # closing the file flushes again and may fail again: it is inside too
+            with os.fdopen(fd, "wb") as handle:
                 with suppress(OSError):  # a file system without locks: no stale detection
                     fcntl.flock(handle.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
                 handle.write(data)
@@ -131,9 +131,9 @@ def _replace(path: Path, target: Path, data: bytes, mode: int,
                         os.chown(temp, info.st_uid, info.st_gid)
                 _check_unchanged(path, target, expected_digest)
                 os.replace(temp, target)
-            except OSError as error:
-                raise WriteRefused(f"{path}: could not be written ({error.strerror}), "
-                                   "left as it was") from error
+        except OSError as error:
+            raise WriteRefused(f"{path}: could not be written ({error.strerror}), "
+                               "left as it was") from error
     except BaseException:
         with suppress(OSError):
             os.unlink(temp)

@@ -94,8 +94,9 @@ class UnknownPrefixError(ImportError):
 
     An ``ImportError``, not an ``AttributeError``: Python replaces an ``AttributeError``
     raised during ``from ... import`` by its own message, which would drop the "did you
-    mean". (``hasattr`` on the ontology *module* therefore raises for unknown prefixes;
-    namespaces such as ``skiros`` keep ``AttributeError`` for unknown classes.)
+    mean". It is raised only for lookups made by an import statement; ``ontology.skirso``,
+    ``hasattr`` and ``getattr(..., default)`` get an ``UnknownVocabularyError`` (an
+    ``AttributeError``), so they keep their usual meaning.
     """
 
     def __init__(self, message: str, *, name: str, suggestions: Iterable[str] = ()) -> None:

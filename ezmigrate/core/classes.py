@@ -4,37 +4,72 @@ A description derives from the legacy ``SkillDescription`` directly or through a
 description of the same module or package (legacy-skiros2-api.md §2). Implementation
 classes (``PrimitiveBase``, ``SkillBase``) are never descriptions, even though they have a
 ``createDescription`` of their own.
+
+A class that defines ``createDescription`` and derives from an EzSkiROS description (one an
+earlier run migrated, here or in a sibling file) is a legacy description too: overriding
+``createDescription`` turns the EzSkiROS machinery off for it (ezskiros_runtime/dsl/skill.py),
+so its string-based body is what SkiROS2 runs. Without this, a child skipped by a partial
+run would vanish from later runs and from ``check`` once its base was converted.
 """
 
 from __future__ import annotations
 
-from collections.abc import Collection
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 
 import libcst as cst
 
 from .legacy_names import LegacyNames, dotted_name
+from .reader import class_bindings
+
+RUNTIME_ROOT = "ezskiros_runtime"
 
 
 @dataclass
 class DescriptionClass:
-    """A top-level description class: ``base`` is ``None`` for a direct legacy base."""
+    """A top-level description class: ``base`` is ``None`` for a direct legacy base.
+
+    ``migrated_base``: ``base`` is already an EzSkiROS description (nothing to inline from
+    it). ``kept``: why the class must stay as it is whatever its body holds.
+    """
 
     node: cst.ClassDef
     name: str
     base: str | None
     base_arg: cst.Arg
     other_bases: int
+    migrated_base: bool = False
+    kept: str | None = None
 
 
 def description_classes(module: cst.Module, names: LegacyNames,
-                        external: Collection[str] = ()) -> list[DescriptionClass]:
+                        external: Collection[str] = (), migrated: Collection[str] = (),
+                        unresolved: Mapping[str, str] | None = None) -> list[DescriptionClass]:
     """Top-level description classes in definition order.
 
     ``external`` names description classes defined elsewhere in the package that this
-    module imports by name (bases that are neither legacy nor local).
+    module imports by name (bases that are neither legacy nor local). ``migrated`` names
+    imported EzSkiROS descriptions; ``unresolved`` maps imported bases whose file is not
+    part of the run to the reason a class deriving from them is kept. Only classes that
+    define ``createDescription`` count as descriptions through those two: an EzSkiROS
+    child, or any class deriving from an unknown base, is not evidence of one.
     """
+    return _classify(module, names, external, migrated, unresolved or {})[0]
+
+
+def ezskiros_classes(module: cst.Module) -> set[str]:
+    """Top-level EzSkiROS description classes: deriving from ``ezskiros_runtime``'s
+    ``SkillDescription``, directly or through another, without a ``createDescription``."""
+    return _classify(module, LegacyNames.of_module(module), (), (), {})[1]
+
+
+def _classify(module: cst.Module, names: LegacyNames, external: Collection[str],
+              migrated: Collection[str], unresolved: Mapping[str, str]) -> tuple[
+                  list[DescriptionClass], set[str]]:
+    """Legacy description classes and names of EzSkiROS ones (see ``description_classes``)."""
     found: dict[str, DescriptionClass] = {}
+    ezskiros = set(migrated)
+    runtime_bases = _runtime_base_names(module)
     for stmt in module.body:
         if not isinstance(stmt, cst.ClassDef):
             continue
@@ -42,12 +77,49 @@ def description_classes(module: cst.Module, names: LegacyNames,
             if arg.keyword is not None:
                 continue
             base = dotted_name(arg.value)
+            described: DescriptionClass | None = None
             if names.symbol(arg.value) == "SkillDescription":
-                found[stmt.name.value] = DescriptionClass(stmt, stmt.name.value, None, arg,
-                                                          len(stmt.bases) - 1)
-                break
-            if base is not None and (base in found or base in external):
-                found[stmt.name.value] = DescriptionClass(stmt, stmt.name.value, base, arg,
-                                                          len(stmt.bases) - 1)
-                break
-    return list(found.values())
+                described = DescriptionClass(stmt, stmt.name.value, None, arg,
+                                             len(stmt.bases) - 1)
+            elif base is not None and (base in found or base in external):
+                described = DescriptionClass(stmt, stmt.name.value, base, arg,
+                                             len(stmt.bases) - 1)
+            elif base is not None and (base in ezskiros or base in runtime_bases
+                                       or base in unresolved):
+                legacy = any(n == "createDescription" for n, _ in class_bindings(stmt))
+                if legacy and base not in runtime_bases:
+                    described = DescriptionClass(stmt, stmt.name.value, base, arg,
+                                                 len(stmt.bases) - 1,
+                                                 migrated_base=base not in unresolved,
+                                                 kept=unresolved.get(base))
+                elif not legacy and base not in unresolved:
+                    ezskiros.add(stmt.name.value)  # an EzSkiROS description
+            else:
+                continue
+            if described is not None:
+                found[stmt.name.value] = described
+            break
+    return list(found.values()), ezskiros - set(migrated)
+
+
+def _runtime_base_names(module: cst.Module) -> set[str]:
+    """Local spellings of ``ezskiros_runtime``'s ``SkillDescription`` in the module
+    (``SkillDescription``, ``EzSkillDescription`` as migration aliases it, or
+    ``ez.SkillDescription``): the roots of EzSkiROS descriptions."""
+    found: set[str] = set()
+    for stmt in module.body:
+        for small in stmt.body if isinstance(stmt, cst.SimpleStatementLine) else ():
+            if isinstance(small, cst.ImportFrom) and small.module is not None \
+                    and not small.relative and not isinstance(small.names, cst.ImportStar) \
+                    and (dotted_name(small.module) or "").split(".")[0] == RUNTIME_ROOT:
+                for alias in small.names:
+                    if dotted_name(alias.name) == "SkillDescription":
+                        local = alias.asname.name if alias.asname is not None else alias.name
+                        found.add(dotted_name(local) or "SkillDescription")
+            elif isinstance(small, cst.Import):
+                for alias in small.names:
+                    module_name = dotted_name(alias.name) or ""
+                    if module_name == RUNTIME_ROOT:
+                        local = alias.asname.name if alias.asname is not None else alias.name
+                        found.add(f"{dotted_name(local)}.SkillDescription")
+    return found

@@ -7,6 +7,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import libcst as cst
+import libcst.helpers
 from libcst.metadata import PositionProvider
 
 from .ir import CondSpec, ExtractedSkill, Literal, Operation, Unsupported
@@ -33,6 +34,9 @@ class ExtractContext:
     """Names the class body binds: a signature default would see them, not the module's."""
     base_names: Sequence[str] = ()
     constants: Mapping[str, Literal] = field(default_factory=dict)
+    function_names: frozenset[str] = frozenset()
+    """Names ``createDescription`` binds anywhere: Python makes them local throughout, so
+    such a name never reads the module constant of the same name."""
     locals: dict[str, Literal | CondSpec] = field(default_factory=dict)
     opaque_locals: set[str] = field(default_factory=set)
     parent_operations: Callable[[str], list[Operation]] | None = None
@@ -54,9 +58,21 @@ class ExtractContext:
             return found
         return literal_of(node, self.module)
 
+    def constant(self, node: cst.BaseExpression) -> Literal | None:
+        """The literal a module-level constant named by ``node`` is bound to (``KEY = "X"``,
+        bound once), unless ``createDescription`` binds that name itself."""
+        if isinstance(node, cst.Name) and node.value not in self.function_names:
+            return self.constants.get(node.value)
+        return None
+
+    def resolved(self, node: cst.BaseExpression) -> Literal | None:
+        """A literal, a local holding one, or a module constant: a value known statically."""
+        found = self.literal(node)
+        return found if found is not None else self.constant(node)
+
     def string(self, node: cst.BaseExpression, what: str) -> str:
-        """A string literal, or ``Unsupported`` naming ``what`` it should have been."""
-        lit = self.literal(node)
+        """A string known statically, or ``Unsupported`` naming ``what`` it should have been."""
+        lit = self.resolved(node)
         if lit is None or not isinstance(lit.value, str):
             raise Unsupported(
                 f"{what} is `{self.code(node).strip()}`, not a string literal: the key or name "
@@ -114,6 +130,37 @@ def module_constants(module: cst.Module) -> dict[str, Literal]:
                 if value is not None:
                     found[name] = value
     return {name: value for name, value in found.items() if bound.get(name) == 1}
+
+
+def bound_names(func: cst.FunctionDef) -> frozenset[str]:
+    """Every name ``func``'s body binds (assignments, walrus, loops, imports, ``as``)."""
+    found: set[str] = set()
+
+    class _Bindings(cst.CSTVisitor):
+        def visit_AssignTarget(self, node: cst.AssignTarget) -> None:
+            found.update(_target_names(node.target))
+
+        def visit_AugAssign(self, node: cst.AugAssign) -> None:
+            found.update(_target_names(node.target))
+
+        def visit_AnnAssign(self, node: cst.AnnAssign) -> None:
+            found.update(_target_names(node.target))
+
+        def visit_NamedExpr(self, node: cst.NamedExpr) -> None:
+            found.update(_target_names(node.target))
+
+        def visit_For(self, node: cst.For) -> None:
+            found.update(_target_names(node.target))
+
+        def visit_AsName(self, node: cst.AsName) -> None:
+            found.update(_target_names(node.name))
+
+        def visit_ImportAlias(self, node: cst.ImportAlias) -> None:
+            if node.asname is None:
+                found.add(cst.helpers.get_full_name_for_node_or_raise(node.name).split(".")[0])
+
+    func.body.visit(_Bindings())
+    return frozenset(found)
 
 
 def _target_names(node: cst.BaseExpression) -> list[str]:

@@ -104,20 +104,31 @@ def _usable_as_is(key: str) -> bool:
 
 
 def assign_names(params: list[ParamOp], ctx: EmitContext) -> list[str]:
-    """One Python name per parameter; the first declaration of a key names the key."""
+    """One Python name per parameter; the first declaration of a key names the key.
+
+    Keys usable as names are served first, so that ``"Target_Location"`` keeps its own name
+    even when an earlier ``"Target Location"`` would be spelt the same; the others get a
+    made-up name (with a ``KEY(...)``) from what is left.
+    """
     taken = set(ctx.reserved)
-    names: list[str] = []
-    for op in params:
-        usable = _usable_as_is(op.key) and op.key not in taken
-        name = op.key if usable else _identifier(op.key)
-        base, counter = name, 2
-        while name in taken:
-            name = f"{base}_{counter}"
-            counter += 1
-        taken.add(name)
-        names.append(name)
+    names: list[str | None] = [None] * len(params)
+    for index, op in enumerate(params):
+        if _usable_as_is(op.key) and op.key not in taken:
+            names[index] = op.key
+            taken.add(op.key)
+    for index, op in enumerate(params):
+        if names[index] is None:
+            name = base = _identifier(op.key)
+            counter = 2
+            while name in taken:
+                name = f"{base}_{counter}"
+                counter += 1
+            taken.add(name)
+            names[index] = name
+    assigned = [name for name in names if name is not None]
+    for op, name in zip(params, assigned, strict=True):
         ctx.param_names.setdefault(op.key, name)
-    return names
+    return assigned
 
 
 def _comment_lines(comments: Comments, indent_ws: str) -> list[cst.EmptyLine]:

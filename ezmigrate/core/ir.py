@@ -133,11 +133,16 @@ class AddCondition:
 
 @dataclass
 class KeptStatement:
-    """A statement that stays as written (``self.setAvailableForPlanning(False)``)."""
+    """A statement that stays as written (``self.setAvailableForPlanning(False)``).
+
+    ``literal_local`` names the local a ``name = "literal"`` statement binds: once extraction
+    inlined every read of it, the assignment is dead and goes (its comments stay).
+    """
 
     node: cst.BaseSmallStatement
     line: int
     comments: Comments = field(default_factory=Comments)
+    literal_local: str | None = None
 
 
 @dataclass
@@ -161,12 +166,38 @@ class ExtractedSkill:
     footer: list[cst.EmptyLine] = field(default_factory=list)
     has_create_description: bool = True
     findings: list[tuple[str, int, str]] = field(default_factory=list)
+    inlined_at: dict[int, int] = field(default_factory=dict)
+    """``id`` of an operation inlined from a base's ``createDescription`` -> the line of that
+    call in this file (the operation's own lines may belong to another file)."""
 
     def params(self) -> list[ParamOp]:
         return [op for op in self.operations if isinstance(op, ParamOp)]
 
     def conditions(self) -> list[AddCondition]:
         return [op for op in self.operations if isinstance(op, AddCondition)]
+
+    def source_lines(self) -> dict[tuple[str, str], int]:
+        """First line in this file that mentions a term: ``("key", k)`` for a condition's
+        subject or object, ``("type", t)`` for an Element type, ``("vocabulary", v)`` for a
+        condition's relation, property or class. Lets findings point at their cause."""
+        lines: dict[tuple[str, str], int] = {}
+        for op in self.operations:
+            inlined = self.inlined_at.get(id(op))
+            if isinstance(op, ParamOp) and isinstance(op.value, ElementValue) \
+                    and op.value.type_string is not None:
+                lines.setdefault(("type", op.value.type_string), inlined or op.line)
+            elif isinstance(op, AddCondition):
+                pending = [op.condition]
+                while pending:
+                    spec = pending.pop(0)
+                    line = inlined or spec.line
+                    for key in (spec.subject, spec.object):
+                        if key is not None:
+                            lines.setdefault(("key", key), line)
+                    if spec.vocabulary is not None:
+                        lines.setdefault(("vocabulary", spec.vocabulary), line)
+                    pending += spec.children
+        return lines
 
     def finding(self, kind: str, line: int, message: str) -> None:
         """Record something worth a reviewer's eye that migration keeps as it was."""

@@ -47,6 +47,12 @@ def is_legacy_module(module: str) -> bool:
     return module.split(".")[0] in LEGACY_ROOTS
 
 
+def _holds_exports(module: str) -> bool:
+    """Whether ``module`` is a legacy module with API symbols, or a package above one
+    (``skiros2_common.core``, whose ``params`` submodule holds ``ParamTypes``)."""
+    return any(known == module or known.startswith(module + ".") for known in LEGACY_EXPORTS)
+
+
 class LegacyNames:
     """Resolves expressions like ``PT.Required`` to ``("ParamTypes", "Required")``.
 
@@ -67,9 +73,9 @@ class LegacyNames:
 
     def add_from_import(self, module: str, aliases: Iterable[tuple[str, str]] | None) -> None:
         """Record ``from module import name as alias`` (``aliases`` None means ``*``)."""
-        exported = LEGACY_EXPORTS.get(module)
-        if exported is None:
+        if not is_legacy_module(module):
             return
+        exported = LEGACY_EXPORTS.get(module, frozenset())
         if aliases is None:
             for name in exported:
                 self.symbols[name] = name
@@ -77,7 +83,9 @@ class LegacyNames:
         for name, alias in aliases:
             if name in exported:
                 self.symbols[alias] = name
-            elif f"{module}.{name}" in LEGACY_EXPORTS:
+            elif _holds_exports(f"{module}.{name}"):
+                # ``from skiros2_common.core import params`` binds a module, not a symbol:
+                # ``params.ParamTypes.Required`` then resolves like any module import.
                 self.modules[alias] = f"{module}.{name}"
 
     def add_import(self, module: str, alias: str | None) -> None:

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import libcst as cst
 
-from .context import ExtractContext
+from ..rules.local_variables import drop_dead_literal_locals
+from .context import ExtractContext, bound_names
 from .ir import Comments, ExtractedSkill, Operation, Unsupported
 from .registry import STATEMENT_RULES
 
@@ -59,6 +60,7 @@ def self_parameter(func: cst.FunctionDef) -> str:
 
 def read_operations(func: cst.FunctionDef, ctx: ExtractContext) -> None:
     """Fill ``ctx.skill`` with the operations of ``func``'s body."""
+    ctx.function_names = bound_names(func)
     body = func.body
     if not isinstance(body, cst.IndentedBlock):  # def createDescription(self): pass
         statements: list[cst.BaseStatement] = []
@@ -79,6 +81,7 @@ def read_operations(func: cst.FunctionDef, ctx: ExtractContext) -> None:
         comments = Comments(leading=list(stmt.leading_lines),
                             trailing=stmt.trailing_whitespace.comment)
         _read_line_statements(list(stmt.body), comments, ctx, stmt)
+    ctx.skill.operations = drop_dead_literal_locals(ctx.skill.operations)
 
 
 def _read_line_statements(small: list[cst.BaseSmallStatement], comments: Comments,

@@ -5,7 +5,13 @@ ontology given to the migration knows the term under exactly that prefix and, fo
 relation or property, under no other prefix and in the default ``skiros`` prefix (the one a
 short name unknown at run time falls back to); otherwise the verbatim string forms are written
 (``ELEMENT(":Location")``, ``A.relation("turtlebot:docked", B)``), which lower to the same
-legacy strings whatever ontology is loaded later. Meaning never depends on the ontology.
+legacy strings whatever ontology is loaded later. Class and namespace forms (``cora.Robot``,
+``O.has(cora.Position)``) name their prefix, so they cannot change meaning either.
+
+One dependence remains, in the runtime rather than here: a short relation or property name
+resolves to the one property of that local name in the ontology loaded at run time, so
+``A.contain(B)`` means ``foo:contain`` on a robot whose ontology has ``foo:contain`` and no
+``skiros:contain`` (ezskiros_runtime/dsl/vocabulary.py, ``resolve_property``).
 """
 
 from __future__ import annotations

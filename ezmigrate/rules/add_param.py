@@ -49,12 +49,24 @@ def add_param(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[ParamOp
     description = code = None
     if "description" in args:
         description = ctx.string(args["description"], f"the description of {key!r}")
-        code = ctx.code(args["description"]).strip()
+        code = _description_code(args["description"], ctx)
     op = ParamOp(key, _value(args["value"], ctx), _kind(args["param_type"], ctx), options,
                  description, line, options_text=options_text, description_code=code)
     op.comments = statement_comments(stmt, ctx)  # inside a multi-line call
     _findings(op, ctx)
     return [op]
+
+
+def _description_code(node: cst.BaseExpression, ctx: ExtractContext) -> str:
+    """How the signature spells a description: as written when that reads the same value in
+    the class body (a literal, a module constant the class does not rebind), else the
+    literal it resolves to (a local of ``createDescription`` does not exist there)."""
+    if isinstance(node, cst.Name) and ctx.constant(node) is not None \
+            and node.value not in ctx.class_names:
+        return node.value
+    found = ctx.resolved(node)
+    assert found is not None  # ctx.string accepted it
+    return found.code
 
 
 def _value(node: cst.BaseExpression, ctx: ExtractContext) -> ParamValue:
@@ -89,7 +101,14 @@ def _value(node: cst.BaseExpression, ctx: ExtractContext) -> ParamValue:
 
 
 def _element(call: cst.Call, ctx: ExtractContext) -> ElementValue:
-    args = bind_arguments(call, ("etype",), 0, "Element", ctx)
+    args = bind_arguments(call, ("etype", "label", "eid"), 0, "Element", ctx)
+    extra = [what for name, what in (("label", "a label"), ("eid", "an id")) if name in args]
+    if extra:
+        raise Unsupported(
+            f"Element(...) at line {ctx.line(call)} passes {' and '.join(extra)}; upstream "
+            "Element(etype, label=\"\", eid=-1) accepts that, but an EzSkiROS parameter is "
+            "typed by its class alone and has no place for it (pass only the type, or keep "
+            "this skill as it is)", call)
     if "etype" not in args:
         return ElementValue("Unknown")
     return ElementValue(ctx.string(args["etype"], f"the Element type at line {ctx.line(call)}"))

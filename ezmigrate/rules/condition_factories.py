@@ -66,7 +66,7 @@ def factory_condition(node: cst.BaseExpression, ctx: ExtractContext) -> CondSpec
     line = ctx.line(node)
 
     def lit(name: str) -> Literal:
-        found = ctx.literal(args[name])
+        found = ctx.resolved(args[name])
         if found is None:
             raise Unsupported(f"the {name} of {factory} at line {line} is "
                               f"`{ctx.code(args[name]).strip()}`, computed at run time", node)

@@ -50,6 +50,8 @@ def parent_call(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[Opera
         raise Unsupported(f"createDescription of {base} is called at line {ctx.line(stmt)}, "
                           "but it is not a base class of this description", stmt)
     inlined = copy.deepcopy(ctx.parent_operations(base))
-    for op in inlined:  # the base keeps its comments; the child must not repeat them
+    kept: list[Operation] = [op for op in inlined if not isinstance(op, CommentOnly)]
+    for op in kept:  # the base keeps its comments; the child must not repeat them
         op.comments = Comments()
-    return [op for op in inlined if not isinstance(op, CommentOnly)]
+        ctx.skill.inlined_at[id(op)] = ctx.line(stmt)
+    return kept

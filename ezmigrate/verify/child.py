@@ -83,11 +83,11 @@ def load(job: LoadJob) -> LoadOutcome:
     except ModuleLoadError as error:
         status: Status = "syntax" if isinstance(error.__cause__, SyntaxError) \
             else "import-error"
-        message = str(error)
-        if status == "syntax":
-            version = f"{sys.version_info.major}.{sys.version_info.minor}"
-            message = f"cannot import under Python {version}: {message}"
-        return LoadOutcome(status, message, getattr(error, "line", None))
+        message, line = str(error), getattr(error, "line", None)
+        cause = error.__cause__
+        if isinstance(cause, SyntaxError):
+            message, line = syntax_message(cause, source, path, message, line)
+        return LoadOutcome(status, message, line)
     except Exception as error:  # a loader bug still gives a verdict for this file only
         traceback.print_exc(limit=8)  # into the captured stderr, not into the message
         first = (str(error).splitlines() or [""])[0]
@@ -99,6 +99,38 @@ def load(job: LoadJob) -> LoadOutcome:
         errors=[_plain(e) for e in result.errors],
         findings=[_plain(f) for f in result.findings],
         seconds=time.perf_counter() - started)
+
+
+def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,
+                   line: int | None) -> tuple[str, int | None]:
+    """Why a file does not compile, and the line to report.
+
+    "cannot import under Python 3.11" only when the syntax is newer than this Python: libcst
+    (which knows newer grammars) parses the file and Python's own parser does not. A Python 2
+    file, a NUL byte or a truncated file is plain invalid syntax, reported at its line and
+    column (a NUL byte's SyntaxError carries no position: it is found in the bytes).
+    """
+    import libcst
+
+    data = source
+    if error.filename and Path(error.filename) != path:  # raised in a module it imports
+        with contextlib.suppress(OSError):
+            data = Path(error.filename).read_bytes()
+    try:
+        libcst.parse_module(data)
+    except Exception:  # any parser failure: the syntax is simply invalid
+        pass
+    else:
+        version = f"{sys.version_info.major}.{sys.version_info.minor}"
+        return f"cannot import under Python {version}: {message}", line
+    row, column = error.lineno, error.offset
+    if row is None and b"\0" in data:
+        before = data[:data.index(b"\0")]
+        row, column = before.count(b"\n") + 1, len(before) - (before.rfind(b"\n") + 1) + 1
+    where = f"line {row}, column {column}" if row is not None and column is not None \
+        else f"line {row}" if row is not None else "unknown position"
+    name = Path(error.filename).name if error.filename else path.name
+    return f"SyntaxError in {name} at {where}: {error.msg}", line if line is not None else row
 
 
 def _plain(item: Any) -> dict[str, Any]:

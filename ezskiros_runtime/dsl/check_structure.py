@@ -4,11 +4,13 @@
 - an INFERRED parameter that no pre-condition mentions: the skill manager infers parameters
   by reasoning over pre-conditions, so such a parameter can never be filled in;
 - a condition on a key the description never declares (SkiROS2 keeps it silently);
-- the same condition required to hold and not to hold in one list (it can never be met).
+- the same condition required to hold and not to hold in one list, a property wanted equal
+  to two values, or numeric bounds no value fits (none of these can ever be met).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 from ..model import typed
@@ -81,6 +83,7 @@ def check_contradictions(ctx: CheckContext) -> None:
                 f"line {first.line}, which requires the opposite: it can never be met",
                 record.file, record.line, param=cond.subject, relation=cond.vocabulary)
     _check_equal_values(ctx)
+    _check_bounds(ctx)
 
 
 def _check_equal_values(ctx: CheckContext) -> None:
@@ -98,6 +101,70 @@ def _check_equal_values(ctx: CheckContext) -> None:
                     f"{cond.vocabulary} of {cond.subject} to be {cond.value!r}, but line "
                     f"{first.line} wants {first.condition.value!r}: it can never be met",
                     record.file, record.line, param=cond.subject, relation=cond.vocabulary)
+
+
+@dataclass(frozen=True)
+class _Bound:
+    """One side of a numeric condition's interval: ``X > 3.0`` is the lower bound 3.0,
+    strict; ``X == 2`` is both bounds 2, not strict."""
+
+    value: float
+    strict: bool
+    record: Recorded
+
+
+_LOWER = {">": True, ">=": False, "=": False}
+_UPPER = {"<": True, "<=": False, "=": False}
+"""Operator -> strictness of the lower / upper bound it sets."""
+
+
+def _numeric(value: Any) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _empty(lower: _Bound, upper: _Bound) -> bool:
+    """No number lies between the bounds."""
+    if lower.value != upper.value:
+        return lower.value > upper.value
+    return lower.strict or upper.strict
+
+
+def _tighter(old: _Bound | None, new: _Bound, sign: int) -> _Bound:
+    """The bound that leaves fewer values (``sign`` 1 for lower bounds, -1 for upper)."""
+    if old is None or sign * new.value > sign * old.value:
+        return new
+    return new if new.value == old.value and new.strict and not old.strict else old
+
+
+def _check_bounds(ctx: CheckContext) -> None:
+    """One list cannot bound a numeric property so that no value fits (``a.X > 3.0`` and
+    ``a.X < 1.0``). Two ``==`` conditions are left to ``_check_equal_values``."""
+    lowers: dict[tuple[str, str | None, str | None], _Bound] = {}
+    uppers: dict[tuple[str, str | None, str | None], _Bound] = {}
+    reported: set[tuple[str, str | None, str | None]] = set()
+    for record in ctx.trace.recorded:
+        cond = record.condition
+        if cond.kind != "property" or cond.desired is not True or not _numeric(cond.value):
+            continue
+        group = (record.which, cond.vocabulary, cond.subject)
+        if cond.operator in _LOWER:
+            bound = _Bound(float(cond.value), _LOWER[cond.operator], record)
+            lowers[group] = _tighter(lowers.get(group), bound, 1)
+        if cond.operator in _UPPER:
+            bound = _Bound(float(cond.value), _UPPER[cond.operator], record)
+            uppers[group] = _tighter(uppers.get(group), bound, -1)
+        lower, upper = lowers.get(group), uppers.get(group)
+        if lower is None or upper is None or group in reported or not _empty(lower, upper):
+            continue
+        other = lower.record if lower.record is not record else upper.record
+        if other.condition.operator == "=" and cond.operator == "=":
+            continue  # two different values: already a contradiction of its own
+        reported.add(group)
+        ctx.add("contradiction",
+                f"{record.which}-condition {render_condition(cond.to_model())} and line "
+                f"{other.line} ({render_condition(other.condition.to_model())}) leave no "
+                f"value of {cond.vocabulary} for {cond.subject}: they can never both hold",
+                record.file, record.line, param=cond.subject, relation=cond.vocabulary)
 
 
 __all__ = ["check_contradictions", "check_declared", "check_defaults", "check_inferable"]

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from ..ontology.expressions import IntersectionOf
 from .check_context import CheckContext
 from .check_vocabulary import walk
 from .collectors import Recorded
@@ -60,14 +61,25 @@ def _plain_value_type(ctx: CheckContext, key: str) -> str | None:
 
 def _check_side(ctx: CheckContext, record: Recorded, cond: Cond, key: str | None,
                 exprs: Sequence[Any], side: str) -> None:
-    if key is None or not exprs:
+    """One side (subject or object) of a condition against the property's domains/ranges.
+
+    An error only when the condition can never hold: the parameter is no world element, or
+    no class at or below its declared one satisfies every expectation. A parameter whose
+    class is merely wider (``Robot: INFERRED[sumo.Agent]`` where ``sumo:Device`` is
+    expected: ``cora:Robot`` is both) may be bound to a fitting element at run time, which
+    SkiROS2's legacy skills rely on, so that is the ``*_unproven`` kind (a warning).
+    File, line and skill are the finding's own fields (``str(finding)`` shows them).
+    """
+    if key is None:
         return
     kind = "domain" if side == "subject" else "range"
     what = _plain_value_type(ctx, key)
-    if what is not None:  # a float can be in no relation at all
-        ctx.add(kind, f"{cond.vocabulary} relates world elements, but parameter {key} is a "
-                      f"{what}, not an element", record.file, record.line, param=key,
+    if what is not None:  # a float can be in no relation and has no properties at all
+        ctx.add(kind, f"{cond.vocabulary} applies to world elements, but parameter {key} is "
+                      f"a {what}, not a world element", record.file, record.line, param=key,
                 relation=cond.vocabulary, expected="an element", actual=what)
+        return
+    if not exprs:
         return
     iri, _shown = ctx.class_of(key)
     if iri is None:
@@ -78,9 +90,12 @@ def _check_side(ctx: CheckContext, record: Recorded, cond: Cond, key: str | None
         return
     expected = " and ".join(e.render(index.compact) for e in failing)
     actual = index.compact(iri)
-    witnesses = [index.witness(iri, e) for e in failing]
-    if all(witnesses):  # may hold for a narrower element: not provably wrong
-        example = index.compact(str(witnesses[0]))
+    wanted = exprs[0] if len(exprs) == 1 else IntersectionOf(tuple(exprs))  # all at once
+    possible = index.can_satisfy(iri, wanted)
+    if possible is None:  # undecidable below the declared class: report nothing
+        return
+    if possible:
+        example = index.compact(str(index.witness(iri, wanted)))
         ctx.add(f"{kind}_unproven",
                 f"{cond.vocabulary} expects {side} of class {expected}, but parameter {key} "
                 f"is {actual}, which only some elements are ({example} is): narrow the "

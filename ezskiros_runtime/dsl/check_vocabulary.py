@@ -43,10 +43,29 @@ def _known_property(ctx: CheckContext, name: str) -> bool:
     return iri is not None and ctx.index.property(iri) is not None
 
 
+_PROPERTY_NOUNS = {"object": "an object property", "data": "a datatype property",
+                   "annotation": "an annotation property"}
+
+
+def _other_kind(ctx: CheckContext, name: str) -> str | None:
+    """What the ontology does define ``name`` as ("a class", "an object property"), for a
+    name used as something else (``A.has(skiros.Product)``), else None."""
+    iri = to_iri(ctx.index, name)
+    if iri is None:
+        return None
+    if ctx.index.is_class(iri):
+        return "a class"
+    info = ctx.index.property(iri)
+    return _PROPERTY_NOUNS.get(info.kind) if info is not None else None
+
+
 def _unknown_reason(ctx: CheckContext, name: str, what: str) -> str:
     prefix = normalized_name(ctx.index, name).partition(":")[0]
     if prefix not in ctx.index.prefixes and "://" not in name:
         return f"{what} {name}: prefix {prefix!r} is not defined by the loaded ontology"
+    other = _other_kind(ctx, name)
+    if other is not None:
+        return f"{what} {name}: {name} is {other} in the loaded ontology, not a {what}"
     return f"{what} {name} is not in the loaded ontology"
 
 

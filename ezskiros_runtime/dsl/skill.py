@@ -12,6 +12,7 @@ A class without ``description`` declares nothing (it still gets SkiROS2's automa
 
 from __future__ import annotations
 
+import sys
 from typing import Any
 
 from ..diagnostics import DescriptionError, Finding, SkillTypeError
@@ -39,6 +40,14 @@ class SkillDescription(_Base):
 
     findings: list[Finding]
     """What the early checks found when this instance was built (empty when clean)."""
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        """Note the module's file: with no ontology configured from the working directory,
+        the pyproject.toml above it names the ontology (``active.note_source_file``)."""
+        super().__init_subclass__(**kwargs)
+        from ..ontology.active import note_source_file
+
+        note_source_file(getattr(sys.modules.get(cls.__module__), "__file__", None))
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         self.findings = []

@@ -4,6 +4,11 @@ Namespaces (`skiros.Product`) and the early checks need one ontology without eve
 site passing it around, and loading it must happen once per process, not once per skill
 file. `active_index()` resolves the configuration (working directory, environment) on first
 use; the CLI and tests call `use_ontology()` to pin a specific one.
+
+On a robot the working directory is arbitrary (roslaunch starts nodes in ``~/.ros``), so when
+neither an argument, the environment nor a pyproject.toml above the working directory names
+an ontology, the pyproject.toml above the first file that asked for vocabulary (see
+`note_source_file`) is searched before falling back to the bundled vocabulary.
 """
 
 from __future__ import annotations
@@ -11,6 +16,7 @@ from __future__ import annotations
 import os
 import threading
 from collections.abc import Sequence
+from pathlib import Path
 
 from .config import OntologySource, resolve_ontology_paths
 from .index import OntologyIndex, load_index
@@ -18,6 +24,22 @@ from .index import OntologyIndex, load_index
 _lock = threading.RLock()
 _active: OntologyIndex | None = None
 _source: OntologySource | None = None
+_hint: list[Path] = []
+"""The first source file that asked for vocabulary (at most one entry)."""
+
+
+def note_source_file(path: str | os.PathLike[str] | None) -> None:
+    """Remember the file of the first skill module that asks for the ontology.
+
+    Called with the module of a description class when it is defined and with the module
+    importing a prefix (``from ezskiros_runtime.ontology import skiros``, which usually
+    comes first). Only the first real file counts (``<stdin>`` and the like do not).
+    """
+    if _hint or path is None:
+        return
+    file = Path(path)
+    if file.is_absolute() and file.is_file():
+        _hint.append(file)
 
 
 def active_index() -> OntologyIndex:
@@ -64,6 +86,8 @@ def use_ontology(
 def _load_configured() -> OntologyIndex:
     global _source
     source = resolve_ontology_paths()
+    if source.origin == "bundled" and _hint:  # nothing configured from the working directory
+        source = resolve_ontology_paths(start=_hint[0])
     index = load_index(list(source.paths) or None)
     _source = source
     return index

@@ -43,10 +43,11 @@ def bundled_ontology_path() -> Path:
 class PropertyInfo:
     """One object, datatype or annotation property, with its effective domain and range.
 
-    `domains` and `ranges` are the property's own when it declares any, else those inherited
-    from its nearest super-properties that declare some (`domain_sources` / `range_sources`
-    name where they were declared, so a message can say "inherited from ..."). Several
-    entries mean all of them must hold, as several rdfs:domain triples do in OWL.
+    `domains` and `ranges` are the property's own plus those of all its super-properties
+    (RDFS rdfs7 with rdfs2/rdfs3: `x P y` entails `x Q y` for every super-property `Q`);
+    `domain_sources` / `range_sources` name where they were declared, so a message can say
+    "inherited from ...". Several entries mean all of them must hold, as several
+    rdfs:domain triples do in OWL.
     """
 
     iri: str
@@ -198,13 +199,37 @@ class OntologyIndex:
         expected: `cora:Robot` is both) the condition may hold: a checker that calls only
         impossible conditions errors needs the difference. None when no class qualifies.
         """
-        if class_iri not in self.classes:
-            return None
-        below = [c for c in self.classes if class_iri in self.superclasses(c)]
-        for candidate in sorted(below, key=lambda c: (len(self.superclasses(c)), c)):
+        for candidate in self._at_or_below(class_iri):
             if self._satisfies(candidate, expr) is True:
                 return candidate
         return None
+
+    def can_satisfy(self, class_iri: str, expr: ClassExpr) -> bool | None:
+        """Can an element of class `class_iri` belong to `expr`? None when undecidable.
+
+        True when some class at or below `class_iri` satisfies `expr` (a `witness`), False
+        only when every one certainly does not: then the condition can never hold, which is
+        the one case a checker may call an error. An undecidable subclass (an `Unsupported`
+        member) or a class the index does not know gives None: no guessing.
+        """
+        below = self._at_or_below(class_iri)
+        if not below:
+            return None
+        results = {self._satisfies(candidate, expr) for candidate in below}
+        if True in results:
+            return True
+        return None if None in results else False
+
+    def _at_or_below(self, class_iri: str) -> list[str]:
+        """The known classes at or below `class_iri`, fewest superclasses (most general)
+        first so that `witness` names the simplest fix; everything is below owl:Thing."""
+        if class_iri == OWL_THING:
+            below = list(self.classes)
+        elif class_iri in self.classes:
+            below = [c for c in self.classes if class_iri in self.superclasses(c)]
+        else:
+            return []
+        return sorted(below, key=lambda c: (len(self.superclasses(c)), c))
 
     def satisfies(self, class_iri: str, expr: ClassExpr) -> bool | None:
         """Does every instance of `class_iri` belong to `expr`? None when undecidable.

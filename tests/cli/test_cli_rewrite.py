@@ -239,3 +239,43 @@ def test_stdin_is_a_one_file_run_with_reasons_summary_and_report(tmp_path: Path)
     assert check.returncode == 1 and check.stdout.decode() == "would rewrite -\n"
     data = json.loads(report.read_text(encoding="utf-8"))
     assert data["summary"]["converted"] == 3 and data["skills"][0]["file"] == "-"
+
+
+@pytest.mark.parametrize("pattern", ["skills", "skills/*", "skills/pick.py"])
+@pytest.mark.parametrize("inside", [True, False], ids=["from-the-project", "from-outside"])
+def test_project_excludes_see_explicit_files_and_folders_from_anywhere(
+        repo: Path, pattern: str, inside: bool):
+    """``[tool.ezmigrate] exclude`` is relative to its pyproject.toml, as in ruff: it holds
+    for files pre-commit names and for folders, whatever folder the run starts from."""
+    (repo / "pyproject.toml").write_text(f'[tool.ezmigrate]\nexclude = ["{pattern}"]\n',
+                                         encoding="utf-8")
+    cwd = repo if inside else repo.parent
+    base = Path(".") if inside else Path(repo.name)
+    for target in (base / "skills" / "pick.py", base):
+        proc = ezmigrate("rewrite", "--check", "--no-verify", target, cwd=cwd)
+        assert proc.returncode == 0 and proc.stdout == b"", (target, proc.stderr)
+    (repo / "pyproject.toml").write_text('[tool.ezmigrate]\nexclude = ["other"]\n',
+                                         encoding="utf-8")
+    kept = ezmigrate("rewrite", "--check", "--no-verify", base / "skills" / "pick.py", cwd=cwd)
+    assert kept.returncode == 1 and b"would rewrite" in kept.stdout
+
+
+def test_output_dir_refuses_a_second_file_with_the_same_relative_path(tmp_path: Path):
+    """c1/x.py and c2/x.py would both be out/x.py: the second is refused, named with the
+    first, and the run says so (exit 1) instead of reporting two files changed."""
+    for folder, source in (("c1", PICK), ("c2", FIXTURES / "legacy" / "conditions.py")):
+        (tmp_path / folder).mkdir()
+        shutil.copy(source, tmp_path / folder / "x.py")
+    out, report = tmp_path / "out", tmp_path / "r.json"
+    proc = ezmigrate("rewrite", "--no-verify", "c1/x.py", "c2/x.py", "--output-dir", "out",
+                     "--report", report, cwd=tmp_path)
+    stderr = proc.stderr.decode()
+    assert proc.returncode == 1, stderr
+    assert "c2/x.py: its copy out/x.py would overwrite the copy of c1/x.py" in stderr
+    assert "1 files changed" in stderr
+    assert (out / "x.py").read_bytes() == PICK_MIGRATED.read_bytes()
+    assert sorted(p.name for p in out.iterdir()) == ["x.py"]
+    skills = json.loads(report.read_text(encoding="utf-8"))["skills"]
+    refused = [s for s in skills if s["class"] not in ("Pick", "Place", "PickAndPlace")]
+    assert refused and all(s["status"] == "failed" and "would overwrite" in s["reason"]
+                           for s in refused), refused

@@ -88,6 +88,29 @@ def test_unknown_verbatim_relation_warns_with_a_suggestion():
                                "mean cora:robotPart?)")
 
 
+@pytest.mark.parametrize(("condition", "start"), [
+    ("A.has(skiros.Product)", "property skiros:Product: skiros:Product is a class in the "
+                              "loaded ontology, not a property"),
+    ('A.relation("skiros:Location", A)', "relation skiros:Location: skiros:Location is a class"),
+    ("A.is_a(skiros.contain)", "class skiros:contain: skiros:contain is an object property"),
+    ('A.has("skiros:PublishTf")', None),  # a datatype property: right where it is
+])
+def test_vocabulary_of_the_wrong_kind_says_what_it_is(condition, start):
+    namespace: dict[str, object] = {"skiros": skiros}
+    exec(f"def build(A):\n    return {condition}\n", namespace)
+
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location):
+            self.pre_conditions += namespace["build"](A)
+
+    found = check(Skill)
+    if start is None:
+        assert found == []
+        return
+    assert (found[0].kind, found[0].severity) == ("unknown_vocabulary", "warning")
+    assert found[0].message.startswith(start)
+
+
 def test_a_local_name_two_prefixes_define_is_an_error_pointing_to_the_verbatim_form(tmp_path):
     extra = tmp_path / "extra.ttl"
     extra.write_text(
@@ -175,7 +198,8 @@ def test_a_wider_class_is_a_warning_a_disjoint_one_an_error():
     wider = only(Wider)
     assert (wider.kind, wider.severity, wider.param) == ("range_unproven", "warning", "L")
     assert "skiros:TransformationPose" in wider.message and "narrow" in wider.message
-    Wider()  # loads: a warning is no reason to refuse the skill
+    with pytest.warns(EzSkirosWarning, match="narrow the parameter's type"):
+        Wider()  # loads: a warning is no reason to refuse the skill
     disjoint = only(Disjoint)
     assert (disjoint.kind, disjoint.severity) == ("range", "error")
     with pytest.raises(SkillTypeError):
@@ -184,16 +208,101 @@ def test_a_wider_class_is_a_warning_a_disjoint_one_an_error():
         assert only(Wider).severity == "error"
 
 
-def test_a_relation_on_a_parameter_that_is_no_element_is_an_error():
-    use_ontology([PAPER])
+RANGES_TTL = """
+@prefix ex: <http://example.org/ex#> .
+@prefix owl: <http://www.w3.org/2002/07/owl#> .
+@prefix rdfs: <http://www.w3.org/2000/01/rdf-schema#> .
+ex:P a owl:Class .
+ex:A a owl:Class ; rdfs:subClassOf ex:P .
+ex:B a owl:Class ; rdfs:subClassOf ex:P .
+ex:wide a owl:ObjectProperty ; rdfs:range ex:A .
+ex:narrow a owl:ObjectProperty ; rdfs:subPropertyOf ex:wide ; rdfs:range ex:B .
+ex:odd a owl:ObjectProperty ; rdfs:range [ a owl:Class ; owl:intersectionOf ( ex:A
+    [ a owl:Restriction ; owl:onProperty ex:wide ; owl:someValuesFrom ex:B ] ) ] .
+"""
 
-    class OnFloat(SkillDescription):
-        def description(self, P: skiros.Product, S: float):
-            self.pre_conditions += P.hasA(S)
 
-    finding = only(OnFloat)
-    assert (finding.kind, finding.severity, finding.param) == ("range", "error", "S")
-    assert "S is a float, not an element" in finding.message
+@pytest.mark.parametrize(("relation", "expected"), [
+    ("ex:wide", [("range_unproven", "warning")]),  # ex:A, below ex:P, fits
+    ("ex:narrow", [("range", "error")]),  # must be ex:A and ex:B: no class below ex:P is both
+    ("ex:odd", []),  # ex:A may fit, the restriction is undecidable: no guessing
+])
+def test_several_ranges_must_fit_one_class_and_undecidable_ones_report_nothing(
+        tmp_path: Path, relation: str, expected: list[tuple[str, str]]) -> None:
+    """Whether a wider parameter *can* fit is asked of one class for all ranges at once
+    (a subclass fitting each range separately is no witness), and a subclass the index
+    cannot decide keeps an impossible-looking condition from becoming an error."""
+    (tmp_path / "ranges.ttl").write_text(RANGES_TTL)
+    use_ontology([tmp_path / "ranges.ttl"])
+
+    class Skill(SkillDescription):
+        def description(self, X: ELEMENT("ex:P"), Y: ELEMENT("ex:P")):
+            self.pre_conditions += X.relation(relation, Y)
+
+    assert [(f.kind, f.severity) for f in check(Skill)] == expected
+
+
+def test_the_automatic_robot_may_be_a_device(tmp_path: Path) -> None:
+    """The legacy pattern the rule is for: the automatic ``Robot: INFERRED[sumo.Agent]``
+    with ``cora:robotPart`` (domain ``sumo:Device``) may hold, since ``cora:Robot`` is both;
+    the warning names the file, line, parameter and a class to narrow it to."""
+    use_ontology([Path("/work/shared/ontology/skiros2")])
+
+    class Skill(SkillDescription):
+        def description(self, Robot: INFERRED[ELEMENT("sumo:Agent")],
+                        Other: ELEMENT("cora:Robot")):
+            self.pre_conditions += Robot.relation("cora:robotPart", Other)
+
+    finding = only(Skill)
+    assert (finding.kind, finding.severity, finding.param) == ("domain_unproven", "warning",
+                                                               "Robot")
+    assert finding.line == line_of('relation("cora:robotPart", Other)', HERE)
+    assert finding.message == (
+        "cora:robotPart expects subject of class sumo:Device, but parameter Robot is "
+        "sumo:Agent, which only some elements are (cora:Robot is): narrow the parameter's "
+        "type (e.g. to cora:Robot) to be sure")
+    assert str(finding).startswith(f"{finding.location}: Skill: cora:robotPart expects")
+
+
+NO_ELEMENT_TTL = """
+@prefix ex: <http://example.org/ex#> .
+@prefix owl: <http://www.w3.org/2002/07/owl#> .
+ex:Thing a owl:Class .
+ex:near a owl:ObjectProperty .
+ex:Size a owl:DatatypeProperty .
+"""
+
+
+@pytest.mark.parametrize(("condition", "kind", "param", "what"), [
+    ("P.hasA(S)", "range", "S", "float"),
+    ("N.hasA(P)", "domain", "N", "str"),
+    ("S.PositionX > 1.0", "domain", "S", "float"),
+])
+def test_a_condition_on_a_parameter_that_is_no_element_is_an_error(condition, kind, param,
+                                                                    what):
+    namespace: dict[str, object] = {}
+    exec(f"def build(P, S, N):\n    return {condition}\n", namespace)
+
+    class OnPlain(SkillDescription):
+        def description(self, P: skiros.Product, S: float, N: str = "x"):
+            self.pre_conditions += namespace["build"](P, S, N)
+
+    (finding,) = [f for f in check(OnPlain) if f.param == param]  # P may misfit, too
+    assert (finding.kind, finding.severity, finding.param) == (kind, "error", param)
+    assert f"parameter {param} is a {what}, not a world element" in finding.message
+
+
+def test_no_element_is_an_error_even_where_the_ontology_declares_no_domain(tmp_path: Path):
+    """A property without rdfs:domain/range still applies to world elements only."""
+    (tmp_path / "open.ttl").write_text(NO_ELEMENT_TTL)
+    use_ontology([tmp_path / "open.ttl"])
+
+    class Skill(SkillDescription):
+        def description(self, T: ELEMENT("ex:Thing"), S: float, N: str = "x"):
+            self.pre_conditions += T.relation("ex:near", S)
+            self.pre_conditions += N.property("ex:Size", ">", 1.0)
+
+    assert [(f.kind, f.param) for f in check(Skill)] == [("range", "S"), ("domain", "N")]
 
 
 @pytest.mark.parametrize(("condition", "expected", "actual"), [
@@ -312,6 +421,30 @@ def test_one_property_wanted_equal_to_two_values_in_one_list_is_a_contradiction(
             self.pre_conditions += ~ (L.PublishTf == False)
 
     assert check(Fine) == []
+
+
+@pytest.mark.parametrize(("first", "second", "contradicts"), [
+    ("A.PositionX > 3.0", "A.PositionX < 1.0", True),
+    ("A.PositionX >= 2.0", "A.PositionX < 2.0", True),
+    ("A.PositionX >= 2", "A.PositionX <= 2.0", False),  # exactly 2 fits
+    ("A.PositionX == 5", "A.PositionX < 4.5", True),
+    ("A.PositionX > 1.0", "A.PositionX < 3.0", False),
+    ("A.PositionX > 3.0", "~ (A.PositionX > 5.0)", False),  # 4.0 fits
+])
+def test_numeric_bounds_no_value_fits_are_a_contradiction(first, second, contradicts):
+    namespace: dict[str, object] = {}
+    exec(f"def build(A):\n    return [{first}, {second}]\n", namespace)
+
+    class Skill(SkillDescription):
+        def description(self, A: skiros.Location):
+            for cond in namespace["build"](A):
+                self.pre_conditions += cond
+            self.post_conditions += namespace["build"](A)[0]  # other list: independent
+
+    found = [(f.kind, f.severity) for f in check(Skill)]
+    assert found == ([("contradiction", "error")] if contradicts else [])
+    if contradicts:
+        assert "can never both hold" in only(Skill).message
 
 
 def test_a_condition_on_an_undeclared_key_is_kept_and_reported():

@@ -267,6 +267,22 @@ class VariantRobotFirst(SkillDescription):
     def description(self, Robot: INFERRED[sumo.Agent], X: skiros.Product): ...
 
 
+@named("Row")
+class EzForeignElement(SkillDescription):
+    def description(self, Arm: ELEMENT("scalable:Ur5")): ...  # vocabulary the ontology lacks
+
+
+@named("Row")
+class LegacyForeignElement(LegacyDescription):
+    def createDescription(self):
+        self.addParam("Arm", Element("scalable:Ur5"), ParamTypes.Required)
+
+
+@named("Row")
+class VariantForeignElement(SkillDescription):
+    def description(self, Arm: ELEMENT("scalable:Ur10")): ...
+
+
 PARAMETER_ROWS = [
     pytest.param(EzElement, LegacyElement, VariantElement, id="X: skiros.C"),
     pytest.param(EzInferred, LegacyInferred, EzOptionalElement, id="X: INFERRED[skiros.C]"),
@@ -291,6 +307,8 @@ PARAMETER_ROWS = [
     pytest.param(EzDescribedBare, LegacyDescribed, VariantDescribed,
                  id='S: OPTIONAL[float, "m/s"] = 0.5'),
     pytest.param(EzKey, LegacyKey, VariantKey, id='REQUIRED[bool, KEY("On/Off")] = True'),
+    pytest.param(EzForeignElement, LegacyForeignElement, VariantForeignElement,
+                 id='X: ELEMENT("scalable:Ur5") (not in the ontology)'),
     pytest.param(EzRobotLast, LegacyRobotAutomatic, VariantRobotFirst,
                  id="Robot: INFERRED[sumo.Agent] last"),
 ]
@@ -348,9 +366,37 @@ def typed_b(d: Any) -> Any:
     return d.getOnTypeCond("BOfType", "B", "skiros:Product")
 
 
+def other_statements(relation: str) -> type:
+    """An EzSkiROS class whose body also runs statements that are no conditions (§5 of the
+    legacy API: ``setAvailableForPlanning``, a plain attribute assignment); ``relation`` is
+    read back from the attribute, so the variant shows the statements really run."""
+
+    @named("Row")
+    class Row(SkillDescription):
+        def description(self, A: skiros.Location, B: skiros.Product,
+                        G: rparts.GripperEffector, R: cora.Robot):
+            self.setAvailableForPlanning(False)
+            self.relation_name = relation
+            self.pre_conditions += A.relation(self.relation_name, B)
+
+    return Row
+
+
+@named("Row")
+class LegacyOtherStatements(LegacyDescription):
+    def createDescription(self):
+        self.setAvailableForPlanning(False)
+        self.relation_name = "skiros:contain"
+        for key, owl_class in PARAMS:
+            self.addParam(key, Element(owl_class), ParamTypes.Required)
+        self.addPreCondition(contain(self))
+
+
 CONDITION_ROWS = [
     pytest.param(ez(lambda A, B, G, R: A.contain(B)), legacy(contain),
                  ez(lambda A, B, G, R: ~A.contain(B)), id="A.contain(B)"),
+    pytest.param(other_statements("skiros:contain"), LegacyOtherStatements,
+                 other_statements("skiros:hasA"), id="other statements kept"),
     pytest.param(ez(lambda A, B, G, R: ~A.contain(B)), legacy(lambda d: contain(d, False)),
                  ez(lambda A, B, G, R: A.contain(B)), id="~ A.contain(B)"),
     pytest.param(ez(lambda A, B, G, R: G.relation("cora:robotPart", R)),
@@ -438,3 +484,12 @@ def test_form_loads_equal_to_its_legacy_counterpart_and_the_variant_does_not(
 @pytest.mark.parametrize("ez_class", [row.values[0] for row in PARAMETER_ROWS + CONDITION_ROWS])
 def test_every_form_passes_the_type_checks(ez_class):
     assert [f for f in check(ez_class) if f.severity == "error"] == []
+
+
+def test_other_statements_run_in_both_backends():
+    """``setAvailableForPlanning`` is recorded but is no part of the model (§8.10: only some
+    SkiROS2 branches have it); attribute assignments stay on the instance, in both forms."""
+    for cls in (other_statements("skiros:contain"), LegacyOtherStatements):
+        instance = cls()
+        assert instance._available_for_planning is False
+        assert instance.relation_name == "skiros:contain"

@@ -59,15 +59,49 @@ def test_an_unknown_name_is_an_attribute_error_with_suggestions():
 
 def test_an_unknown_prefix_fails_with_a_suggestion():
     message = r"no ontology prefix 'skirso' in the active ontology \(did you mean skiros\?\)"
-    with pytest.raises(UnknownPrefixError, match=message):
-        ontology.skirso  # noqa: B018
-    with pytest.raises(ImportError, match=message) as raised:  # the import statement, too
+    with pytest.raises(UnknownVocabularyError, match=message):
+        ontology.skirso  # noqa: B018 - an AttributeError, so that:
+    assert not hasattr(ontology, "skirso")
+    assert getattr(ontology, "skirso", None) is None
+    with pytest.raises(UnknownPrefixError, match=message) as raised:  # the import statement
         from ezskiros_runtime.ontology import skirso  # noqa: F401
     assert raised.value.suggestions == ("skiros",)
+    assert isinstance(raised.value, ImportError)
     with pytest.raises(UnknownVocabularyError, match=r"did you mean skiros\.Product"):
         skiros.Prodcut  # noqa: B018 - inside a namespace: an AttributeError, as hasattr expects
     assert not hasattr(skiros, "Prodcut")
     assert ontology.use_ontology is use_ontology  # helpers are not prefixes
+
+
+SHADOWING_TTL = """
+@prefix data: <http://example.org/data#> .
+@prefix cache: <http://example.org/cache#> .
+@prefix owl: <http://www.w3.org/2002/07/owl#> .
+data:Box a owl:Class .
+cache:Shelf a owl:Class .
+"""
+
+
+def test_prefixes_named_like_internal_modules_win(tmp_path):
+    """An ontology's ``data`` or ``cache`` prefix is importable although the package has
+    submodules of those names (``cache`` is imported already, so bound as an attribute);
+    the public helpers still win, and importing from the modules keeps working."""
+    (tmp_path / "shadow.ttl").write_text(SHADOWING_TTL)
+    use_ontology([tmp_path / "shadow.ttl"])
+    from ezskiros_runtime.ontology import cache, data
+    from ezskiros_runtime.ontology.cache import default_cache_dir
+
+    assert data.Box.qname == "data:Box"
+    assert cache.Shelf.qname == "cache:Shelf"
+    assert ontology.cache is cache
+    assert callable(default_cache_dir)
+    assert ontology.load_index is load_index
+    assert sys.modules["ezskiros_runtime.ontology.cache"].__name__ == \
+        "ezskiros_runtime.ontology.cache"
+    use_ontology(load_index())  # no such prefixes: the modules again
+    from ezskiros_runtime.ontology import cache as module
+
+    assert module is sys.modules["ezskiros_runtime.ontology.cache"]
 
 
 def test_dir_lists_the_names_of_the_prefix():

@@ -548,7 +548,10 @@ def test_s8_10_set_available_for_planning_keeps_file_loadable(tmp_path: Path) ->
     assert got["Hidden"].pre == got["Shown"].pre == ()
 
 
-def test_s8_11_backend_is_detected_by_importing_skiros2_common() -> None:
+def test_s8_11_stand_in_skiros2_common_works_without_rospy_and_is_removed_afterwards() -> None:
+    """Our stand-in ``skiros2_common`` (SkiROS2's own needs rospy, §8.11) exists only inside
+    ``legacy_imports``. Detecting the backend by importing skiros2_common is tested in
+    tests/dsl/test_dsl_backend.py."""
     assert importlib.util.find_spec("skiros2_common") is None
     with pytest.raises(ImportError):
         import skiros2_common  # noqa: F401

@@ -245,3 +245,98 @@ def test_defaults_the_class_body_would_read_differently_block_the_skill():
     assert_skipped(module + "    LIMIT = 2.0\n\n    def createDescription(self):\n"
                    '        self.addParam("Speed", Move.LIMIT, ParamTypes.Optional)\n',
                    "`Move.LIMIT`", "Move is not defined yet")
+
+
+def test_identifier_keys_keep_their_own_name_before_made_up_ones_take_it():
+    """``"Target Location"`` would be spelt ``Target_Location``, but that is the real key
+    declared after it: the real key keeps its name, the made-up one moves aside."""
+    assert_migrates(case(
+        '        self.addParam("Target Location", Element("skiros:Location"), ParamTypes.Required)\n'
+        '        self.addParam("Target_Location", Element("skiros:Location"), ParamTypes.Required)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, REQUIRED, KEY
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    Target_Location_2: REQUIRED[skiros.Location, KEY("Target Location")],
+                    Target_Location: skiros.Location):
+        pass
+''')
+
+
+def test_module_constants_as_keys_and_descriptions_resolve_like_constant_values():
+    assert_migrates('KEY_NAME = "Target"\nWHERE = "where to go"\n' + case(
+        '        self.addParam(KEY_NAME, Element("skiros:Location"), ParamTypes.Required,\n'
+        '                      description=WHERE)\n'
+        '        self.addPreCondition(self.getRelationCond("c", "skiros:contain", KEY_NAME, "B", True))\n'
+    ), '''\
+KEY_NAME = "Target"
+WHERE = "where to go"
+from ezskiros_runtime import SkillDescription, REQUIRED, DESC
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    Target: REQUIRED[skiros.Location, DESC(WHERE)]):
+        self.pre_conditions += Target.contain(self.param("B")).named("c")
+''')
+
+
+def test_module_constants_a_local_or_the_class_shadows_are_not_used_as_such():
+    """``createDescription`` binding the name makes it local throughout (legacy fails there
+    too); a name bound twice (here also by the class) is no constant."""
+    assert_skipped('KEY_NAME = "Target"\n' + case(
+        '        self.addParam(KEY_NAME, float, ParamTypes.Required)\n'
+        '        KEY_NAME = compute()\n'), "`KEY_NAME`", "computed at run time")
+    assert_skipped(HEADER + ('\nWHERE = "there"\n\n\nclass S(SkillDescription):\n'
+                             '    WHERE = "here"\n\n    def createDescription(self):\n'
+                             '        self.addParam("A", float, ParamTypes.Required, [], WHERE)\n'),
+                   "`WHERE`", "computed at run time")
+
+
+def test_a_description_held_in_a_local_is_written_as_its_value():
+    """The signature is read in the class body, where ``createDescription``'s locals do not
+    exist: ``DESC(unit)`` would be a NameError."""
+    assert_migrates(case(
+        '        unit = "m/s"\n'
+        '        self.addParam("Speed", 0.5, ParamTypes.Optional, [], unit)\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, OPTIONAL, DESC
+
+
+class S(SkillDescription):
+    def description(self,
+                    Speed: OPTIONAL[float, DESC("m/s")] = 0.5):
+        pass
+''')
+
+
+def test_an_element_label_has_no_place_in_the_signature_and_says_so():
+    assert_skipped(case(
+        '        self.addParam("A", Element("skiros:Product", "cup"), ParamTypes.Required)\n'),
+        "line 8", "passes a label", 'Element(etype, label="", eid=-1) accepts that',
+        "pass only the type")
+
+
+def test_findings_point_at_the_add_param_or_condition_that_causes_them():
+    result = assert_migrates(case(
+        '        self.addParam("A", Element("Location"), ParamTypes.Required)\n'
+        '        self.addParam("B", Element("skiros:Nope"), ParamTypes.Required)\n'
+        '        self.addPreCondition(self.getRelationCond("c", "skiros:nothere", "A", "W", True))\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, ELEMENT
+
+
+class S(SkillDescription):
+    def description(self,
+                    A: ELEMENT("Location"),
+                    B: ELEMENT("skiros:Nope")):
+        self.pre_conditions += A.relation("skiros:nothere", self.param("W")).named("c")
+''')
+    lines = {(f.kind, f.message.split("'")[-2]): f.line for f in result.skills[0].findings}
+    assert lines == {("undeclared-key", "W"): 10, ("element-type-spelling", "Location"): 8,
+                     ("unknown-vocabulary", "skiros:Nope"): 9,
+                     ("unknown-vocabulary", "skiros:nothere"): 10}, lines

@@ -123,3 +123,16 @@ def test_condition_function_and_odd_desired_states_are_skipped():
                    "desired state")
     assert_skipped(case('        self.addPreCondition(self.getRelationCond(self.l, "skiros:at", "A", "B", True))\n'),
                    "computed at run time")
+
+
+def test_short_forms_only_for_the_default_prefix_other_prefixes_stay_qualified():
+    """``A.hasPart(B)`` would resolve by local name in whatever ontology the robot loads
+    (``skiros:hasPart`` when it lacks ``sumo:hasPart``): only ``skiros`` vocabulary, the
+    prefix a short name falls back to, gets the short form."""
+    assert_migrates(case(
+        '        self.addPreCondition(self.getRelationCond("AHasPartB", "sumo:hasPart", "A", "B", True))\n'
+        '        self.addPreCondition(self.getPropCond("AMeasure", "sumo:measure", "A", "=", 1, True))\n'
+        '        self.addPreCondition(self.getRelationCond("AContainB", "skiros:contain", "A", "B", True))\n'
+    ), expected('        self.pre_conditions += A.relation("sumo:hasPart", B)\n'
+                '        self.pre_conditions += A.property("sumo:measure", "=", 1)\n'
+                '        self.pre_conditions += A.contain(B)\n'))

@@ -2,7 +2,8 @@
 
 ``impl.py`` doing ``from .descriptions import Navigate, Element`` must keep working after
 ``descriptions.py`` is migrated: migration removes a legacy import only when no module of
-the package imports that name from the file (a star import keeps them all).
+the package imports that name from the file (a star import keeps them all) or reads it as
+an attribute of the file imported as a module (``import pkg.descriptions as m``, ``m.X``).
 """
 
 from __future__ import annotations
@@ -34,6 +35,10 @@ def _cli(*args: object) -> subprocess.CompletedProcess[str]:
     ("from .descriptions import Navigate, Element\n", "Element", "ParamTypes"),
     ("from pkg.descriptions import ParamTypes as PT\n", "ParamTypes", "Element"),
     ("from .descriptions import *\n", "ParamTypes, Element", None),
+    # the module itself imported, its legacy names read as attributes
+    ("import pkg.descriptions as m\nTARGET = m.Element\n", "Element", "ParamTypes"),
+    ("from pkg import descriptions as d\nKIND = d.ParamTypes\n", "ParamTypes", "Element"),
+    ("from . import descriptions\nKIND = descriptions.ParamTypes\n", "ParamTypes", "Element"),
 ])
 def test_names_imported_by_siblings_stay_importable(tmp_path: Path, importer: str,
                                                     kept: str, dropped: str | None):

@@ -79,3 +79,12 @@ def test_crlf_tabs_bom_cookie_and_missing_final_newline_are_kept():
 def test_unparseable_source_is_reported_with_line_and_column():
     result = run("class S(SkillDescription):\n    def createDescription(self):\n        print 'x'\n")
     assert result.error is not None and "line 3" in result.error and result.new_source is None
+
+
+def test_a_file_too_deeply_nested_for_libcst_is_reported_with_its_line():
+    deep = LEGACY + "\n\nLIMIT = " + "-" * 1000 + "1\n"
+    result = run(deep)
+    line = deep.splitlines().index("LIMIT = " + "-" * 1000 + "1") + 1
+    assert result.error is not None and result.new_source is None and not result.skills
+    assert result.error.startswith(f"nested too deeply to migrate (the statement at line {line})")
+    assert result.error_line == line

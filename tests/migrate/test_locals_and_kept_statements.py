@@ -22,9 +22,53 @@ class S(SkillDescription):
     def description(self,
                     A: skiros.Location,
                     B: skiros.Product):
-        obj = "B"
         self.pre_conditions += A.contain(B)
         self.post_conditions += A.contain(B)
+''')
+
+
+def test_inlined_literal_locals_go_but_their_comments_stay():
+    """Every read of ``obj`` and ``rel`` was inlined, so their assignments would be dead code
+    (ruff F841); ``b = a`` is dead too once nothing reads ``b``, and then so is ``a``."""
+    assert_migrates(START + (
+        '        # the thing to hold\n'
+        '        obj = "B"  # a product\n'
+        '        rel = "skiros:contain"\n'
+        '        a = "m/s"\n'
+        '        b = a\n'
+        '        self.addParam("A", Element("skiros:Location"), ParamTypes.Required, [], b)\n'
+        '        self.addParam(obj, Element("skiros:Product"), ParamTypes.Required)\n'
+        '        self.addPreCondition(self.getRelationCond("AContainB", rel, "A", obj, True))\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, REQUIRED, DESC
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    A: REQUIRED[skiros.Location, DESC("m/s")],
+                    B: skiros.Product):
+        # the thing to hold
+        # a product
+        self.pre_conditions += A.contain(B)
+''')
+
+
+def test_a_literal_local_something_kept_still_reads_stays():
+    assert_migrates(START + (
+        '        obj = "B"\n'
+        '        self.addParam(obj, Element("skiros:Product"), ParamTypes.Required)\n'
+        '        self.note = obj\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription
+from ezskiros_runtime.ontology import skiros
+
+
+class S(SkillDescription):
+    def description(self,
+                    B: skiros.Product):
+        obj = "B"
+        self.note = obj
 ''')
 
 

@@ -2,14 +2,21 @@
 
 from __future__ import annotations
 
+import importlib
+import runpy
+import shutil
+import textwrap
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 
-from ezskiros_runtime.ontology import active
 from ezskiros_runtime.ontology.errors import OntologyConfigError
 from ezskiros_runtime.ontology.index import bundled_ontology_path, load_index
+
+# The module itself, without asking the package (which would load the active ontology to see
+# whether a prefix named `active` shadows the module).
+active = importlib.import_module("ezskiros_runtime.ontology.active")
 
 REPO = Path(__file__).resolve().parents[2]
 FIXTURES = REPO / "fixtures" / "ontology"
@@ -26,6 +33,7 @@ def isolated(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[None]:
     workdir = tmp_path / "work"
     workdir.mkdir()
     monkeypatch.chdir(workdir)
+    monkeypatch.setattr(active, "_hint", [])  # no skill file has asked yet
     yield
     active._active, active._source = saved
 
@@ -71,3 +79,41 @@ def test_use_ontology_with_a_missing_path_keeps_the_old_index() -> None:
     with pytest.raises(OntologyConfigError, match=r"missing\.ttl"):
         active.use_ontology(["missing.ttl"])
     assert active.active_index() is before
+
+
+def _robot_package(tmp_path: Path, skill_source: str) -> tuple[Path, Path]:
+    """A package configuring its ontology in pyproject.toml, and one skill file in it."""
+    project = tmp_path / "robot_pkg"
+    (project / "src" / "skills").mkdir(parents=True)
+    shutil.copy(FIXTURES / "inheritance.ttl", project / "workcell.ttl")
+    (project / "pyproject.toml").write_text('[tool.ezmigrate]\nontology = ["workcell.ttl"]\n')
+    skill = project / "src" / "skills" / "grip.py"
+    skill.write_text(textwrap.dedent(skill_source))
+    return project / "pyproject.toml", skill
+
+
+@pytest.mark.parametrize("skill_source", [
+    "from ezskiros_runtime.ontology import workcell\n",  # the usual first request: a prefix
+    """
+    from ezskiros_runtime import ELEMENT, SkillDescription
+
+    class Grip(SkillDescription):
+        def description(self, H: ELEMENT("workcell:Hand")): ...
+    """,
+])
+def test_unconfigured_the_pyproject_above_the_first_skill_file_names_the_ontology(
+        tmp_path: Path, skill_source: str) -> None:
+    """On a robot the working directory is arbitrary: the skill's own package decides."""
+    pyproject, skill = _robot_package(tmp_path, skill_source)
+    runpy.run_path(str(skill))
+    assert active.active_index().is_class(WC + "Hand")
+    assert active.active_source().origin == f"pyproject:{pyproject}"
+
+
+def test_the_working_directory_still_comes_first(tmp_path: Path) -> None:
+    _theirs, skill = _robot_package(tmp_path, "from ezskiros_runtime.ontology import skiros\n")
+    ours = Path.cwd() / "pyproject.toml"
+    shutil.copy(FIXTURES / "paper.ttl", ours.parent / "paper.ttl")
+    ours.write_text('[tool.ezmigrate]\nontology = ["paper.ttl"]\n')
+    runpy.run_path(str(skill))
+    assert active.active_source().origin == f"pyproject:{ours}"

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import json
 import os
 import shutil
@@ -11,8 +12,11 @@ from pathlib import Path
 
 import pytest
 
-from ezskiros_runtime.ontology import cache as index_cache
 from ezskiros_runtime.ontology.index import load_index
+
+# The module itself, without asking the package: an ontology prefix named `cache` would win
+# there, and asking loads the active ontology to find out.
+index_cache = importlib.import_module("ezskiros_runtime.ontology.cache")
 
 REPO = Path(__file__).resolve().parents[2]
 FIXTURES = REPO / "fixtures" / "ontology"
@@ -21,11 +25,11 @@ WC = "http://example.org/ontologies/workcell.owl#"
 
 CHILD = """
 import json, sys
-from ezskiros_runtime.ontology import cache
+from ezskiros_runtime.ontology.cache import stats
 from ezskiros_runtime.ontology.index import load_index
 index = load_index(sys.argv[1:])
-print(json.dumps({"rdflib": "rdflib" in sys.modules, "hits": cache.stats.hits,
-                  "writes": cache.stats.writes, "classes": len(index.classes),
+print(json.dumps({"rdflib": "rdflib" in sys.modules, "hits": stats.hits,
+                  "writes": stats.writes, "classes": len(index.classes),
                   "fingerprint": index.fingerprint}))
 """
 

@@ -7,7 +7,8 @@ starts ``rewrite`` in a subprocess and signals it after a random delay (discover
 migration), once its verification workers run, or right after its first file was replaced
 (the writing phase; once with two signals in a row), then checks every byte on disk against
 the original and the reference migration, the list of written files it printed against the
-disk, and that a second run finishes the job. Set EZMIGRATE_SAFETY_SEED to replay delays.
+disk, and that a second run finishes the job. The delays come from a fixed seed (printed
+with every failure); set EZMIGRATE_SAFETY_SEED to try others.
 """
 
 from __future__ import annotations
@@ -24,12 +25,20 @@ import time
 from pathlib import Path
 
 import pytest
-from safety_support import LEGACY, assert_no_traceback, cli, leftovers, snapshot, start_cli
+from safety_support import (
+    ISOLATION,
+    LEGACY,
+    assert_no_traceback,
+    cli,
+    leftovers,
+    snapshot,
+    start_cli,
+)
 
 pytestmark = pytest.mark.slow
 
 COPIES = 3
-SEED = int(os.environ.get("EZMIGRATE_SAFETY_SEED", "0")) or random.randrange(1, 10**6)
+SEED = int(os.environ.get("EZMIGRATE_SAFETY_SEED", "0")) or 20261122  # fixed: reproducible
 WORKER_MARK = "17.25"  # an unusual --timeout: lets the test find this run's workers
 
 
@@ -207,6 +216,44 @@ def test_interrupted_run_leaves_old_or_new_files_and_a_second_run_finishes(
     assert leftovers(folder) == []
 
 
+def test_a_killed_run_leaves_whole_files_and_the_next_run_removes_its_temporaries(
+        corpus, tmp_path):
+    """SIGKILL cannot be caught: it may leave a temporary file, never a half-written .py.
+    A dry run lists the temporary files; the next run that writes removes them and
+    finishes the job."""
+    template, originals, expected, reference_code = corpus
+    folder = tmp_path / "tree"
+    shutil.copytree(template, folder)
+    process = start_cli("rewrite", folder, "--no-verify")
+    try:
+        _signal_after_first_write(process, folder, signal.SIGKILL, 0.005, False)
+        process.communicate(timeout=600)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert process.returncode in (-signal.SIGKILL, reference_code)
+    for name, data in snapshot(folder).items():
+        if name.endswith(".py"):
+            assert data in (originals[name], expected[name]), f"{name} is neither old nor new"
+            ast.parse(data)
+    # what a kill in the middle of a write leaves: a temporary file beside its original
+    changed = next(n for n in sorted(originals) if expected[n] != originals[n])
+    stale = folder / Path(changed).parent / f".{Path(changed).name}.k1ll3d00.ezmigrate"
+    stale.write_bytes(expected[changed][: len(expected[changed]) // 2])
+
+    dry = cli("rewrite", folder, "--no-verify", "--dry-run")
+    assert f"{stale}: temporary file left by an interrupted run" in dry.stderr, dry.stderr
+    assert stale.exists(), "a dry run writes (and removes) nothing"
+    second = cli("rewrite", folder, "--no-verify")
+
+    assert_no_traceback(second.stderr)
+    assert second.returncode == reference_code, second.stderr
+    assert f"{stale}: removed" in second.stderr, second.stderr
+    assert snapshot(folder) == expected, "the second run finished the job"
+    assert leftovers(folder) == []
+
+
 @pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM, signal.SIGHUP])
 def test_stdin_mode_interrupted_while_reading_exits_cleanly(signum):
     """``rewrite -`` waiting for its input: stopped, it writes nothing and says so."""
@@ -226,3 +273,71 @@ def test_stdin_mode_interrupted_while_reading_exits_cleanly(signum):
     assert stdout == ""
     assert_no_traceback(stderr)
     assert f"interrupted by {signal.Signals(signum).name} before any file was written" in stderr
+
+
+def _processes() -> dict[int, tuple[int, int, str]]:
+    """pid -> (parent pid, process group, state) of every process, from ``/proc``."""
+    found = {}
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            stat = (entry / "stat").read_text()
+        except OSError:
+            continue
+        fields = stat[stat.rindex(")") + 2:].split()  # after "pid (comm) "
+        found[int(entry.name)] = (int(fields[1]), int(fields[2]), fields[0])
+    return found
+
+
+def _descendants(pid: int) -> dict[int, tuple[int, int]]:
+    """Living descendants of ``pid``: pid -> (process group, depth: 1 for a child)."""
+    table = _processes()
+    found: dict[int, tuple[int, int]] = {}
+    todo = [(pid, 0)]
+    while todo:
+        parent, depth = todo.pop()
+        for child, (ppid, pgid, state) in table.items():
+            if ppid == parent and state != "Z" and child not in found:
+                found[child] = (pgid, depth + 1)
+                todo.append((child, depth + 1))
+    return found
+
+
+def _left(pids: set[int], groups: set[int]) -> list[int]:
+    """Those of ``pids``, or members of ``groups``, still alive (zombies count as gone)."""
+    return sorted(pid for pid, (_, pgid, state) in _processes().items()
+                  if state != "Z" and (pid in pids or pgid in groups))
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT])
+def test_an_interrupted_verification_leaves_no_worker_or_child_running(tmp_path, signum):
+    """A module looping at import, 30 s timeout: stopping the run stops its load at once."""
+    folder = tmp_path / "tree"
+    folder.mkdir()
+    shutil.copyfile(ISOLATION / "loops_forever.py", folder / "loops_forever.py")
+    process = start_cli("rewrite", folder, "--timeout", "30")
+    ours: dict[int, tuple[int, int]] = {}
+    try:
+        deadline = time.monotonic() + 120
+        while process.poll() is None and time.monotonic() < deadline:
+            ours = _descendants(process.pid)
+            if any(depth >= 2 for _, depth in ours.values()):
+                break  # a worker's verification child is loading
+            time.sleep(0.05)
+        time.sleep(0.5)
+        ours = _descendants(process.pid)
+        assert process.poll() is None, "the run ended before a child was loading"
+        process.send_signal(signum)
+        stopped = time.monotonic()
+        _, stderr = process.communicate(timeout=60)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert process.returncode == 128 + signum, stderr
+    assert_no_traceback(stderr)
+    groups = {pgid for pgid, _ in ours.values() if pgid != os.getpgid(0)}
+    while _left(set(ours), groups) and time.monotonic() < stopped + 5:
+        time.sleep(0.05)
+    assert _left(set(ours), groups) == [], "workers or their children outlived the run"

@@ -167,3 +167,45 @@ def test_dry_run_without_verification_runs_no_user_code_even_when_hostile(tmp_pa
     assert run.returncode == 0, run.stderr
     assert_no_traceback(run.stderr)
     assert "xxxxxxxxxx" not in run.stdout
+
+
+FORKS = """
+import time
+if os.fork() == 0:  # a daemon started at import; it never ends by itself
+    with open({mark!r}, "a") as handle:
+        handle.write(f"{{os.getpid()}}\\n")
+    while True:
+        time.sleep(0.05)
+{tail}"""
+
+
+def _alive(pid: int) -> bool:
+    try:
+        stat = open(f"/proc/{pid}/stat").read()  # noqa: SIM115
+    except OSError:
+        return False
+    return stat[stat.rindex(")") + 2] != "Z"
+
+
+@pytest.mark.parametrize(("tail", "verdict"), [("while True:\n    pass\n", "timeout"),
+                                                ("", "converted")])
+def test_processes_a_module_forks_do_not_outlive_its_load(tmp_path, tail, verdict):
+    """Each child leads its own process group; the whole group is killed when its load
+    ends, by timeout or normally, so a module's forks leave no orphan behind."""
+    folder, mark = tmp_path / "tree", tmp_path / "forked.pids"
+    folder.mkdir()
+    (folder / "forks.py").write_text(
+        HEADER.format(name="Forks") + FORKS.format(mark=str(mark), tail=tail),
+        encoding="utf-8")
+    report = tmp_path / "r.json"
+    run = cli("rewrite", folder, "--dry-run", "--timeout", "3", "--report", report,
+              timeout=300)
+    assert_no_traceback(run.stderr)
+    skills = json.loads(report.read_text(encoding="utf-8"))["skills"]
+    assert verdict in " ".join(f"{s['status']} {s['reason']}" for s in skills), skills
+    pids = [int(line) for line in mark.read_text().split()]
+    assert pids, "the module forked"
+    deadline = time.monotonic() + 5
+    while any(map(_alive, pids)) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not any(map(_alive, pids)), f"orphans of the module: {pids}"
