@@ -423,15 +423,15 @@ def _can_hold(relation: str, subject_type: str, object_type: str) -> bool:
     with ``skiros:hasA``; random pairs would be type errors that EzSkiROS (rightly) refuses,
     which no real repository is made of.
     """
+    from ezskiros_runtime.ontology.expressions import every
+
     index = _index()
     info = index.property(index.expand(relation) or "")
     for type_string, exprs in ((subject_type, info.domains if info else ()),
                                (object_type, info.ranges if info else ())):
         iri = index.expand(type_string)
-        for expr in exprs:
-            if iri is not None and index.satisfies(iri, expr) is False \
-                    and index.witness(iri, expr) is None:
-                return False
+        if iri is not None and exprs and index.can_satisfy(iri, every(exprs)) is False:
+            return False  # the early checks' own rule for an error (check_types.py)
     return True
 
 

@@ -280,7 +280,8 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
             raise Unsupported(settings.held[cls.name])
         if cls.kept is not None:
             raise Unsupported(cls.kept)
-        _check_bindings(cls, positions)
+        bindings = class_bindings(cls.node)
+        _check_bindings(cls, bindings, positions)
         if cls.other_bases:
             raise Unsupported(f"{cls.name} derives from several classes; a migration could "
                               "change its method resolution order")
@@ -296,7 +297,7 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
         ctx = ExtractContext(module=module, names=names, positions=positions, skill=skill,
                              constants=constants,
                              self_name=self_parameter(func), class_name=cls.name,
-                             class_names=frozenset(n for n, _ in class_bindings(cls.node)),
+                             class_names=frozenset(n for n, _ in bindings),
                              base_names=[cls.base] if cls.base else [],
                              parent_operations=lambda base: _parent_operations(cls, base,
                                                                                effective))
@@ -419,13 +420,14 @@ def _convert_class(node: cst.ClassDef, plan: _Plan) -> cst.ClassDef:
     return node.with_changes(bases=bases, body=body)
 
 
-def _check_bindings(cls: DescriptionClass, positions: Mapping[cst.CSTNode, object]) -> None:
-    """Refuse classes whose own names the migrated method would collide with."""
+def _check_bindings(cls: DescriptionClass, bindings: list[tuple[str, cst.CSTNode]],
+                    positions: Mapping[cst.CSTNode, object]) -> None:
+    """Refuse classes whose own names (``class_bindings``) the migrated method would
+    collide with."""
     def line(node: cst.CSTNode) -> int:
         start = getattr(positions.get(node), "start", None)
         return start.line if start is not None else 0
 
-    bindings = class_bindings(cls.node)
     own = [node for name, node in bindings if name == "description"]
     if own:
         raise Unsupported(f"{cls.name} already defines `description` (line {line(own[0])}); "

@@ -74,11 +74,12 @@ def _nothing_to_compare(old: Path | None, new: Path | None) -> bool:
         return False  # the load reports why the file cannot be read
 
 
-def _same_bytes(old: Path, new: Path) -> bool:
+def _read(path: Path) -> bytes | None:
+    """The file's bytes, or None when it cannot be read (its load already said why)."""
     try:
-        return old.read_bytes() == new.read_bytes()
+        return path.read_bytes()
     except OSError:
-        return False
+        return None
 
 
 def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
@@ -114,9 +115,10 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
             continue
         before = outcomes[slots[2 * index]]
         after = outcomes[slots[2 * index + 1]]
+        old_bytes, new_bytes = _read(old), _read(new)
         if not before.loaded or not after.loaded:
             capture(result.notes, before, after)
-            if _same_bytes(old, new):  # nothing was migrated: a note, not an error
+            if old_bytes is not None and old_bytes == new_bytes:  # not migrated: a note
                 result.notes.insert(0, "unchanged, not loadable: "
                                     + load_failure("unchanged", before))
                 continue
@@ -125,7 +127,11 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
             result.error = load_failure(side, outcome)
             result.error_line = outcome.line
             continue
-        result.skills = _compare(old.read_bytes(), new.read_bytes(), before, after, options)
+        if old_bytes is None or new_bytes is None:  # vanished since it was loaded
+            unloadable = True
+            result.error = "could not be read again after loading: nothing was compared"
+            continue
+        result.skills = _compare(old_bytes, new_bytes, before, after, options)
         attach_findings(result.skills, after, skip=frozenset())
     return results, unloadable
 

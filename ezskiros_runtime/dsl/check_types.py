@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from ..ontology.expressions import IntersectionOf
+from ..ontology.expressions import every
 from .check_context import CheckContext
 from .check_vocabulary import walk
 from .collectors import Recorded
@@ -90,7 +90,7 @@ def _check_side(ctx: CheckContext, record: Recorded, cond: Cond, key: str | None
         return
     expected = " and ".join(e.render(index.compact) for e in failing)
     actual = index.compact(iri)
-    wanted = exprs[0] if len(exprs) == 1 else IntersectionOf(tuple(exprs))  # all at once
+    wanted = every(exprs)
     possible = index.can_satisfy(iri, wanted)
     if possible is None:  # undecidable below the declared class: report nothing
         return

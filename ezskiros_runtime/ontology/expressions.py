@@ -10,7 +10,7 @@ crashing or guessing.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 
@@ -77,4 +77,11 @@ class Unsupported(ClassExpr):
         return self.text
 
 
-__all__ = ["ClassExpr", "ComplementOf", "IntersectionOf", "Named", "UnionOf", "Unsupported"]
+def every(exprs: Sequence[ClassExpr]) -> ClassExpr:
+    """One expression that all of ``exprs`` hold for at once: several ``rdfs:domain`` (or
+    ranges) must be met by one element, not each by a different one."""
+    return exprs[0] if len(exprs) == 1 else IntersectionOf(tuple(exprs))
+
+
+__all__ = ["ClassExpr", "ComplementOf", "IntersectionOf", "Named", "UnionOf", "Unsupported",
+           "every"]
