@@ -21,6 +21,7 @@ from collections.abc import Iterator, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from typing import TYPE_CHECKING
 
+from . import holdpoint
 from .discover import Candidate
 from .prefilter import may_hold_descriptions
 from .results import FileResult
@@ -197,6 +198,8 @@ def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                                 FileResult(candidate.relative))
                 done.append(item)
                 workers.add(item, data)
+                if workers.pool is not None:  # forked workers are busy with the others
+                    holdpoint.reach("migrating")
             else:
                 done.append(Migrated(candidate, None, None, FileResult(candidate.relative)))
         workers.finish()

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from . import interrupt
+from . import holdpoint, interrupt
 from .discover import Candidate, discover
 from .package import migrate_package
 from .runner import Migrated, default_jobs
@@ -76,7 +76,9 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     candidates, notes = discover(options.paths, options.exclude, stale=stale,
                                  project=options.project)
     notes += _stale_notes(stale, options.writes)
+    holdpoint.reach("discovered")
     migrated = migrate_package(candidates, index, options.jobs)
+    holdpoint.reach("migrated")
     outcome = RewriteOutcome(migrated, notes)
     if options.verify and verifier is not None:
         verifier([m for m in migrated if m.result.changed], options)
@@ -100,7 +102,9 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
                 continue
         interrupt.check()
         with interrupt.deferred():
+            holdpoint.reach(f"writing:{len(outcome.written) + 1}")
             _write(item, content, options, outcome, on_written)
+        holdpoint.reach(f"written:{len(outcome.written)}")
     return outcome
 
 

@@ -34,10 +34,11 @@ def cli(*args: str | Path, cwd: Path | None = None, timeout: float = 900,
         capture_output=True, text=True, timeout=timeout, check=False, preexec_fn=preexec_fn)
 
 
-def start_cli(*args: str | Path, cwd: Path | None = None) -> subprocess.Popen[str]:
+def start_cli(*args: str | Path, cwd: Path | None = None,
+              env: dict[str, str] | None = None) -> subprocess.Popen[str]:
     """Start ``python -m ezmigrate ARGS`` without waiting (for the signal tests)."""
     return subprocess.Popen([sys.executable, "-m", "ezmigrate", *map(str, args)], cwd=cwd,
-                            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                            env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True)
 
 

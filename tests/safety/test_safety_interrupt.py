@@ -2,20 +2,21 @@
 wholly new, leaves no temporary file, says what it wrote, exits 128 + the signal; a second
 run finishes the job.
 
-The corpus is the legacy fixtures copied three times into three folders. Each scenario
-starts ``rewrite`` in a subprocess and signals it after a random delay (discovery or
-migration), once its verification workers run, or right after its first file was replaced
-(the writing phase; once with two signals in a row), then checks every byte on disk against
-the original and the reference migration, the list of written files it printed against the
-disk, and that a second run finishes the job. The delays come from a fixed seed (printed
-with every failure); set EZMIGRATE_SAFETY_SEED to try others.
+The corpus is the legacy fixtures copied three times into three folders, plus one skill
+module whose import waits for the test. Each scenario starts ``rewrite`` in a subprocess
+and holds it, by construction and not by timing, exactly where the signal must land: at a
+named hold point of the run (``ezmigrate.holdpoint``: after discovery, while the migration
+workers are busy, inside or after the N-th write) or, for the verification phase, inside
+that skill module's import in a verification child. It then signals (twice in one
+scenario), releases the hold, and checks every byte on disk against the original and the
+reference migration, the list of written files it printed against the disk, and that a
+second run finishes the job. No scenario depends on how fast the machine is.
 """
 
 from __future__ import annotations
 
 import ast
 import os
-import random
 import re
 import shutil
 import signal
@@ -38,8 +39,22 @@ from safety_support import (
 pytestmark = pytest.mark.slow
 
 COPIES = 3
-SEED = int(os.environ.get("EZMIGRATE_SAFETY_SEED", "0")) or 20261122  # fixed: reproducible
-WORKER_MARK = "17.25"  # an unusual --timeout: lets the test find this run's workers
+WORKER_MARK = "317.25"  # an unusual --timeout: lets the test find this run's workers
+IMPORT_HOLD = "EZMIGRATE_TEST_IMPORT_HOLD"
+HOLDING_MODULE = "waits_for_the_test.py"
+"""A legacy skill module whose import, when IMPORT_HOLD names a folder, says so there
+(``imported``) and waits for ``go``: a verification child loading it holds the run in its
+verification phase for as long as the test needs."""
+_HOLDING_PREAMBLE = f"""import os as _os
+import pathlib as _pathlib
+import time as _time
+
+_HOLD = _os.environ.get("{IMPORT_HOLD}")
+if _HOLD:
+    _pathlib.Path(_HOLD, "imported").touch()
+    while not _pathlib.Path(_HOLD, "go").exists():
+        _time.sleep(0.005)
+"""
 
 
 def _build(folder: Path) -> None:
@@ -48,6 +63,9 @@ def _build(folder: Path) -> None:
             sub = folder / ("" if index % 3 == 0 else f"pkg{index % 3}")
             sub.mkdir(parents=True, exist_ok=True)
             shutil.copyfile(source, sub / f"{source.stem}_{copy}.py")
+    (folder / HOLDING_MODULE).write_text(
+        _HOLDING_PREAMBLE + (LEGACY / "descriptions.py").read_text(encoding="utf-8"),
+        encoding="utf-8")
 
 
 @pytest.fixture(scope="module")
@@ -65,25 +83,15 @@ def corpus(tmp_path_factory):
     return template, originals, expected, run.returncode
 
 
-def _inodes(folder: Path) -> dict[Path, int]:
-    return {p: p.stat().st_ino for p in folder.rglob("*.py")}
-
-
-def _signal_after_first_write(process, folder: Path, signum: int, extra: float,
-                              twice: bool) -> None:
-    """Poll inodes (``os.replace`` gives the file a new one); signal at the first change."""
-    before = _inodes(folder)
+def _hold_until(process, marker: Path) -> None:
+    """Wait until the run created ``marker`` (it is then held); fail if it ended first."""
     deadline = time.monotonic() + 600
-    while process.poll() is None and time.monotonic() < deadline:
-        if any(p.stat().st_ino != ino for p, ino in before.items()):
-            break
-        time.sleep(0.001)
-    time.sleep(extra)
-    process.send_signal(signum)
-    if twice:
+    while not marker.exists():
+        assert process.poll() is None, (
+            f"the run ended (exit {process.returncode}) before reaching {marker.name}: "
+            f"{process.stderr.read()[-2000:] if process.stderr else ''}")
+        assert time.monotonic() < deadline, f"the run never reached {marker.name}"
         time.sleep(0.005)
-        if process.poll() is None:
-            process.send_signal(signum)
 
 
 def _wait_until_handling(process) -> None:
@@ -135,64 +143,64 @@ def _check_consistent(folder: Path, originals: dict[str, bytes], expected: dict[
     return new, left
 
 
-SCENARIOS = [  # (id, signal, verify, trigger: "write" or a delay range, extra, twice)
-    ("sigint-first-write", signal.SIGINT, False, "write", 0.0, False),
-    ("sigterm-during-writes", signal.SIGTERM, False, "write", 0.015, False),
-    ("sigint-twice-during-writes", signal.SIGINT, False, "write", 0.005, True),
-    ("sigterm-early", signal.SIGTERM, False, (0.0, 2.5), 0.0, False),
-    ("sigint-early", signal.SIGINT, False, (0.0, 2.5), 0.0, False),
-    ("sigterm-verifying-first-write", signal.SIGTERM, True, "write", 0.0, False),
-    ("sigint-while-verifying", signal.SIGINT, True, "verifying", 0.0, False),
+SCENARIOS = [  # (id, signal, verify, where the run is held, signals sent)
+    ("sigterm-after-discovery", signal.SIGTERM, False, "discovered", 1),
+    ("sigint-while-migrating", signal.SIGINT, False, "migrating", 1),
+    ("sigterm-after-migration", signal.SIGTERM, True, "migrated", 1),
+    ("sigint-while-verifying", signal.SIGINT, True, "verifying", 1),
+    ("sigint-first-write", signal.SIGINT, False, "written:1", 1),
+    ("sigterm-during-second-write", signal.SIGTERM, False, "writing:2", 1),
+    ("sigint-twice-during-second-write", signal.SIGINT, False, "writing:2", 2),
+    ("sigterm-verifying-first-write", signal.SIGTERM, True, "written:1", 1),
 ]
 
 
-@pytest.mark.parametrize(("signum", "verify", "trigger", "extra", "twice"),
+@pytest.mark.parametrize(("signum", "verify", "point", "signals"),
                          [s[1:] for s in SCENARIOS], ids=[s[0] for s in SCENARIOS])
 def test_interrupted_run_leaves_old_or_new_files_and_a_second_run_finishes(
-        corpus, tmp_path, signum, verify, trigger, extra, twice):
+        corpus, tmp_path, signum, verify, point, signals):
     template, originals, expected, reference_code = corpus
     folder = tmp_path / "tree"
     shutil.copytree(template, folder)
-    rng = random.Random(f"{SEED}-{signum}-{verify}-{trigger}")
+    hold = tmp_path / "hold"
+    hold.mkdir()
     args = ["rewrite", folder, "--timeout", WORKER_MARK]
     if not verify:
         args.append("--no-verify")
+    env = dict(os.environ)
+    if point == "verifying":  # the holding module's import, in a verification child
+        env[IMPORT_HOLD] = str(hold)
+        reached, release = hold / "imported", hold / "go"
+    else:
+        env.update(EZMIGRATE_HOLD_DIR=str(hold), EZMIGRATE_HOLD_AT=point)
+        reached, release = hold / f"{point}.reached", hold / f"{point}.go"
 
-    process = start_cli(*args)
+    process = start_cli(*args, env=env)
     try:
-        if trigger == "write":
-            _signal_after_first_write(process, folder, signum, extra, twice)
-        elif trigger == "verifying":  # once a verification worker of this run is up
-            deadline = time.monotonic() + 600
-            while not _workers_of_this_test() and process.poll() is None \
-                    and time.monotonic() < deadline:
-                time.sleep(0.01)
-            time.sleep(rng.uniform(0.2, 1.5))
+        _hold_until(process, reached)
+        for _ in range(signals):
             process.send_signal(signum)
-        else:
-            _wait_until_handling(process)
-            time.sleep(rng.uniform(*trigger))
-            process.send_signal(signum)
+        release.touch()
         stdout, stderr = process.communicate(timeout=600)
     finally:
+        release.touch()
         if process.poll() is None:
             process.kill()
             process.wait()
 
-    note = f"(seed {SEED}; stderr: {stderr[-2000:]})"
+    note = f"(held at {point}; stderr: {stderr[-2000:]})"
     assert process.returncode == 128 + signum, note
     assert_no_traceback(stdout, stderr)
     name = signal.Signals(signum).name
     assert f"ezmigrate: interrupted by {name}" in stderr, note
     new, left = _check_consistent(folder, originals, expected, stderr)
-    if trigger == "write":
-        assert new, "the signal came after the first write: it is kept and reported"
+    if point.startswith("writ"):  # the held write (and those before it) completed
+        assert len(new) == int(point.partition(":")[2]), note
         assert f"{len(new)} files written (each wholly new), {len(left)} not yet written" \
             in stderr, note
-    elif trigger == "verifying":
-        assert not new and "before any file was written: every file is as it was" in stderr
     else:
-        assert "every file is as it was" in stderr or new, note
+        assert not new, note
+        assert "before any file was written: every file is as it was" in stderr, note
     if verify:
         deadline = time.monotonic() + 60
         while _workers_of_this_test() and time.monotonic() < deadline:
@@ -200,7 +208,7 @@ def test_interrupted_run_leaves_old_or_new_files_and_a_second_run_finishes(
         assert _workers_of_this_test() == [], "verification workers outlived the run"
 
     again = [a for a in args if a not in ("--timeout", WORKER_MARK)]
-    if trigger == "verifying":
+    if point == "verifying":
         again.append("--no-verify")  # the quick way to finish (the other case verifies)
     second = cli(*again)
 
@@ -224,15 +232,20 @@ def test_a_killed_run_leaves_whole_files_and_the_next_run_removes_its_temporarie
     template, originals, expected, reference_code = corpus
     folder = tmp_path / "tree"
     shutil.copytree(template, folder)
-    process = start_cli("rewrite", folder, "--no-verify")
+    hold = tmp_path / "hold"
+    hold.mkdir()
+    env = dict(os.environ, EZMIGRATE_HOLD_DIR=str(hold), EZMIGRATE_HOLD_AT="written:1")
+    process = start_cli("rewrite", folder, "--no-verify", env=env)
     try:
-        _signal_after_first_write(process, folder, signal.SIGKILL, 0.005, False)
+        _hold_until(process, hold / "written:1.reached")
+        process.send_signal(signal.SIGKILL)
         process.communicate(timeout=600)
     finally:
         if process.poll() is None:
             process.kill()
             process.wait()
-    assert process.returncode in (-signal.SIGKILL, reference_code)
+    assert process.returncode == -signal.SIGKILL
+    assert sum(snapshot(folder)[n] != originals[n] for n in originals) == 1, "one file written"
     for name, data in snapshot(folder).items():
         if name.endswith(".py"):
             assert data in (originals[name], expected[name]), f"{name} is neither old nor new"
