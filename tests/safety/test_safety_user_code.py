@@ -187,9 +187,10 @@ def _alive(pid: int) -> bool:
     return stat[stat.rindex(")") + 2] != "Z"
 
 
-@pytest.mark.parametrize(("tail", "verdict"), [("while True:\n    pass\n", "timeout"),
-                                                ("", "converted")])
-def test_processes_a_module_forks_do_not_outlive_its_load(tmp_path, tail, verdict):
+@pytest.mark.parametrize(("tail", "verdict", "timeout"),
+                         [("while True:\n    pass\n", "timeout", "3"),
+                          ("", "converted", "120")])  # a load that must end: never timed
+def test_processes_a_module_forks_do_not_outlive_its_load(tmp_path, tail, verdict, timeout):
     """Each child leads its own process group; the whole group is killed when its load
     ends, by timeout or normally, so a module's forks leave no orphan behind."""
     folder, mark = tmp_path / "tree", tmp_path / "forked.pids"
@@ -198,7 +199,7 @@ def test_processes_a_module_forks_do_not_outlive_its_load(tmp_path, tail, verdic
         HEADER.format(name="Forks") + FORKS.format(mark=str(mark), tail=tail),
         encoding="utf-8")
     report = tmp_path / "r.json"
-    run = cli("rewrite", folder, "--dry-run", "--timeout", "3", "--report", report,
+    run = cli("rewrite", folder, "--dry-run", "--timeout", timeout, "--report", report,
               timeout=300)
     assert_no_traceback(run.stderr)
     skills = json.loads(report.read_text(encoding="utf-8"))["skills"]
