@@ -148,6 +148,7 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
     result.exports = [p.cls.name for p in plans if p.result.status in ("converted", "unchanged")]
     if not any(p.result.status == "converted" for p in plans):
         return result
+    used_before = used_names(module)
     new_module = _rewrite(module, plans)
     base_name = "EzSkillDescription" if _legacy_still_used(new_module, names,
                                                            settings.exported) else \
@@ -156,7 +157,8 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
     if any(p.result.status == "converted" and p.cls.base is None for p in plans):
         runtime_pairs.add(("SkillDescription", base_name))
     new_module = update_imports(new_module, runtime_pairs,
-                                {(p, aliases.get(p, p)) for p in prefixes}, settings.exported)
+                                {(p, aliases.get(p, p)) for p in prefixes}, settings.exported,
+                                used_before=used_before)
     new_module = new_module.visit(_Rename(PLACEHOLDER, base_name))
     try:
         cst.parse_module(new_module.code)

@@ -1,9 +1,15 @@
 """Imports after migration: ``ezskiros_runtime`` names added once, legacy ones removed when unused.
 
-A legacy import is removed only when nothing left in the module uses its local name
-(implementation classes usually still need ``SkillBase`` or ``ParamTypes``). Comments that
-stood above a removed import move to the statement that takes its place, so banners like
-``# SkiROS2 imports`` survive.
+A legacy import name is removed only when the migration removed its last use: it was used
+before and nothing left in the module uses it (implementation classes usually still need
+``SkillBase`` or ``ParamTypes``). An import that was already unused stays byte for byte:
+removing it would put an unrelated line in the diff and could drop an import-time side
+effect. Comments that stood above a removed import move to the statement that takes its
+place, so banners like ``# SkiROS2 imports`` survive.
+
+The new imports go where the first legacy import was, unless a star import follows it: a
+helper module imported with ``*`` may re-export the legacy ``SkillDescription`` and would
+rebind ours, so the new imports then go right after the last top-level star import.
 """
 
 from __future__ import annotations
@@ -88,14 +94,16 @@ def _local(alias: cst.ImportAlias) -> str:
     return name.split(".")[0]
 
 
-def _prune(small: cst.BaseSmallStatement, used: set[str]) -> cst.BaseSmallStatement | None:
-    """A legacy import without its unused names; ``None`` when nothing is left."""
+def _prune(small: cst.BaseSmallStatement, used: set[str],
+           used_before: set[str]) -> cst.BaseSmallStatement | None:
+    """A legacy import without the names the migration left unused; ``None`` when nothing is
+    left. A name that was unused before the migration is kept."""
     if isinstance(small, cst.ImportFrom):
         module = dotted_name(small.module) if small.module is not None else None
         if module is None or small.relative or not is_legacy_module(module) \
                 or isinstance(small.names, cst.ImportStar):
             return small
-        kept = [a for a in small.names if _local(a) in used]
+        kept = [a for a in small.names if _local(a) in used or _local(a) not in used_before]
         if len(kept) == len(small.names):
             return small
         if not kept:
@@ -105,7 +113,8 @@ def _prune(small: cst.BaseSmallStatement, used: set[str]) -> cst.BaseSmallStatem
                                   lpar=small.lpar if len(kept) > 1 else None)
     if isinstance(small, cst.Import):
         kept_plain = [a for a in small.names
-                      if not is_legacy_module(dotted_name(a.name) or "") or _local(a) in used]
+                      if not is_legacy_module(dotted_name(a.name) or "") or _local(a) in used
+                      or _local(a) not in used_before]
         if len(kept_plain) == len(small.names):
             return small
         if not kept_plain:
@@ -128,17 +137,23 @@ def _import_line(module: str, names: Sequence[tuple[str, str]],
 
 def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
                    prefixes: Iterable[tuple[str, str]],
-                   exported: Collection[str] = ()) -> cst.Module:
-    """Add the runtime and namespace imports, drop legacy imports nothing uses any more.
+                   exported: Collection[str] = (), *,
+                   used_before: set[str] | None = None) -> cst.Module:
+    """Add the runtime and namespace imports, drop legacy imports the migration left unused.
 
     ``runtime`` and ``prefixes`` hold ``(name, local alias)`` pairs. The new imports go where
-    the first legacy import was (or after the last top-level import, or after the docstring).
-    ``exported`` names (``*``: all) are used by other modules importing them from this one.
+    the first legacy import was, after the last top-level star import that follows it (or
+    after the last top-level import, or after the docstring). ``exported`` names (``*``:
+    all) are used by other modules importing them from this one. ``used_before``: the names
+    the module used before the migration (``used_names`` of the original); only those can
+    lose their last use. ``None``: every imported name counts as used before.
     """
     existing = imported_names(module)
     used = used_names(module) | set(exported)
     if "*" in exported:  # another module takes every name: no import is unused
         used |= _all_imported(module)
+    before = _all_imported(module) if used_before is None else used_before
+    star_after_legacy = _star_after_first_legacy(module)
     order = {name: i for i, name in enumerate(RUNTIME_ORDER)}
     wanted = sorted({pair for pair in runtime if existing.get(pair[1]) != RUNTIME},
                     key=lambda pair: order.get(pair[0], len(order)))
@@ -155,10 +170,13 @@ def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
         if isinstance(stmt, cst.SimpleStatementLine) and all(
                 isinstance(s, (cst.Import, cst.ImportFrom)) for s in stmt.body):
             is_legacy = any(_is_legacy_import(s) for s in stmt.body)
-            kept = [k for k in (_prune(s, used) for s in stmt.body) if k is not None]
-            if is_legacy and anchor is None:
+            kept = [k for k in (_prune(s, used, before) for s in stmt.body) if k is not None]
+            if any(_is_star(s) for s in stmt.body) and star_after_legacy:
+                anchor = len(body) + 1  # after this star import (it is kept: not legacy)
+            elif is_legacy and anchor is None:
                 anchor = len(body) + (1 if kept else 0)
-                if not kept and additions:  # our import takes its place and its comments
+                if not kept and additions and not star_after_legacy:
+                    # our import takes its place and its comments
                     additions[0] = additions[0].with_changes(leading_lines=stmt.leading_lines)
                     continue
             if not kept:
@@ -186,6 +204,23 @@ def _all_imported(module: cst.Module) -> set[str]:
                     and not isinstance(small.names, cst.ImportStar):
                 found.update(_local(alias) for alias in small.names)
     return found
+
+
+def _is_star(small: cst.BaseSmallStatement) -> bool:
+    return isinstance(small, cst.ImportFrom) and isinstance(small.names, cst.ImportStar)
+
+
+def _star_after_first_legacy(module: cst.Module) -> bool:
+    """Whether a top-level star import comes after (or with) the first legacy import: the
+    names it brings in could rebind ours."""
+    seen_legacy = False
+    for stmt in module.body:
+        if not isinstance(stmt, cst.SimpleStatementLine):
+            continue
+        seen_legacy = seen_legacy or any(_is_legacy_import(s) for s in stmt.body)
+        if seen_legacy and any(_is_star(s) for s in stmt.body):
+            return True
+    return False
 
 
 def _fix_semicolons(kept: list[cst.BaseSmallStatement]) -> list[cst.BaseSmallStatement]:

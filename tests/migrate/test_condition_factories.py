@@ -95,13 +95,15 @@ def test_has_property_is_specified_generate_on_type():
 
 
 def test_condition_classes_from_the_conditions_module():
+    """ConditionProperty was never used: it stays (the migration did not make it unused)."""
     imports = ("from skiros2_common.core.conditions import ConditionRelation, ConditionProperty\n"
                "import skiros2_common.core.conditions as cond\n")
     assert_migrates(case(
         '        self.addPreCondition(ConditionRelation("AContainB", "skiros:contain", "A", "B", True))\n'
         '        self.addPreCondition(cond.ConditionHasProperty("AHasPosition", "skiros:Position", "A", True))\n',
-        imports), expected('        self.pre_conditions += A.contain(B)\n'
-                           '        self.pre_conditions += A.has(skiros.Position)\n'))
+        imports), "from skiros2_common.core.conditions import ConditionProperty\n"
+        + expected('        self.pre_conditions += A.contain(B)\n'
+                   '        self.pre_conditions += A.has(skiros.Position)\n'))
 
 
 def test_automatic_robot_and_undeclared_keys():

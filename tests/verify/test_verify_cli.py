@@ -17,6 +17,7 @@ from verify_support import (
     LATE_CONSTANT,
     LEGACY,
     MIGRATED,
+    PAPER_AXIOMS,
     cli,
     edit,
     file_entry,
@@ -264,7 +265,7 @@ def test_rewrite_skips_skills_the_runtime_would_refuse_and_leaves_the_file(tmp_p
     would stop the robot's launch, so it is skipped with the finding and nothing is written."""
     folder = tree(tmp_path / "skills", {"type_errors.py": REJECTED})
     before = (folder / "type_errors.py").read_bytes()
-    run = cli("rewrite", folder, "--report", tmp_path / "r.json")
+    run = cli("rewrite", folder, "--report", tmp_path / "r.json", *PAPER_AXIOMS)
     assert run.returncode == 1, run.stderr
     assert (folder / "type_errors.py").read_bytes() == before
     skills = {s["class"]: s for s in read_json(tmp_path / "r.json")["skills"]}
@@ -282,7 +283,7 @@ def test_verify_fails_a_migrated_class_the_runtime_would_refuse(tmp_path):
     migrated = tmp_path / "migrated"
     forced = cli("rewrite", legacy, "--no-verify", "--output-dir", migrated)
     assert forced.returncode == 0, forced.stderr
-    run = cli("verify", legacy, migrated)
+    run = cli("verify", legacy, migrated, *PAPER_AXIOMS)
     assert run.returncode == 1, run.stderr
     assert run.stderr.count("EzSkiROS rejects the migrated class when it loads") == 3
     assert "3 classes, 0 equivalent, 3 not equivalent" in run.stderr
@@ -305,7 +306,7 @@ class FineChild(HandOver):
 '''
     original = tree(tmp_path / "original", {"type_errors.py": source})
     folder = tree(tmp_path / "skills", {"type_errors.py": source})
-    run = cli("rewrite", folder, "--report", tmp_path / "r.json")
+    run = cli("rewrite", folder, "--report", tmp_path / "r.json", *PAPER_AXIOMS)
     assert run.returncode == 1, run.stderr  # skipped skills need attention
     statuses = {s["class"]: s["status"] for s in read_json(tmp_path / "r.json")["skills"]}
     assert statuses == {"HandOver": "skipped", "CheckTool": "skipped",
@@ -314,6 +315,6 @@ class FineChild(HandOver):
     text = (folder / "type_errors.py").read_text(encoding="utf-8")
     assert "class FineOne(EzSkillDescription):" in text
     assert text.count("def createDescription(self):") == 5  # 4 held + the implementation
-    proof = cli("verify", original, folder)
+    proof = cli("verify", original, folder, *PAPER_AXIOMS)
     assert proof.returncode == 0, proof.stderr
     assert "5 classes, 5 equivalent" in proof.stderr

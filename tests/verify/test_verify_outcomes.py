@@ -14,14 +14,25 @@ import sys
 from pathlib import Path
 
 import pytest
-from verify_support import HEADER, LEGACY, MIGRATED, cli, file_entry, read_json, skills_of, tree
+from verify_support import (
+    HEADER,
+    LEGACY,
+    MIGRATED,
+    PAPER_AXIOMS,
+    cli,
+    file_entry,
+    read_json,
+    skills_of,
+    tree,
+)
 
 VIOLATION = "ontology_violations.py"
 
 
 def _hard_violation(folder: Path, legacy: bool) -> Path:
-    """``ontology_violations.py`` with PlaceOnPose's Target a skiros:Product: skiros:hasA
-    ranges over skiros:TransformationPose, which no Product is (an error, not a warning)."""
+    """``ontology_violations.py`` with PlaceOnPose's Target a skiros:Product: under the
+    paper's axiom (PAPER_AXIOMS) skiros:hasA ranges over skiros:TransformationPose, which no
+    Product is (an error, not a warning)."""
     source = (LEGACY if legacy else MIGRATED) / VIOLATION
     text = source.read_text(encoding="utf-8")
     old, new = (('Element("skiros:Location")', 'Element("skiros:Product")') if legacy
@@ -32,7 +43,7 @@ def _hard_violation(folder: Path, legacy: bool) -> Path:
 
 def test_rewrite_skips_a_skill_the_runtime_rejects_with_the_finding_and_its_line(tmp_path):
     folder = _hard_violation(tmp_path / "skills", legacy=True)
-    run = cli("rewrite", folder, "--report", tmp_path / "r.json")
+    run = cli("rewrite", folder, "--report", tmp_path / "r.json", *PAPER_AXIOMS)
     assert run.returncode == 1, run.stderr
     place = skills_of(read_json(tmp_path / "r.json"), VIOLATION)["PlaceOnPose"]
     assert (place["status"], place["equivalent"]) == ("skipped", None)
@@ -51,7 +62,7 @@ def test_rewrite_skips_a_skill_the_runtime_rejects_with_the_finding_and_its_line
 def test_verify_fails_a_rejected_class_and_lists_its_findings(tmp_path):
     before = _hard_violation(tmp_path / "before", legacy=True)
     after = _hard_violation(tmp_path / "after", legacy=False)
-    run = cli("verify", before, after, "--report", tmp_path / "r.json")
+    run = cli("verify", before, after, "--report", tmp_path / "r.json", *PAPER_AXIOMS)
     assert run.returncode == 1, run.stderr
     skills = skills_of(read_json(tmp_path / "r.json"), VIOLATION)
     place, attach = skills["PlaceOnPose"], skills["AttachCamera"]

@@ -9,7 +9,7 @@ import json
 from typing import Any
 
 import pytest
-from verify_support import LATE_CONSTANT, LEGACY, cli, tree
+from verify_support import LATE_CONSTANT, LEGACY, PAPER_AXIOMS, cli, tree
 
 SKILL_KEYS = {"file", "class", "line", "status", "reason", "findings", "equivalent"}
 LEGACY_SIDE = "addParam('Speed', 1.0, ParamTypes.Optional)"
@@ -28,7 +28,8 @@ def reports(tmp_path_factory):
     for name, extra in (("verified", ()), ("unverified", ("--no-verify",))):
         for suffix in ("json", "md"):
             report = tmp / f"{name}.{suffix}"
-            run = cli("rewrite", folder, "--dry-run", *extra, "--report", report)
+            run = cli("rewrite", folder, "--dry-run", *extra, "--report", report,
+                      *PAPER_AXIOMS)
             assert run.returncode == 1, run.stderr  # skips and a failure need attention
             out[f"{name}.{suffix}"] = report.read_text(encoding="utf-8")
     return out

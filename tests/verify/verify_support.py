@@ -15,6 +15,10 @@ FIXTURES = ROOT / "fixtures"
 LEGACY = FIXTURES / "legacy"
 MIGRATED = FIXTURES / "migrated"
 ISOLATION = FIXTURES / "isolation"
+PAPER_AXIOMS = (
+    "--ontology", str(ROOT / "ezskiros_runtime" / "ontology" / "data" / "skiros-core.ttl"),
+    "--ontology", str(FIXTURES / "ontology" / "paper_axioms.ttl"))
+"""The core plus the EzSkiROS paper's ``hasA`` axiom, for the skills built to break it."""
 
 HEADER = '''from skiros2_common.core.abstract_skill import SkillDescription, ParamOptions
 from skiros2_common.core.params import ParamTypes
