@@ -13,6 +13,7 @@ import os
 import sys
 import threading
 import traceback
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -95,15 +96,22 @@ def _thread_failed(args: Any, debug: bool) -> None:
         click.echo("ezmigrate: rerun with --debug for details", err=True)
 
 
-def _load_index(ontology: tuple[Path, ...], start: Path) -> tuple[Any, tuple[str, ...]]:
-    """The ontology index by the configuration rules, and the files it came from."""
+def _load_index(ontology: tuple[Path, ...], start: Path,
+                roots: Sequence[Path] = ()) -> tuple[Any, tuple[str, ...], str]:
+    """The ontology index by the configuration rules, the files it came from, and a line
+    saying which files and why.
+
+    Says once on stderr which files are used and why (the report header says it again):
+    with nothing configured, the owl/ folders of the repository of ``roots`` count."""
     from ezskiros_runtime.ontology.config import resolve_ontology_paths
     from ezskiros_runtime.ontology.errors import OntologyError
     from ezskiros_runtime.ontology.index import load_index
 
     try:
-        source = resolve_ontology_paths(list(ontology) or None, start=start)
-        return load_index(list(source.paths) or None), tuple(str(p) for p in source.paths)
+        source = resolve_ontology_paths(list(ontology) or None, start=start, roots=roots)
+        index = load_index(list(source.paths) or None)
+        click.echo(f"ezmigrate: {source.describe()}", err=True)
+        return index, tuple(str(p) for p in source.paths), source.describe()
     except OntologyError as error:
         click.echo(f"ezmigrate: error: {error}", err=True)
         sys.exit(EXIT_ERROR)
@@ -177,7 +185,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     if [str(p) for p in paths] == ["-"]:
         from .stdin import rewrite_stdin
 
-        index, ontology_files = _load_index(ontology, Path.cwd())
+        index, ontology_files, used = _load_index(ontology, Path.cwd(), [Path.cwd()])
         data, result = rewrite_stdin(index, ontology_files, verify=verify,
                                      timeout=timeout or 20.0)
         _print_result("-", "-", data, result, dry_run, check, color, debug)
@@ -185,12 +193,12 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             new = result.new_source
             sys.stdout.buffer.write(new if isinstance(new, bytes) else data)
         _finish([result], report, not (dry_run or check), check, [],
-                 MarkdownOptions(verify, ignore_order, ignore_labels))
+                 MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used))
     from .session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
 
     start = paths[0]
     project = load_project_config(start)
-    index, ontology_files = _load_index(ontology, start)
+    index, ontology_files, used = _load_index(ontology, start, paths)
     options = RewriteOptions(
         paths=list(paths), dry_run=dry_run, check=check,
         exclude=tuple(exclude) + project.exclude, output_dir=output_dir, verify=verify,
@@ -210,7 +218,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
     _finish([m.result for m in outcome.migrated], report, options.writes, check,
-            outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels))
+            outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used))
 
 
 def _print_result(shown: str, relative: str, original: bytes, result: FileResult,
@@ -267,7 +275,7 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
     from .verify.pool import PoolConfig
 
     project = load_project_config(before)
-    _, ontology_files = _load_index(ontology, before)
+    _, ontology_files, used = _load_index(ontology, before, [before])
     pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
                       timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
     try:
@@ -291,7 +299,8 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
                     if d.get("after") is not None:
                         click.echo(f"      + {d['after']}", err=True)
     if report is not None:
-        _write_report(report, results, MarkdownOptions(True, ignore_order, ignore_labels))
+        _write_report(report, results,
+                      MarkdownOptions(True, ignore_order, ignore_labels, ontology=used))
     total = sum(len(r.skills) for r in results)
     bad = sum(1 for r in results for s in r.skills if s.status == "failed")
     click.echo(f"ezmigrate: {len(results)} files compared, {total} classes, "
@@ -318,7 +327,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], jobs: int | None,
     from .verify.pool import PoolConfig
 
     project = load_project_config(paths[0])
-    index, ontology_files = _load_index(ontology, paths[0])
+    index, ontology_files, _ = _load_index(ontology, paths[0], paths)
     pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
                       timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
     outcome = run_check(list(paths), index, pool, tuple(exclude) + project.exclude)

@@ -60,6 +60,8 @@ class MarkdownOptions:
     ignore_order: bool = False
     ignore_labels: bool = False
     notes: list[str] = field(default_factory=list)
+    ontology: str = ""
+    """Which ontology files were used and why (``OntologySource.describe``)."""
 
 
 def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
@@ -86,6 +88,7 @@ def json_report(results: Sequence[FileResult], extra: dict[str, Any] | None = No
         "version": SCHEMA_VERSION,
         **({"options": {"verified": options.verified, "ignore_order": options.ignore_order,
                         "ignore_labels": options.ignore_labels}} if options else {}),
+        **({"ontology": options.ontology} if options and options.ontology else {}),
         "summary": {"files": summary.files, "skills": summary.skills,
                     "converted": summary.converted, "skipped": summary.skipped,
                     "failed": summary.failed},
@@ -120,6 +123,8 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
     how = "verified by loading both versions" if options.verified else "NOT verified"
     relax = relaxed(options.ignore_order, options.ignore_labels)
     out.append(f"Equivalence: {how}" + (f"; {relax}" if relax else "") + ".")
+    if options.ontology:
+        out += ["", f"Ontology: {options.ontology.removeprefix('ontology: ')}."]
     out += ["", "| files | skills | converted | skipped | failed | unchanged |",
             "|---:|---:|---:|---:|---:|---:|",
             f"| {s.files} | {s.skills} | {s.converted} | {s.skipped} | {s.failed} | "

@@ -7,7 +7,9 @@ Precedence, first match wins:
    `start`; paths relative to that file's folder (so the setting means the same from any
    subfolder). The nearest pyproject.toml is the project, even without our table: the
    other `[tool.ezmigrate]` settings (ezmigrate.config) are read from the same file;
-4. the vocabulary bundled with the package.
+4. the vocabulary bundled with the package, plus, when the caller names the paths it works
+   on (`roots`), every ontology file under the `owl/` folders of their repository
+   (`discovery`: what the SkiROS2 world model would load from the skill package).
 
 A configured path that does not exist is an `OntologyConfigError` that says where the path
 came from: silently falling back to another ontology would make every check misleading.
@@ -32,12 +34,15 @@ TOOL_TABLE = "ezmigrate"
 class OntologySource:
     """The resolved ontology paths and where they came from (for messages and `--verbose`).
 
-    `origin` is "argument", "environment", "pyproject:<path to pyproject.toml>" or "bundled"
-    (then `paths` is empty and the bundled vocabulary applies).
+    `origin` is "argument", "environment", "pyproject:<path to pyproject.toml>", "bundled"
+    (then `paths` is empty and the bundled vocabulary applies) or "discovered:<repository>"
+    (then `paths` is the bundled core followed by the project's files, and `skipped` the
+    vendored copies of the core that were left out).
     """
 
     paths: tuple[Path, ...]
     origin: str
+    skipped: tuple[Path, ...] = ()
 
     def describe(self) -> str:
         """One line for humans: `ontology from EZSKIROS_ONTOLOGY: a.owl, b.ttl`."""
@@ -46,9 +51,24 @@ class OntologySource:
             "environment": ENV_VAR,
             "bundled": "the bundled default",
         }.get(self.origin, self.origin.replace("pyproject:", "", 1))
+        if self.origin.startswith("discovered:"):
+            root = Path(self.origin.partition(":")[2])
+            text = (f"ontology: the bundled SkiROS2 core plus the owl/ folders of {root}: "
+                    + ", ".join(_shown(p, root) for p in self.paths[1:]))
+            if self.skipped:
+                text += " (vendored core copies skipped: " + ", ".join(
+                    _shown(p, root) for p in self.skipped) + ")"
+            return text
         if not self.paths:
-            return f"ontology from {where}"
+            return f"ontology from {where} (the SkiROS2 core; no owl/ folder found)"
         return f"ontology from {where}: " + ", ".join(str(p) for p in self.paths)
+
+
+def _shown(path: Path, root: Path) -> str:
+    try:
+        return str(path.relative_to(root))
+    except ValueError:
+        return str(path)
 
 
 def resolve_ontology_paths(
@@ -56,8 +76,12 @@ def resolve_ontology_paths(
     *,
     environ: Mapping[str, str] | None = None,
     start: Path | None = None,
+    roots: Sequence[Path] | None = None,
 ) -> OntologySource:
-    """Decide which ontology files to load, following the precedence in the module doc."""
+    """Decide which ontology files to load, following the precedence in the module doc.
+
+    `roots`: the paths a command works on; without them nothing is discovered (a robot's
+    runtime has its own rule, see `robot`)."""
     cwd = Path.cwd()
     if isinstance(explicit, (str, os.PathLike)):
         explicit = [explicit]
@@ -83,6 +107,16 @@ def resolve_ontology_paths(
             if paths:
                 where = f"[tool.{TOOL_TABLE}] ontology in {pyproject}"
                 return OntologySource(_existing(paths, where), f"pyproject:{pyproject}")
+    if roots:
+        from .discovery import discover, repository_root
+        from .index import bundled_ontology_path
+
+        root = repository_root(roots)
+        if root is not None:
+            discovered = discover(root)
+            if discovered.files:
+                return OntologySource((bundled_ontology_path(), *discovered.files),
+                                      f"discovered:{root}", discovered.vendored)
     return OntologySource((), "bundled")
 
 

@@ -1,0 +1,71 @@
+"""The project's own ontology: every file under the ``owl/`` folders of the repository.
+
+SkiROS2's world model loads the core files, then every ``.owl`` under its ``workspace_dir``
+(usually the skill package's own ``owl/`` folder), so nearly every skill repository ships
+an ``owl/`` folder with its robot description and project classes (``scalable:Ur5``,
+``paintbot:Paint``). Without them, every project class would be "unknown vocabulary".
+
+When nothing is configured, the files used are the bundled core plus every ``.owl``/``.ttl``/
+``.rdf`` file under each folder named ``owl`` inside the repository (its git top level, or
+the given paths outside git). A vendored copy of the core files (``skiros2/owl/skiros.owl``)
+is skipped: the bundled core states the same facts, and loading both would only add
+duplicates. Build output, virtual environments and hidden folders are not searched.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+OWL_FOLDER = "owl"
+SUFFIXES = (".owl", ".ttl", ".rdf")
+CORE_FILE_NAMES = frozenset({"skiros.owl", "skirosextra.owl", "sumo.owl", "cora.owl",
+                             "corax.owl", "rparts.owl"})
+"""The SkiROS2 core files (``skiros2/owl`` and its IEEE-1872-2015 folder), by lower-cased
+name: a copy of one of them in a repository is the core, already bundled."""
+NOT_SEARCHED = frozenset({"node_modules", "build", "devel", "install", "log", "dist",
+                          "site-packages", "__pycache__", "venv"})
+
+
+@dataclass(frozen=True)
+class Discovered:
+    """What the search found under ``root``: the project's files and the vendored core."""
+
+    root: Path
+    files: tuple[Path, ...]
+    vendored: tuple[Path, ...]
+
+
+def repository_root(paths: Sequence[Path]) -> Path | None:
+    """The git top level above the first path, else the common folder of the paths."""
+    if not paths:
+        return None
+    first = Path(paths[0]).resolve()
+    folder = first if first.is_dir() else first.parent
+    for candidate in (folder, *folder.parents):
+        if (candidate / ".git").exists():
+            return candidate
+    folders = [p if p.is_dir() else p.parent for p in (Path(x).resolve() for x in paths)]
+    return Path(os.path.commonpath([str(f) for f in folders]))
+
+
+def discover(root: Path) -> Discovered:
+    """Every ontology file under the ``owl/`` folders below ``root``, sorted."""
+    files: list[Path] = []
+    vendored: list[Path] = []
+    for path in _owl_files(root):
+        (vendored if path.name.lower() in CORE_FILE_NAMES else files).append(path)
+    return Discovered(root, tuple(sorted(files)), tuple(sorted(vendored)))
+
+
+def _owl_files(root: Path) -> Iterable[Path]:
+    for folder, dirs, names in os.walk(root):
+        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in NOT_SEARCHED)
+        here = Path(folder)
+        if OWL_FOLDER not in here.relative_to(root).parts:
+            continue
+        for name in names:
+            if name.lower().endswith(SUFFIXES):
+                yield here / name
