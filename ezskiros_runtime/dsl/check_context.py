@@ -87,7 +87,8 @@ class CheckContext:
 
     def param_location(self, name: str) -> tuple[str | None, int | None]:
         """File and line of parameter ``name`` in the ``def description`` signature (looked up
-        in the source only on this error path; the ``def`` line when the source is gone)."""
+        in the source only on this error path; the ``def`` line when the source is gone or
+        cannot be read: a lookup must never make a valid class unloadable)."""
         func = self.trace.func
         code = getattr(func, "__code__", None)
         file = code.co_filename if code is not None else None
@@ -95,7 +96,7 @@ class CheckContext:
         try:
             lines, start = inspect.getsourcelines(func)
             tree = ast.parse(textwrap.dedent("".join(lines)))
-        except (OSError, TypeError, SyntaxError):
+        except Exception:  # OSError, TokenError, SyntaxError, ...: no source, no harm
             return file, first
         for node in ast.walk(tree):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):

@@ -17,7 +17,9 @@ from __future__ import annotations
 
 import ast
 import importlib
+import importlib.util
 import itertools
+import linecache
 import os
 import re
 import sys
@@ -232,12 +234,24 @@ def _load(file: Path, source: bytes, module_name: str | None, root: Path | None,
     return result
 
 
+def _remember_source(filename: str, source: bytes) -> None:
+    """Make source lookups (``inspect``, tracebacks) see the bytes that were loaded.
+
+    Verification loads a rewrite before it is written: the file on disk still holds the
+    legacy code, and ``inspect.getsourcelines`` would tokenize the wrong lines (a
+    ``TokenError`` in a long banner or docstring). A ``linecache`` entry without mtime is
+    never checked against the disk."""
+    text = importlib.util.decode_source(source)
+    linecache.cache[filename] = (len(text), None, text.splitlines(True), filename)
+
+
 def _import(file: Path, filename: str, source: bytes, name: str,
             parents: list[str]) -> ModuleType:
     try:
         for parent in parents:
             importlib.import_module(parent)
         code = compile(source, filename, "exec", dont_inherit=True)
+        _remember_source(filename, source)
         spec = ModuleSpec(name, _CodeLoader(code), origin=filename,
                           is_package=file.name == "__init__.py")
         spec.has_location = True
