@@ -123,8 +123,8 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
     how = "verified by loading both versions" if options.verified else "NOT verified"
     relax = relaxed(options.ignore_order, options.ignore_labels)
     out.append(f"Equivalence: {how}" + (f"; {relax}" if relax else "") + ".")
-    if options.ontology:
-        out += ["", f"Ontology: {options.ontology.removeprefix('ontology: ')}."]
+    if options.ontology:  # "ontology from X: files" or "ontology: the core plus ..."
+        out += ["", options.ontology[0].upper() + options.ontology[1:] + "."]
     out += ["", "| files | skills | converted | skipped | failed | unchanged |",
             "|---:|---:|---:|---:|---:|---:|",
             f"| {s.files} | {s.skills} | {s.converted} | {s.skipped} | {s.failed} | "

@@ -98,7 +98,7 @@ def load(job: LoadJob) -> LoadOutcome:
         models=[m.to_json() for m in result.models],
         errors=[_plain(e) for e in result.errors],
         findings=[_plain(f) for f in result.findings],
-        seconds=time.perf_counter() - started)
+        seconds=time.perf_counter() - started, stood_in=result.stood_in)
 
 
 def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,

@@ -11,7 +11,7 @@ from ..results import FileResult, SkillResult, SkillStatus
 from .compare_files import class_sources, compare_outcomes, load_failure
 from .pool import PoolConfig, job_for, run_jobs
 from .protocol import LoadJob, LoadOutcome
-from .rewrite import attach_findings, capture, rejections
+from .rewrite import attach_findings, capture, note_stand_ins, rejections
 
 
 @dataclass(frozen=True)
@@ -131,6 +131,7 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
             unloadable = True
             result.error = "could not be read again after loading: nothing was compared"
             continue
+        note_stand_ins(result.notes, before, after)
         result.skills = _compare(old_bytes, new_bytes, before, after, options)
         attach_findings(result.skills, after, skip=frozenset())
     return results, unloadable

@@ -54,6 +54,8 @@ class LoadOutcome:
     stdout: str = ""
     stderr: str = ""
     seconds: float = 0.0
+    stood_in: list[str] = field(default_factory=list)
+    """Unresolvable imports that got a permissive stand-in (ROS and SkiROS2 aside)."""
 
     def to_json(self) -> dict[str, Any]:
         return asdict(self)

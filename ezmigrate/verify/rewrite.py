@@ -127,6 +127,7 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
         capture(result.notes, before, after)
         result.new_source = None
         return {}
+    note_stand_ins(result.notes, before, after)
     verdicts = {v.name: v for v in compare_outcomes(
         before, after, ignore_order=options.ignore_order, ignore_labels=options.ignore_labels)}
     by_name = {s.name: s for s in result.skills}
@@ -244,6 +245,15 @@ def attach_findings(skills: list[SkillResult], after: LoadOutcome,
             continue
         if not any(f.message == message for f in skill.findings):
             skill.findings.append(Finding(kind, int(data.get("line") or 0), message))
+
+
+def note_stand_ins(notes: list[str], before: LoadOutcome, after: LoadOutcome) -> None:
+    """Say which imports could not be resolved and were stood in (on both sides alike, so
+    the comparison still holds; a value taken from one would be a stand-in's)."""
+    names = sorted(set(before.stood_in) | set(after.stood_in))
+    if names:
+        notes.append("stood in (not found when loading; the same permissive stand-in on both "
+                     "sides): " + ", ".join(names))
 
 
 def capture(notes: list[str], before: LoadOutcome, after: LoadOutcome) -> None:

@@ -36,7 +36,7 @@ from ..model import SkillModel
 from .abstract_skill import SkillCore, SkillDescription
 from .errors import ModuleLoadError, NotDeclarativeError, NotUpstreamAPIError
 from .extract import model_of
-from .stand_ins import legacy_imports, library_roots
+from .stand_ins import expected_stand_in, legacy_imports, library_roots
 
 __all__ = ["ClassError", "FileLoad", "ModuleLoadError", "load_bytes", "load_file", "load_source"]
 
@@ -65,6 +65,9 @@ class FileLoad:
     models: list[SkillModel] = field(default_factory=list)
     errors: list[ClassError] = field(default_factory=list)
     findings: list[Any] = field(default_factory=list)
+    stood_in: list[str] = field(default_factory=list)
+    """Modules that could not be found and got a permissive stand-in, ROS and SkiROS2 aside
+    (``expected_stand_in``); a relative import of a file outside any package as ``.name``."""
 
 
 class _CodeLoader(Loader):
@@ -99,9 +102,17 @@ def _package_layout(path: Path, root: Path | None) -> tuple[list[str], Path]:
     return parts, (top.parent if top is not None else path.parent)
 
 
+STANDALONE = "_ezmigrate_standalone_"
+"""Prefix of the made-up package a file outside any package is loaded in: its relative
+imports (``from .helpers import x``, "no known parent package" otherwise) then find the
+sibling files, or a permissive stand-in when there is none, like any missing module."""
+
+
 def _unique_name(path: Path) -> str:
     stem = re.sub(r"\W", "_", path.stem) or "module"
-    return f"_ezmigrate_legacy_{stem}_{next(_counter)}"
+    if stem[0].isdigit():
+        stem = f"_{stem}"
+    return f"{STANDALONE}{next(_counter)}.{stem}"
 
 
 def _module_name(path: Path, module_name: str | None, root: Path | None) -> tuple[str, Path]:
@@ -222,9 +233,15 @@ def _load(file: Path, source: bytes, module_name: str | None, root: Path | None,
     sys.dont_write_bytecode = True
     result = FileLoad(file)
     try:
-        with legacy_imports(permissive=permissive):
+        with legacy_imports(permissive=permissive) as stood_in:
             sys.path.insert(0, str(search))
-            module = _import(file, filename, source, name, parents)
+            try:
+                module = _import(file, filename, source, name, parents)
+            except ModuleLoadError as error:
+                raise _with_star_stand_ins(error, source, _worth_a_note(stood_in)) from \
+                    error.__cause__
+            finally:
+                result.stood_in = _worth_a_note(stood_in)
             _collect(module, source, filename, result)
     finally:
         sys.path[:] = saved_path
@@ -232,6 +249,33 @@ def _load(file: Path, source: bytes, module_name: str | None, root: Path | None,
         _forget_user_modules(before, owned, search)
         sys.modules.update(stashed)
     return result
+
+
+def _with_star_stand_ins(error: ModuleLoadError, source: bytes,
+                         stood_in: list[str]) -> ModuleLoadError:
+    """A ``NameError`` in a file that star-imports a stood-in module: the name probably
+    came from there, so say which module could not be found."""
+    if error.exc_type != "NameError" or not stood_in:
+        return error
+    starred = [n for n in stood_in if re.search(
+        rb"from\s+" + re.escape(n.encode()) + rb"\s+import\s+\*", source)]
+    if not starred:
+        return error
+    return ModuleLoadError(error.path, error.line, error.exc_type, error.message + (
+        f" (perhaps from {', '.join(starred)}, imported with * but not found: it was stood "
+        "in, and a stand-in provides no names to a star import; give its folder too)"),
+        error.origin)
+
+
+def _worth_a_note(stood_in: list[str]) -> list[str]:
+    """The stood-in modules a reader should hear of, as the file spelled them."""
+    shown = []
+    for name in stood_in:
+        if name.startswith(STANDALONE):
+            name = "." + name.partition(".")[2]
+        if name and not expected_stand_in(name.lstrip(".")):
+            shown.append(name)
+    return sorted(set(shown))
 
 
 def _remember_source(filename: str, source: bytes) -> None:
@@ -249,7 +293,13 @@ def _import(file: Path, filename: str, source: bytes, name: str,
             parents: list[str]) -> ModuleType:
     try:
         for parent in parents:
-            importlib.import_module(parent)
+            if parent.startswith(STANDALONE):
+                package = ModuleType(parent)
+                package.__path__ = [str(file.parent)]
+                package.__package__ = parent
+                sys.modules[parent] = package
+            else:
+                importlib.import_module(parent)
         code = compile(source, filename, "exec", dont_inherit=True)
         _remember_source(filename, source)
         spec = ModuleSpec(name, _CodeLoader(code), origin=filename,

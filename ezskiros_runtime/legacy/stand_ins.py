@@ -38,7 +38,24 @@ from typing import Any
 from . import abstract_skill, conditions, params, primitive, processors, skill, world_element
 from .stubs import make_stub_module
 
-__all__ = ["SKIROS2_MODULES", "legacy_imports", "library_roots"]
+__all__ = ["SKIROS2_MODULES", "expected_stand_in", "legacy_imports", "library_roots"]
+
+EXPECTED_ROOTS = frozenset({
+    "rospy", "roslib", "rospkg", "rosnode", "rosgraph", "rosparam", "rosbag", "actionlib",
+    "tf", "tf2_ros", "tf2_py", "tf2_geometry_msgs", "tf_conversions", "moveit_commander",
+    "moveit_msgs", "cv_bridge", "image_geometry", "message_filters", "dynamic_reconfigure",
+    "rclpy", "launch", "launch_ros", "ament_index_python", "genpy", "std_srvs",
+    "skiros2_msgs", "skiros2_world_model", "skiros2_common", "skiros2_skill",
+    "skiros2_std_lib", "skiros2_task", "PyKDL", "kdl_parser_py", "urdf_parser_py"})
+"""Top-level modules a skill is expected to import on the robot only: their stand-ins are
+no news. Anything else that had to be stood in (a sibling module not given, a relative
+import of a file passed alone) is listed in the report."""
+
+
+def expected_stand_in(name: str) -> bool:
+    """Whether the stood-in module ``name`` is ROS or SkiROS2 (not worth a note)."""
+    root = name.split(".", 1)[0]
+    return root in EXPECTED_ROOTS or root.endswith(("_msgs", "_srvs", "_msg", "_srv"))
 
 _PACKAGE = ()  # a stand-in package: no names of its own, only submodules
 
@@ -64,10 +81,12 @@ _SKIROS2_ROOTS = ("skiros2_common", "skiros2_skill")
 
 
 class _Tracker:
-    """The modules one ``legacy_imports`` context created (for the clean-up on exit)."""
+    """The modules one ``legacy_imports`` context created (for the clean-up on exit), and
+    the names the permissive finder stood in for (what the report lists)."""
 
     def __init__(self) -> None:
         self.created: dict[str, ModuleType] = {}
+        self.stood_in: list[str] = []
 
 
 class _StandInFinder(MetaPathFinder, Loader):
@@ -154,6 +173,7 @@ class _PermissiveFinder(MetaPathFinder, Loader):
     def exec_module(self, module: ModuleType) -> None:
         make_stub_module(module)
         self._tracker.created[module.__name__] = module
+        self._tracker.stood_in.append(module.__name__)
 
 
 def _is_skiros2_name(name: str) -> bool:
@@ -161,9 +181,11 @@ def _is_skiros2_name(name: str) -> bool:
 
 
 @contextmanager
-def legacy_imports(*, permissive: bool = False) -> Iterator[None]:
+def legacy_imports(*, permissive: bool = False) -> Iterator[list[str]]:
     """Make SkiROS2's module names importable for the duration (and stub missing modules if
-    ``permissive``); see the module docstring for the exact guarantees."""
+    ``permissive``); see the module docstring for the exact guarantees.
+
+    Yields the list of module names stubbed so far (filled while the context runs)."""
     tracker = _Tracker()
     stand_in = _StandInFinder(tracker)
     stub_finder = _PermissiveFinder(tracker) if permissive else None
@@ -174,7 +196,7 @@ def legacy_imports(*, permissive: bool = False) -> Iterator[None]:
     if stub_finder is not None:
         sys.meta_path.append(stub_finder)
     try:
-        yield
+        yield tracker.stood_in
     finally:
         for finder in (stand_in, stub_finder):
             if finder is not None and finder in sys.meta_path:

@@ -138,8 +138,9 @@ class InInit(SkillDescription):
     assert not {"top", "top.sub", "top.sub.consts"} & set(sys.modules)
 
 
-def test_plain_file_is_a_unique_top_level_module_with_its_folder_on_path(
+def test_plain_file_is_a_module_of_a_unique_made_up_package_with_its_folder_on_path(
         tmp_path: Path) -> None:
+    """The made-up package gives relative imports a parent (test_unresolved_imports.py)."""
     write(tmp_path / "helpers_top.py", "VALUE = 'from sibling'\n")
     path = write(tmp_path / "skills.py", HEADER + """
 import helpers_top
@@ -151,8 +152,8 @@ class Uses(SkillDescription):
 """)
     first, second = load_file(path).models[0], load_file(path).models[0]
     names = [first.params[0].values[0][1], second.params[0].values[0][1]]
-    assert names[0] != names[1] and all(n.startswith("_ezmigrate_legacy_skills_")
-                                        for n in names)
+    assert names[0] != names[1] and all(
+        n.startswith("_ezmigrate_standalone_") and n.endswith(".skills") for n in names)
     assert first.params[1].values == (("str", "from sibling"),)
     assert "helpers_top" not in sys.modules and str(tmp_path) not in sys.path
 

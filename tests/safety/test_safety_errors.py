@@ -100,9 +100,12 @@ def test_stdin_mode_passes_a_broken_file_through_whole(name):
     assert run.returncode == 1
     assert run.stdout == data  # an editor replacing its buffer with our output loses nothing
     assert_no_traceback(run.stderr.decode("utf-8", "replace"))
-    # one line per problem, naming the input "-" as a path run names the file: "-: ..." for
-    # the file, "-:LINE: Class: ..." for a skill (a PEP 701 file parses, fails to import)
-    assert run.stderr.startswith(b"-:")
+    # the ontology used, then one line per problem, naming the input "-" as a path run names
+    # the file: "-: ..." for the file, "-:LINE: Class: ..." for a skill (a PEP 701 file
+    # parses, fails to import)
+    first, second = run.stderr.splitlines()[:2]
+    assert first.startswith(b"ezmigrate: ontology from the bundled default")
+    assert second.startswith(b"-:")
 
 
 def _python_m() -> list[str]:
