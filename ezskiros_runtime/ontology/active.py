@@ -8,7 +8,8 @@ use; the CLI and tests call `use_ontology()` to pin a specific one.
 On a robot the working directory is arbitrary (roslaunch starts nodes in ``~/.ros``), so when
 neither an argument, the environment nor a pyproject.toml above the working directory names
 an ontology, the pyproject.toml above the first file that asked for vocabulary (see
-`note_source_file`) is searched before falling back to the bundled vocabulary.
+`note_source_file`) is searched; then, with the SkiROS2 backend active, the files the world
+model server loads (`robot`); and only then the bundled vocabulary.
 """
 
 from __future__ import annotations
@@ -20,6 +21,13 @@ from pathlib import Path
 
 from .config import OntologySource, resolve_ontology_paths
 from .index import OntologyIndex, load_index
+from .robot import (
+    PackageLocator,
+    ParameterSource,
+    locate_package,
+    read_parameter,
+    robot_ontology_files,
+)
 
 _lock = threading.RLock()
 _active: OntologyIndex | None = None
@@ -83,11 +91,30 @@ def use_ontology(
         return _active
 
 
+def _on_skiros2() -> bool:
+    """Whether skills run on real SkiROS2 here (the backend's own decision)."""
+    from ..dsl.backend import select_backend
+
+    try:
+        return select_backend().name == "skiros2"
+    except ImportError:
+        return False
+
+
+def robot_source(locator: PackageLocator = locate_package,
+                 parameters: ParameterSource = read_parameter) -> OntologySource:
+    """The world model's files as an ontology source (the bundled core when not found)."""
+    files = robot_ontology_files(locator, parameters)
+    return OntologySource(files, "robot") if files else OntologySource((), "bundled")
+
+
 def _load_configured() -> OntologyIndex:
     global _source
     source = resolve_ontology_paths()
     if source.origin == "bundled" and _hint:  # nothing configured from the working directory
         source = resolve_ontology_paths(start=_hint[0])
+    if source.origin == "bundled" and _on_skiros2():
+        source = robot_source()
     index = load_index(list(source.paths) or None)
     _source = source
     return index

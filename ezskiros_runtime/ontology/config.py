@@ -50,6 +50,7 @@ class OntologySource:
             "argument": "--ontology",
             "environment": ENV_VAR,
             "bundled": "the bundled default",
+            "robot": "the SkiROS2 world model's files",
         }.get(self.origin, self.origin.replace("pyproject:", "", 1))
         if self.origin.startswith("discovered:"):
             root = Path(self.origin.partition(":")[2])
