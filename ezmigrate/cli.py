@@ -117,6 +117,21 @@ def _load_index(ontology: tuple[Path, ...], start: Path,
         sys.exit(EXIT_ERROR)
 
 
+def _interpreter(given: str | None, configured: str | None) -> str | None:
+    """``--python`` (else ``[tool.ezmigrate] python``) as a path to run; a name that does
+    not run is a usage error, not a silent fallback to this interpreter."""
+    import shutil
+
+    value = given or configured
+    if value is None:
+        return None
+    found = shutil.which(value)
+    if found is None:
+        raise click.BadParameter(f"{value}: no such interpreter (a path, or a name on PATH)",
+                                 param_hint="'--python'")
+    return found
+
+
 def _report_path(path: Path | None) -> Path | None:
     """The report's format comes from its name: refuse a name that says neither."""
     if path is not None and str(path) != "-" and path.suffix.lower() not in (".md", ".json"):
@@ -169,14 +184,17 @@ def main() -> None:
 @click.option("--verify/--no-verify", default=True, show_default=True,
               help="Load both versions and demand equivalence before writing.")
 @click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file when verifying.")
+@click.option("--python", "python", metavar="PATH",
+              help="Load files with this interpreter when verifying (default: this one, and "
+                   "for syntax newer than it the newest python3.X on PATH that compiles it).")
 @click.option("--ignore-order", is_flag=True, help="Verification ignores declaration order.")
 @click.option("--ignore-labels", is_flag=True, help="Verification ignores condition labels.")
 @click.option("--color/--no-color", default=None, help="Colour diffs (default: on a terminal).")
 @click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
 def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | None,
             exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
-            output_dir: Path | None, verify: bool, timeout: float | None, ignore_order: bool,
-            ignore_labels: bool, color: bool | None, debug: bool) -> None:
+            output_dir: Path | None, verify: bool, timeout: float | None, python: str | None,
+            ignore_order: bool, ignore_labels: bool, color: bool | None, debug: bool) -> None:
     """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin).
 
     Temporary files (.NAME.XXXXXXXX.ezmigrate) that a killed run left beside PATHS are
@@ -187,7 +205,8 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
 
         index, ontology_files, used = _load_index(ontology, Path.cwd(), [Path.cwd()])
         data, result = rewrite_stdin(index, ontology_files, verify=verify,
-                                     timeout=timeout or 20.0)
+                                     timeout=timeout or 20.0,
+                                     python=_interpreter(python, None))
         _print_result("-", "-", data, result, dry_run, check, color, debug)
         if not (dry_run or check):  # whatever happened, stdout gets a whole file
             new = result.new_source
@@ -203,6 +222,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         paths=list(paths), dry_run=dry_run, check=check,
         exclude=tuple(exclude) + project.exclude, output_dir=output_dir, verify=verify,
         timeout=timeout or project.timeout or 20.0, ignore_order=ignore_order,
+        python=_interpreter(python, project.python),
         ignore_labels=ignore_labels, ontology=ontology_files,
         project=project.source.parent if project.source else None)
     if jobs or project.jobs:
@@ -262,12 +282,16 @@ def _finish(results: list[FileResult], report: Path | None, writes: bool, check:
               help="Ontology file or folder (repeatable).")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
 @click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
+@click.option("--python", "python", metavar="PATH",
+              help="Load files with this interpreter when verifying (default: this one, and "
+                   "for syntax newer than it the newest python3.X on PATH that compiles it).")
 @click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
 @click.option("--ignore-order", is_flag=True, help="Declaration order does not matter.")
 @click.option("--ignore-labels", is_flag=True, help="Condition labels do not matter.")
 @click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
 def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path, ...],
-           jobs: int | None, timeout: float | None, exclude: tuple[str, ...],
+           jobs: int | None, timeout: float | None, python: str | None,
+           exclude: tuple[str, ...],
            ignore_order: bool, ignore_labels: bool, debug: bool) -> None:
     """Prove AFTER means what BEFORE meant (two files, or two folders by relative path)."""
     from .runner import default_jobs
@@ -277,7 +301,8 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
     project = load_project_config(before)
     _, ontology_files, used = _load_index(ontology, before, [before])
     pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
-                      timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
+                      timeout=timeout or project.timeout or 20.0, ontology=ontology_files,
+                      python=_interpreter(python, project.python))
     try:
         results, unloadable = run_verify(VerifyOptions(
             before, after, pool, ignore_order, ignore_labels, tuple(exclude) + project.exclude))
@@ -316,11 +341,15 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
               help="Ontology file or folder (repeatable).")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
 @click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
+@click.option("--python", "python", metavar="PATH",
+              help="Load files with this interpreter when verifying (default: this one, and "
+                   "for syntax newer than it the newest python3.X on PATH that compiles it).")
 @click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
 @click.option("--quiet", "-q", is_flag=True, help="Only errors and the summary.")
 @click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
 def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], jobs: int | None,
-          timeout: float | None, exclude: tuple[str, ...], quiet: bool, debug: bool) -> None:
+          timeout: float | None, python: str | None, exclude: tuple[str, ...], quiet: bool,
+          debug: bool) -> None:
     """For CI: fail on unmigrated legacy descriptions and on EzSkiROS check errors."""
     from .check import run_check
     from .runner import default_jobs
@@ -329,7 +358,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], jobs: int | None,
     project = load_project_config(paths[0])
     index, ontology_files, _ = _load_index(ontology, paths[0], paths)
     pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
-                      timeout=timeout or project.timeout or 20.0, ontology=ontology_files)
+                      timeout=timeout or project.timeout or 20.0, ontology=ontology_files,
+                      python=_interpreter(python, project.python))
     outcome = run_check(list(paths), index, pool, tuple(exclude) + project.exclude)
     for message in outcome.messages:
         if not quiet or message.severity == "error":

@@ -1,7 +1,9 @@
 """``[tool.ezmigrate]`` in the nearest ``pyproject.toml``: defaults a project keeps in its repo.
 
-Keys: ``exclude`` (list of globs), ``jobs`` (int), ``timeout`` (seconds), and ``ontology``
-(read by ``ezskiros_runtime.ontology.config``). Command-line options win over these.
+Keys: ``exclude`` (list of globs), ``jobs`` (int), ``timeout`` (seconds), ``python`` (the
+interpreter that loads files when verifying, relative to the project when it is a path),
+and ``ontology`` (read by ``ezskiros_runtime.ontology.config``). Command-line options win
+over these.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ class ProjectConfig:
     exclude: tuple[str, ...] = ()
     jobs: int | None = None
     timeout: float | None = None
+    python: str | None = None
     source: Path | None = None
 
 
@@ -62,8 +65,15 @@ def load_project_config(start: Path) -> ProjectConfig:
                                 or not isinstance(timeout, (int, float)) or timeout <= 0):
         raise ConfigError(f"{path}: [tool.ezmigrate] timeout must be a positive number of "
                           f"seconds, not {timeout!r}")
+    python = section.get("python")
+    if python is not None and not (isinstance(python, str) and python):
+        raise ConfigError(f"{path}: [tool.ezmigrate] python must be an interpreter's name or "
+                          f"path, not {python!r}")
+    if python is not None and ("/" in python or "\\" in python):
+        python = str(path.parent / python)  # a path means the same from any subfolder
     return ProjectConfig(exclude=tuple(exclude), jobs=jobs,
-                         timeout=float(timeout) if timeout is not None else None, source=path)
+                         timeout=float(timeout) if timeout is not None else None,
+                         python=python, source=path)
 
 
 class ConfigError(ValueError):

@@ -40,6 +40,8 @@ class RewriteOptions:
     output_dir: Path | None = None
     verify: bool = True
     timeout: float = 20.0
+    python: str | None = None
+    """The interpreter verification loads files with (None: ours, see verify.interpreters)."""
     ignore_order: bool = False
     ignore_labels: bool = False
     ontology: tuple[str, ...] = ()

@@ -17,18 +17,18 @@ from .results import FileResult
 
 
 def rewrite_stdin(index: Any, ontology: tuple[str, ...], *, verify: bool,
-                  timeout: float) -> tuple[bytes, FileResult]:
+                  timeout: float, python: str | None = None) -> tuple[bytes, FileResult]:
     """Stdin's bytes and their result; ``new_source`` is set only when it verified (or
     verification is off). The command line prints and exits exactly as for a file."""
     data = sys.stdin.buffer.read()
     result = migrate(data, Settings(index=index), "-")
     if isinstance(result.new_source, bytes) and verify:
-        result.new_source = _verified(data, result, ontology, timeout)
+        result.new_source = _verified(data, result, ontology, timeout, python)
     return data, result
 
 
 def _verified(data: bytes, result: FileResult, ontology: tuple[str, ...],
-              timeout: float) -> bytes | None:
+              timeout: float, python: str | None) -> bytes | None:
     """The migrated bytes if they verify, by the same rules as ``rewrite``; else ``None``."""
     from .discover import Candidate
     from .runner import Migrated
@@ -42,7 +42,8 @@ def _verified(data: bytes, result: FileResult, ontology: tuple[str, ...],
         path = Path(folder) / "stdin_module.py"
         path.write_bytes(data)
         before, after = run_jobs([job_for(path, data), job_for(path, result.new_source)],
-                                 PoolConfig(workers=2, timeout=timeout, ontology=ontology))
+                                 PoolConfig(workers=2, timeout=timeout, ontology=ontology,
+                                            python=python))
     item = Migrated(Candidate(path, path.parent), data, digest(data), result)
     apply_verdicts(item, before, after, RewriteOptions(paths=[], timeout=timeout))
     new = item.result.new_source

@@ -23,6 +23,9 @@ from typing import Any
 from .overlay import overlaid
 from .protocol import LoadJob, LoadOutcome, Status
 
+NEWER_SYNTAX = "cannot import under Python"
+"""How a load that failed on syntax newer than this Python begins its message."""
+
 OUTPUT_LIMIT = 64 * 1024 * 1024
 """Largest file the child may write (its captured output included): a module that prints
 without end fills no disk before the timeout; past it a write fails with EFBIG."""
@@ -87,7 +90,8 @@ def load(job: LoadJob) -> LoadOutcome:
         cause = error.__cause__
         if isinstance(cause, SyntaxError):
             message, line = syntax_message(cause, source, path, message, line)
-        return LoadOutcome(status, message, line)
+        return LoadOutcome(status, message, line,
+                           newer_syntax=message.startswith(NEWER_SYNTAX))
     except Exception as error:  # a loader bug still gives a verdict for this file only
         traceback.print_exc(limit=8)  # into the captured stderr, not into the message
         first = (str(error).splitlines() or [""])[0]
@@ -110,8 +114,10 @@ def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,
     file, a NUL byte or a truncated file is plain invalid syntax, reported at its line and
     column (a NUL byte's SyntaxError carries no position: it is found in the bytes).
     """
-    import libcst
-
+    try:
+        import libcst
+    except ImportError:  # under another interpreter (--python): no libcst, no second opinion
+        return f"SyntaxError in {path.name} at line {error.lineno}: {error.msg}", line
     data = source
     if error.filename and Path(error.filename) != path:  # raised in a module it imports
         with contextlib.suppress(OSError):
@@ -122,7 +128,7 @@ def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,
         pass
     else:
         version = f"{sys.version_info.major}.{sys.version_info.minor}"
-        return f"cannot import under Python {version}: {message}", line
+        return f"{NEWER_SYNTAX} {version}: {message}", line
     row, column = error.lineno, error.offset
     if row is None and b"\0" in data:
         before = data[:data.index(b"\0")]

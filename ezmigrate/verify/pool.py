@@ -16,9 +16,10 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
+from .interpreters import describe, is_foreign, newest_that_compiles, worker_command
 from .protocol import LoadJob, LoadOutcome
 
 
@@ -30,6 +31,9 @@ class PoolConfig:
     timeout: float = 20.0
     memory_mb: int = 2048
     ontology: tuple[str, ...] = ()
+    python: str | None = None
+    """The interpreter to load files with (``--python``); None: ours, and for a file with
+    syntax newer than ours, the newest ``python3.X`` on PATH that compiles it."""
 
 
 class _Stopped(Exception):
@@ -51,12 +55,14 @@ class _Crew:
         self.processes: list[subprocess.Popen[str]] = []
         self.stopping = False
 
-    def spawn(self, args: list[str]) -> subprocess.Popen[str]:
+    def spawn(self, args: list[str],
+              env: dict[str, str] | None = None) -> subprocess.Popen[str]:
         with self.lock:  # a worker is either recorded here or never started
             if self.stopping:
                 raise _Stopped
             process = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                       stderr=subprocess.DEVNULL, text=True, bufsize=1)
+                                       stderr=subprocess.DEVNULL, text=True, bufsize=1,
+                                       env=env)
             self.processes.append(process)
             return process
 
@@ -78,14 +84,21 @@ class _Crew:
                     process.wait()
 
 
+ZYGOTE = "ezmigrate.verify.zygote"
+
+
 class _Worker:
     def __init__(self, config: PoolConfig, crew: _Crew) -> None:
         self.config = config
-        args = [sys.executable, "-m", "ezmigrate.verify.zygote", "--timeout",
-                str(config.timeout), "--memory-mb", str(config.memory_mb)]
+        command, env = [sys.executable, "-m", ZYGOTE], None
+        if is_foreign(config.python):
+            assert config.python is not None
+            command, env = worker_command(config.python, ZYGOTE)
+        args = [*command, "--timeout", str(config.timeout), "--memory-mb",
+                str(config.memory_mb)]
         for path in config.ontology:
             args += ["--ontology", path]
-        self.process = crew.spawn(args)
+        self.process = crew.spawn(args, env)
         ready = self.process.stdout.readline() if self.process.stdout else ""
         if '"ready"' not in ready:
             raise RuntimeError("a verification worker failed to start")
@@ -164,7 +177,30 @@ def run_jobs(jobs: Sequence[LoadJob], config: PoolConfig,
     except BaseException:  # Interrupted (a signal), KeyboardInterrupt, anything
         crew.stop()
         raise
-    return [r if r is not None else LoadOutcome("crashed", "no result") for r in results]
+    outcomes = [r if r is not None else LoadOutcome("crashed", "no result") for r in results]
+    if config.python is None:
+        _retry_newer_syntax(jobs, outcomes, config)
+    elif is_foreign(config.python):
+        for outcome in outcomes:
+            outcome.python = describe(config.python)
+    return outcomes
+
+
+def _retry_newer_syntax(jobs: Sequence[LoadJob], outcomes: list[LoadOutcome],
+                        config: PoolConfig) -> None:
+    """Load again, under the newest ``python3.X`` on PATH that compiles them, the files that
+    failed on syntax newer than ours; the outcomes say which interpreter loaded them."""
+    again = [i for i, outcome in enumerate(outcomes) if outcome.newer_syntax]
+    if not again:
+        return
+    sources = [jobs[i].source if jobs[i].source is not None else Path(jobs[i].path).read_bytes()
+               for i in again]
+    python = newest_that_compiles([s for s in sources if s is not None])
+    if python is None:
+        return
+    retried = run_jobs([jobs[i] for i in again], replace(config, python=python))
+    for i, outcome in zip(again, retried, strict=True):
+        outcomes[i] = outcome
 
 
 def job_for(path: Path, source: bytes | None = None, root: Path | None = None) -> LoadJob:

@@ -56,6 +56,10 @@ class LoadOutcome:
     seconds: float = 0.0
     stood_in: list[str] = field(default_factory=list)
     """Unresolvable imports that got a permissive stand-in (ROS and SkiROS2 aside)."""
+    newer_syntax: bool = False
+    """The file failed on syntax newer than the interpreter that loaded it."""
+    python: str = ""
+    """The interpreter that loaded the file when it was not ezmigrate's own."""
 
     def to_json(self) -> dict[str, Any]:
         return asdict(self)

@@ -34,7 +34,8 @@ def verify_migrated(migrated: list[Migrated], options: RewriteOptions) -> None:
     if not migrated:
         return
     by_relative = {item.candidate.relative: item for item in migrated}
-    config = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=options.ontology)
+    config = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=options.ontology,
+                        python=options.python)
     pending = list(migrated)
     for _ in range(MAX_ROUNDS):
         jobs = []
@@ -248,8 +249,11 @@ def attach_findings(skills: list[SkillResult], after: LoadOutcome,
 
 
 def note_stand_ins(notes: list[str], before: LoadOutcome, after: LoadOutcome) -> None:
-    """Say which imports could not be resolved and were stood in (on both sides alike, so
-    the comparison still holds; a value taken from one would be a stand-in's)."""
+    """Say which interpreter loaded the file when it was not ours, and which imports could
+    not be resolved and were stood in (on both sides alike, so the comparison still holds;
+    a value taken from one would be a stand-in's)."""
+    for python in dict.fromkeys(o.python for o in (before, after) if o.python):
+        notes.append(f"verified under {python}")
     names = sorted(set(before.stood_in) | set(after.stood_in))
     if names:
         notes.append("stood in (not found when loading; the same permissive stand-in on both "

@@ -93,10 +93,10 @@ def test_verify_command_over_messy_files_shows_no_traceback(messy, tmp_path):
 
 @pytest.mark.parametrize("name", ["py2_print_statement.py", "invalid_utf8_no_cookie.py",
                                   "fstring_pep701.py", "truncated_mid_call.py"])
-def test_stdin_mode_passes_a_broken_file_through_whole(name):
+def test_stdin_mode_passes_a_broken_file_through_whole(name, tmp_path):
     data = (BROKEN / name).read_bytes()
     run = subprocess.run([*_python_m(), "rewrite", "-"], input=data, capture_output=True,
-                         timeout=300, check=False)
+                         timeout=300, check=False, cwd=tmp_path)  # no owl/ folder around
     assert run.returncode == 1
     assert run.stdout == data  # an editor replacing its buffer with our output loses nothing
     assert_no_traceback(run.stderr.decode("utf-8", "replace"))

@@ -1,0 +1,97 @@
+"""Another Python for files this one cannot import (``--python``, or the newest on PATH).
+
+About 1% of real skill classes live in files with syntax newer than the Python running
+ezmigrate (3.12 f-strings such as ``f"{d["key"]}"``). libcst migrates them, but verifying
+needs an interpreter that can import them. ``--python PATH`` (or ``[tool.ezmigrate]
+python``) names one; otherwise, for the files that need it, the newest ``python3.X`` on
+``PATH`` newer than this one that compiles them is chosen, and the report says which.
+
+The other interpreter runs the verification worker from our own source folders (linked
+into a private folder put on its ``PYTHONPATH``), with ``-B`` so that it writes no bytecode
+beside them. It needs no third-party package: the ontology index comes from the cache the
+parent filled (a pickle of our own classes), and libcst is only asked for a second opinion
+on syntax errors, which the worker skips when libcst is missing.
+"""
+
+from __future__ import annotations
+
+import atexit
+import functools
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from collections.abc import Sequence
+from pathlib import Path
+
+PACKAGES = ("ezskiros_runtime", "ezmigrate")
+_COMPILES = ("import sys\n"
+             "for path in sys.argv[1:]:\n"
+             "    compile(open(path, 'rb').read(), path, 'exec', dont_inherit=True)\n")
+
+
+def is_foreign(python: str | None) -> bool:
+    """Whether ``python`` is another interpreter than the one running us."""
+    if not python:
+        return False
+    found = shutil.which(python) or python
+    return os.path.realpath(found) != os.path.realpath(sys.executable)
+
+
+@functools.lru_cache(maxsize=1)
+def package_links() -> str:
+    """A folder holding links to our packages: the other interpreter's ``PYTHONPATH``."""
+    folder = Path(tempfile.mkdtemp(prefix="ezmigrate-python-"))
+    atexit.register(shutil.rmtree, folder, True)
+    here = Path(__file__).resolve().parents[2]
+    for name in PACKAGES:
+        (folder / name).symlink_to(here / name, target_is_directory=True)
+    return str(folder)
+
+
+def worker_command(python: str, module: str) -> tuple[list[str], dict[str, str]]:
+    """The command line and environment that start ``module`` under ``python``."""
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(filter(None, [package_links(),
+                                                       env.get("PYTHONPATH", "")]))
+    return [python, "-B", "-m", module], env
+
+
+def newer_interpreters() -> list[str]:
+    """``python3.X`` on PATH with X above this Python's minor version, newest first."""
+    found = []
+    for minor in range(sys.version_info.minor + 20, sys.version_info.minor, -1):
+        path = shutil.which(f"python3.{minor}")
+        if path is not None:
+            found.append(path)
+    return found
+
+
+def describe(python: str) -> str:
+    """``python3.13 (/usr/bin/python3.13)`` for the report."""
+    name = Path(python).name
+    return f"{name} ({python})" if re.fullmatch(r"python3\.\d+", name) else python
+
+
+def compiles(python: str, sources: Sequence[bytes]) -> bool:
+    """Whether ``python`` compiles every source (each written to a private file)."""
+    with tempfile.TemporaryDirectory(prefix="ezmigrate-compile-") as folder:
+        paths = []
+        for number, data in enumerate(sources):
+            path = Path(folder, f"source_{number}.py")
+            path.write_bytes(data)
+            paths.append(str(path))
+        try:
+            run = subprocess.run([python, "-B", "-c", _COMPILES, *paths],
+                                 stdin=subprocess.DEVNULL, capture_output=True, timeout=120,
+                                 check=False)
+        except (OSError, subprocess.TimeoutExpired):
+            return False
+        return run.returncode == 0
+
+
+def newest_that_compiles(sources: Sequence[bytes]) -> str | None:
+    """The newest ``python3.X`` on PATH that compiles every source, or None."""
+    return next((p for p in newer_interpreters() if compiles(p, sources)), None)
