@@ -22,6 +22,7 @@ import click
 from . import __version__, interrupt
 from .config import ConfigError, load_project_config
 from .diffs import colour, unified_diff
+from .discover import excluded_under
 from .report import MarkdownOptions, Summary, json_report, markdown_report, relaxed
 from .results import FileResult
 
@@ -96,19 +97,24 @@ def _thread_failed(args: Any, debug: bool) -> None:
         click.echo("ezmigrate: rerun with --debug for details", err=True)
 
 
-def _load_index(ontology: tuple[Path, ...], start: Path,
-                roots: Sequence[Path] = ()) -> tuple[Any, tuple[str, ...], str]:
+def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path] = (),
+                exclude: Sequence[str] = ()) -> tuple[Any, tuple[str, ...], str]:
     """The ontology index by the configuration rules, the files it came from, and a line
     saying which files and why.
 
     Says once on stderr which files are used and why (the report header says it again):
-    with nothing configured, the owl/ folders of the repository of ``roots`` count."""
+    with nothing configured, the owl/ folders of the repository of ``roots`` count (less
+    what ``exclude`` or the project's excludes name)."""
     from ezskiros_runtime.ontology.config import resolve_ontology_paths
     from ezskiros_runtime.ontology.errors import OntologyError
     from ezskiros_runtime.ontology.index import load_index
 
     try:
-        source = resolve_ontology_paths(list(ontology) or None, start=start, roots=roots)
+        project = load_project_config(start)
+        base = project.source.parent if project.source else Path.cwd()
+        skip = excluded_under(base, [*exclude, *project.exclude])
+        source = resolve_ontology_paths(list(ontology) or None, start=start, roots=roots,
+                                        skip=skip)
         index = load_index(list(source.paths) or None)
         click.echo(f"ezmigrate: {source.describe()}", err=True)
         return index, tuple(str(p) for p in source.paths), source.describe()
@@ -217,7 +223,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
 
     start = paths[0]
     project = load_project_config(start)
-    index, ontology_files, used = _load_index(ontology, start, paths)
+    index, ontology_files, used = _load_index(ontology, start, paths, exclude)
     options = RewriteOptions(
         paths=list(paths), dry_run=dry_run, check=check,
         exclude=tuple(exclude) + project.exclude, output_dir=output_dir, verify=verify,
@@ -299,7 +305,7 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
     from .verify.pool import PoolConfig
 
     project = load_project_config(before)
-    _, ontology_files, used = _load_index(ontology, before, [before])
+    _, ontology_files, used = _load_index(ontology, before, [before], exclude)
     pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
                       timeout=timeout or project.timeout or 20.0, ontology=ontology_files,
                       python=_interpreter(python, project.python))
@@ -356,7 +362,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], jobs: int | None,
     from .verify.pool import PoolConfig
 
     project = load_project_config(paths[0])
-    index, ontology_files, _ = _load_index(ontology, paths[0], paths)
+    index, ontology_files, _ = _load_index(ontology, paths[0], paths, exclude)
     pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
                       timeout=timeout or project.timeout or 20.0, ontology=ontology_files,
                       python=_interpreter(python, project.python))

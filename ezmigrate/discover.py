@@ -11,7 +11,7 @@ import errno
 import fnmatch
 import os
 import subprocess
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -35,6 +35,17 @@ class Candidate:
             return self.path.relative_to(self.root).as_posix() or self.path.name
         except ValueError:
             return self.path.as_posix()
+
+
+def excluded_under(base: Path, patterns: Sequence[str]) -> Callable[[Path], bool]:
+    """Whether a path is excluded, matched relative to ``base`` (the project's folder)."""
+    def skip(path: Path) -> bool:
+        try:
+            relative = path.resolve().relative_to(base.resolve()).as_posix()
+        except ValueError:
+            return False
+        return _excluded(relative, patterns)
+    return skip
 
 
 def _excluded(relative: str, patterns: Sequence[str]) -> bool:

@@ -123,8 +123,11 @@ def test_unused_imports_stay_and_new_imports_follow_the_star_import(migrated):
 
 def test_the_migrated_repository_verifies_against_the_original(migrated, tmp_path):
     root, _, _ = migrated
+    original = tmp_path / "ros_repo"  # a repository of its own, as the lab's checkout is
+    shutil.copytree(REPO, original)
+    subprocess.run(["git", "init", "-q", str(original)], check=True)
     src = Path("lab_skills/src")  # the package root: relative imports resolve
-    run = subprocess.run([sys.executable, "-m", "ezmigrate", "verify", str(REPO / src),
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", "verify", str(original / src),
                           str(root / src), "--exclude", NEWER],
                          capture_output=True, text=True, check=False, timeout=900)
     assert run.returncode == 0, run.stderr

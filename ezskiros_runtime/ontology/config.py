@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -78,11 +78,12 @@ def resolve_ontology_paths(
     environ: Mapping[str, str] | None = None,
     start: Path | None = None,
     roots: Sequence[Path] | None = None,
+    skip: Callable[[Path], bool] | None = None,
 ) -> OntologySource:
     """Decide which ontology files to load, following the precedence in the module doc.
 
     `roots`: the paths a command works on; without them nothing is discovered (a robot's
-    runtime has its own rule, see `robot`)."""
+    runtime has its own rule, see `robot`); `skip` tells the paths the project excludes."""
     cwd = Path.cwd()
     if isinstance(explicit, (str, os.PathLike)):
         explicit = [explicit]
@@ -114,7 +115,7 @@ def resolve_ontology_paths(
 
         root = repository_root(roots)
         if root is not None:
-            discovered = discover(root)
+            discovered = discover(root, skip)
             if discovered.files:
                 return OntologySource((bundled_ontology_path(), *discovered.files),
                                       f"discovered:{root}", discovered.vendored)

@@ -9,13 +9,14 @@ When nothing is configured, the files used are the bundled core plus every ``.ow
 ``.rdf`` file under each folder named ``owl`` inside the repository (its git top level, or
 the given paths outside git). A vendored copy of the core files (``skiros2/owl/skiros.owl``)
 is skipped: the bundled core states the same facts, and loading both would only add
-duplicates. Build output, virtual environments and hidden folders are not searched.
+duplicates. Build output, virtual environments, hidden folders and the project's excludes
+are not searched.
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -51,21 +52,23 @@ def repository_root(paths: Sequence[Path]) -> Path | None:
     return Path(os.path.commonpath([str(f) for f in folders]))
 
 
-def discover(root: Path) -> Discovered:
-    """Every ontology file under the ``owl/`` folders below ``root``, sorted."""
+def discover(root: Path, skip: Callable[[Path], bool] | None = None) -> Discovered:
+    """Every ontology file under the ``owl/`` folders below ``root``, sorted; ``skip`` says
+    which folders and files are excluded (the project's excludes)."""
     files: list[Path] = []
     vendored: list[Path] = []
-    for path in _owl_files(root):
+    for path in _owl_files(root, skip or (lambda _path: False)):
         (vendored if path.name.lower() in CORE_FILE_NAMES else files).append(path)
     return Discovered(root, tuple(sorted(files)), tuple(sorted(vendored)))
 
 
-def _owl_files(root: Path) -> Iterable[Path]:
+def _owl_files(root: Path, skip: Callable[[Path], bool]) -> Iterable[Path]:
     for folder, dirs, names in os.walk(root):
-        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in NOT_SEARCHED)
         here = Path(folder)
+        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in NOT_SEARCHED
+                         and not skip(here / d))
         if OWL_FOLDER not in here.relative_to(root).parts:
             continue
         for name in names:
-            if name.lower().endswith(SUFFIXES):
+            if name.lower().endswith(SUFFIXES) and not skip(here / name):
                 yield here / name

@@ -135,3 +135,16 @@ def test_each_run_says_once_which_files_it_used(tmp_path, command):
         data = json.loads(report.read_text(encoding="utf-8"))
         assert "owl/robot.owl" in data["ontology"]
         assert [s["status"] for s in data["skills"]] == ["converted"]
+
+
+def test_the_project_excludes_are_not_searched(tmp_path):
+    """A nested repository of its own (a fixture, a vendored lab) stays out when excluded."""
+    skills = _repository(tmp_path / "repo")
+    (tmp_path / "repo" / "pyproject.toml").write_text(
+        '[tool.ezmigrate]\nexclude = ["owl/robot.owl", "vendor"]\n', encoding="utf-8")
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", "check", str(skills)],
+                         capture_output=True, text=True, check=False, timeout=600,
+                         env={"PATH": "/usr/bin:/bin", "HOME": str(tmp_path)})
+    line = next(x for x in run.stderr.splitlines() if x.startswith("ezmigrate: ontology"))
+    assert line.endswith("owl/ folders of " + str((tmp_path / "repo").resolve())
+                         + ": owl/lab.ttl"), line
