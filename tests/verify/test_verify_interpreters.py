@@ -16,6 +16,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from verify_support import second_python
 
 NEWER_SKILL = '''\
 from skiros2_common.core.abstract_skill import SkillDescription
@@ -36,20 +37,7 @@ class DetectPaint(SkillDescription):
 '''
 
 
-def _second_python() -> str | None:
-    """A real interpreter of 3.12 or later, other than ours."""
-    names = [shutil.which(f"python3.{minor}") for minor in range(20, 11, -1)]
-    pyenv = sorted(Path.home().glob(".pyenv/versions/3.1[2-9]*/bin/python3.1[2-9]"),
-                   reverse=True)
-    for candidate in [*filter(None, names), *map(str, pyenv)]:
-        run = subprocess.run([candidate, "-c", "import sys; assert sys.version_info >= (3, 12)"],
-                             capture_output=True, check=False, timeout=60)
-        if run.returncode == 0:
-            return candidate
-    return None
-
-
-SECOND = _second_python()
+SECOND = second_python()
 needs_second = pytest.mark.skipif(
     SECOND is None or sys.version_info >= (3, 12),
     reason="no second interpreter of Python 3.12 or later on PATH or in ~/.pyenv/versions "

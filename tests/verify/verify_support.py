@@ -104,3 +104,19 @@ def file_entry(report: dict[str, Any], file: str) -> dict[str, Any]:
 
 def snapshot(folder: Path) -> dict[str, bytes]:
     return {p.name: p.read_bytes() for p in sorted(folder.glob("*.py"))}
+
+
+def second_python() -> str | None:
+    """A real interpreter of Python 3.12 or later other than ours (on PATH, or in pyenv's
+    versions folder, whose PATH shims only work when pyenv is told to use them), or None."""
+    import shutil
+
+    names = [shutil.which(f"python3.{minor}") for minor in range(20, 11, -1)]
+    pyenv = sorted(Path.home().glob(".pyenv/versions/3.1[2-9]*/bin/python3.1[2-9]"),
+                   reverse=True)
+    for candidate in [*filter(None, names), *map(str, pyenv)]:
+        run = subprocess.run([candidate, "-c", "import sys; assert sys.version_info >= (3, 12)"],
+                             capture_output=True, check=False, timeout=60)
+        if run.returncode == 0:
+            return candidate
+    return None

@@ -8,29 +8,32 @@ descriptions and the import lines the migration needed.
 
 from __future__ import annotations
 
-import ast
 import difflib
 import json
+import os
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
+import libcst as cst
 import pytest
+from verify_support import second_python
 
-from ezmigrate.verify.interpreters import newest_that_compiles
-
-REPO = Path(__file__).resolve().parents[1] / "fixtures" / "ros_repo"
+REPO = Path(__file__).resolve().parents[2] / "fixtures" / "ros_repo"
 SKILLS = Path("lab_skills/src/lab_skills/skills")
 DESCRIPTIONS = {"PaintPart", "GoToStation", "PaintAtStation", "DetectPaint"}
 NEWER = "vision.py"
 """Uses Python 3.12 f-strings: verifiable only under a Python that can import it."""
 
 
+SECOND = second_python()
+"""A newer interpreter for vision.py, put on PATH as ``python3.12`` for the run (pyenv's
+shims do not run it), so that ``rewrite`` finds it the way it would on a lab's machine."""
+
+
 def _newer_python() -> str | None:
-    """What ``rewrite`` itself will pick for vision.py (tests/verify/test_verify_interpreters
-    .py covers the choice; here it only decides what the end result must be)."""
-    return newest_that_compiles([(REPO / SKILLS / NEWER).read_bytes()])
+    return SECOND
 
 
 @pytest.fixture(scope="module")
@@ -39,9 +42,15 @@ def migrated(tmp_path_factory):
     shutil.copytree(REPO, root)
     subprocess.run(["git", "init", "-q", str(root)], check=True)
     report = root.parent / "report.json"
+    env = dict(os.environ)
+    if SECOND is not None:
+        bin_dir = root.parent / "bin"
+        bin_dir.mkdir()
+        (bin_dir / "python3.12").symlink_to(SECOND)
+        env["PATH"] = os.pathsep.join([str(bin_dir), env.get("PATH", "")])
     run = subprocess.run([sys.executable, "-m", "ezmigrate", "rewrite", ".", "--report",
                           str(report)], cwd=root, capture_output=True, text=True,
-                         check=False, timeout=900)
+                         check=False, timeout=900, env=env)
     return root, run, json.loads(report.read_text(encoding="utf-8"))
 
 
@@ -72,12 +81,17 @@ def test_every_description_converts_and_verifies(migrated):
 
 
 def _allowed_lines(source: str, classes: set[str]) -> set[int]:
-    """Lines a migration may touch: the description classes' and the module's imports."""
+    """Lines a migration may touch: the description classes' and the module's imports.
+    (libcst, not ``ast``: vision.py has syntax newer than this Python.)"""
+    wrapper = cst.metadata.MetadataWrapper(cst.parse_module(source))
+    positions = wrapper.resolve(cst.metadata.PositionProvider)
     allowed: set[int] = set()
-    for node in ast.parse(source).body:
-        if (isinstance(node, ast.ClassDef) and node.name in classes) or isinstance(
-                node, (ast.Import, ast.ImportFrom)):
-            allowed.update(range(node.lineno, (node.end_lineno or node.lineno) + 1))
+    for node in wrapper.module.body:
+        is_import = isinstance(node, cst.SimpleStatementLine) and all(
+            isinstance(small, (cst.Import, cst.ImportFrom)) for small in node.body)
+        if (isinstance(node, cst.ClassDef) and node.name.value in classes) or is_import:
+            span = positions[node]
+            allowed.update(range(span.start.line, span.end.line + 1))
     return allowed
 
 
