@@ -198,7 +198,10 @@ def _retry_newer_syntax(jobs: Sequence[LoadJob], outcomes: list[LoadOutcome],
     python = newest_that_compiles([s for s in sources if s is not None])
     if python is None:
         return
-    retried = run_jobs([jobs[i] for i in again], replace(config, python=python))
+    try:
+        retried = run_jobs([jobs[i] for i in again], replace(config, python=python))
+    except RuntimeError:  # its worker could not start there (no cached index): as it was
+        return
     for i, outcome in zip(again, retried, strict=True):
         outcomes[i] = outcome
 
