@@ -203,7 +203,8 @@ def _retry_newer_syntax(jobs: Sequence[LoadJob], outcomes: list[LoadOutcome],
     except RuntimeError:  # its worker could not start there (no cached index): as it was
         return
     for i, outcome in zip(again, retried, strict=True):
-        outcomes[i] = outcome
+        if outcome.status != "crashed":  # a worker that died there proves nothing
+            outcomes[i] = outcome
 
 
 def job_for(path: Path, source: bytes | None = None, root: Path | None = None) -> LoadJob:
