@@ -11,6 +11,8 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, field
 from typing import Any, Literal
 
+from ezskiros_runtime.codes import code_for
+
 SkillStatus = Literal["converted", "skipped", "failed", "unchanged"]
 
 
@@ -21,6 +23,11 @@ class Finding:
     kind: str
     line: int
     message: str
+
+    @property
+    def code(self) -> str:
+        """The stable code of ``kind`` (``ezskiros_runtime.codes``), for lint output."""
+        return code_for(self.kind)
 
     def to_json(self) -> dict[str, Any]:
         return asdict(self)
