@@ -1,7 +1,8 @@
 """``[tool.ezmigrate]`` in the nearest ``pyproject.toml``: defaults a project keeps in its repo.
 
-Keys: ``exclude`` (list of globs), ``jobs`` (int), ``timeout`` (seconds), and ``ontology``
-(read by ``ezskiros_runtime.ontology.config``). Command-line options win over these.
+Keys: ``exclude`` (list of globs), ``jobs`` (int), ``timeout`` (seconds), ``select``,
+``ignore`` and ``extend-select`` (finding codes for ``check``), and ``ontology`` (read by
+``ezskiros_runtime.ontology.config``). Command-line options win over these.
 """
 
 from __future__ import annotations
@@ -25,6 +26,9 @@ class ProjectConfig:
     jobs: int | None = None
     timeout: float | None = None
     source: Path | None = None
+    select: tuple[str, ...] | None = None
+    ignore: tuple[str, ...] = ()
+    extend_select: tuple[str, ...] = ()
 
 
 def find_pyproject(start: Path) -> Path | None:
@@ -62,8 +66,22 @@ def load_project_config(start: Path) -> ProjectConfig:
                                 or not isinstance(timeout, (int, float)) or timeout <= 0):
         raise ConfigError(f"{path}: [tool.ezmigrate] timeout must be a positive number of "
                           f"seconds, not {timeout!r}")
+    codes = {key: _codes(section, key, path) for key in ("select", "ignore", "extend-select")}
     return ProjectConfig(exclude=tuple(exclude), jobs=jobs,
-                         timeout=float(timeout) if timeout is not None else None, source=path)
+                         timeout=float(timeout) if timeout is not None else None, source=path,
+                         select=codes["select"], ignore=codes["ignore"] or (),
+                         extend_select=codes["extend-select"] or ())
+
+
+def _codes(section: dict[str, Any], key: str, path: Path) -> tuple[str, ...] | None:
+    """``check``'s finding selectors (``select = ["EZ2", "EZ901"]``), validated later."""
+    value = section.get(key)
+    if value is None:
+        return None
+    if not (isinstance(value, list) and all(isinstance(v, str) for v in value)):
+        raise ConfigError(f"{path}: [tool.ezmigrate] {key} must be a list of finding codes "
+                          f"or prefixes, not {value!r}")
+    return tuple(value)
 
 
 class ConfigError(ValueError):
