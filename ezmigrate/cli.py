@@ -337,14 +337,17 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     from .verify.pool import PoolConfig
 
     project = load_project_config(paths[0])
-    try:
+    try:  # as ruff: a --select on the command line replaces the configuration's selection
         where = str(project.source or "[tool.ezmigrate]")
+        configured = not select
         selection = Selection(
             select=parse_selectors(select, "--select") if select else (
                 parse_selectors(project.select, where) if project.select is not None else None),
-            ignore=parse_selectors((*project.ignore, *ignore), "--ignore"),
-            extend_select=parse_selectors((*project.extend_select, *extend_select),
-                                          "--extend-select"))
+            ignore=parse_selectors((*(project.ignore if configured else ()), *ignore),
+                                   "--ignore"),
+            extend_select=parse_selectors(
+                (*(project.extend_select if configured else ()), *extend_select),
+                "--extend-select"))
     except SelectorError as error:
         raise click.UsageError(str(error)) from None
     index, ontology_files = _load_index(ontology, paths[0])
