@@ -345,32 +345,66 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 @click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path, exists=True))
 @click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
               help="Ontology file or folder (repeatable).")
+@click.option("--select", multiple=True, metavar="CODES",
+              help="Report only these codes or prefixes (EZ2,EZ901; replaces the default).")
+@click.option("--ignore", multiple=True, metavar="CODES", help="Do not report these codes.")
+@click.option("--extend-select", multiple=True, metavar="CODES",
+              help="Report these codes as well as the selected ones.")
+@click.option("--output-format", type=click.Choice(["text", "json", "sarif", "github",
+                                                     "junit"]), default="text",
+              show_default=True, help="How findings are written to stdout.")
+@click.option("--statistics", is_flag=True, help="Print the count of findings per code.")
+@click.option("--exit-zero", is_flag=True, help="Exit 0 even when errors were found.")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
 @click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
 @click.option("--python", "python", metavar="PATH",
               help="Load files with this interpreter when verifying (default: this one, and "
                    "for syntax newer than it the newest python3.X on PATH that compiles it).")
 @click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
-@click.option("--quiet", "-q", is_flag=True, help="Only errors and the summary.")
+@click.option("--quiet", "-q", is_flag=True, help="Only errors; no summary.")
 @click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
-def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], jobs: int | None,
-          timeout: float | None, python: str | None, exclude: tuple[str, ...], quiet: bool,
-          debug: bool) -> None:
-    """For CI: fail on unmigrated legacy descriptions and on EzSkiROS check errors."""
+def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str, ...],
+          ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
+          statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
+          python: str | None, exclude: tuple[str, ...], quiet: bool, debug: bool) -> None:
+    """Lint SkiROS2 and EzSkiROS descriptions under PATHS (codes: docs/rules.md).
+
+    Suppress a finding on its line with `# ezskiros: ignore[EZ209]` (or `ignore[EZ209,EZ201]`).
+    Exit 0 when no finding at error severity remains, 1 when one does, 2 on usage errors.
+    """
     from .check import run_check
+    from .lint.select import Selection, SelectorError, apply, parse_selectors
+    from .output_formats import FORMATS
+    from .output_formats import statistics as count
     from .runner import default_jobs
     from .verify.pool import PoolConfig
 
     project = load_project_config(paths[0])
+    try:  # as ruff: a --select on the command line replaces the configuration's selection
+        where = str(project.source or "[tool.ezmigrate]")
+        configured = not select
+        selection = Selection(
+            select=parse_selectors(select, "--select") if select else (
+                parse_selectors(project.select, where) if project.select is not None else None),
+            ignore=parse_selectors((*(project.ignore if configured else ()), *ignore),
+                                   "--ignore"),
+            extend_select=parse_selectors(
+                (*(project.extend_select if configured else ()), *extend_select),
+                "--extend-select"))
+    except SelectorError as error:
+        raise click.UsageError(str(error)) from None
     index, ontology_files, _ = _load_index(ontology, paths[0], paths, exclude)
     pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
                       timeout=timeout or project.timeout or 20.0, ontology=ontology_files,
                       python=_interpreter(python, project.python))
-    outcome = run_check(list(paths), index, pool, tuple(exclude) + project.exclude)
-    for message in outcome.messages:
-        if not quiet or message.severity == "error":
-            click.echo(str(message), err=True)
-    warnings = sum(1 for m in outcome.messages if m.severity == "warning")
-    click.echo(f"ezmigrate: {outcome.files} files checked, {outcome.skills} EzSkiROS skills "
-               f"loaded, {outcome.errors} errors, {warnings} warnings", err=True)
-    sys.exit(outcome.exit_code)
+    progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
+        if sys.stderr.isatty() and not quiet else None
+    outcome = run_check(list(paths), index, pool, tuple(exclude) + project.exclude, progress)
+    found = apply(outcome.diagnostics, outcome.sources, selection)
+    shown = [d for d in found if d.severity == "error"] if quiet else found
+    click.echo(count(shown) if statistics else FORMATS[output_format](shown), nl=False)
+    errors = sum(1 for d in found if d.severity == "error")
+    if not quiet:
+        click.echo(f"ezmigrate: {outcome.files} files checked, {outcome.skills} skills, "
+                   f"{errors} errors, {len(found) - errors} other findings", err=True)
+    sys.exit(EXIT_OK if exit_zero or not errors else EXIT_ATTENTION)

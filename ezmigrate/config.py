@@ -2,8 +2,8 @@
 
 Keys: ``exclude`` (list of globs), ``jobs`` (int), ``timeout`` (seconds), ``python`` (the
 interpreter that loads files when verifying, relative to the project when it is a path),
-and ``ontology`` (read by ``ezskiros_runtime.ontology.config``). Command-line options win
-over these.
+``select``, ``ignore`` and ``extend-select`` (finding codes for ``check``), and ``ontology``
+(read by ``ezskiros_runtime.ontology.config``). Command-line options win over these.
 """
 
 from __future__ import annotations
@@ -28,6 +28,9 @@ class ProjectConfig:
     timeout: float | None = None
     python: str | None = None
     source: Path | None = None
+    select: tuple[str, ...] | None = None
+    ignore: tuple[str, ...] = ()
+    extend_select: tuple[str, ...] = ()
 
 
 def find_pyproject(start: Path) -> Path | None:
@@ -71,9 +74,23 @@ def load_project_config(start: Path) -> ProjectConfig:
                           f"path, not {python!r}")
     if python is not None and ("/" in python or "\\" in python):
         python = str(path.parent / python)  # a path means the same from any subfolder
+    codes = {key: _codes(section, key, path) for key in ("select", "ignore", "extend-select")}
     return ProjectConfig(exclude=tuple(exclude), jobs=jobs,
                          timeout=float(timeout) if timeout is not None else None,
-                         python=python, source=path)
+                         python=python, source=path,
+                         select=codes["select"], ignore=codes["ignore"] or (),
+                         extend_select=codes["extend-select"] or ())
+
+
+def _codes(section: dict[str, Any], key: str, path: Path) -> tuple[str, ...] | None:
+    """``check``'s finding selectors (``select = ["EZ2", "EZ901"]``), validated later."""
+    value = section.get(key)
+    if value is None:
+        return None
+    if not (isinstance(value, list) and all(isinstance(v, str) for v in value)):
+        raise ConfigError(f"{path}: [tool.ezmigrate] {key} must be a list of finding codes "
+                          f"or prefixes, not {value!r}")
+    return tuple(value)
 
 
 class ConfigError(ValueError):

@@ -52,6 +52,7 @@ from .core.registry import load_rules
 from .core.replay import replay
 from .core.writer import DSL_NAMES, EmitContext
 from .findings import skill_findings
+from .lint.facts import static_description
 from .results import FileResult, Finding, SkillResult
 
 if TYPE_CHECKING:
@@ -315,6 +316,7 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
         plan.operations = skill.operations
         plan.result.status = "converted"
         plan.result.model = model.to_json()
+        plan.result.static = static_description(skill)
         plan.result.findings = [Finding(k, ln, m) for k, ln, m in skill.findings] + \
             skill_findings(model, settings.index, skill.source_lines())
         plan.runtime, plan.prefixes = emit.runtime_names, emit.prefixes

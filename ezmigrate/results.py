@@ -9,7 +9,12 @@ process boundaries cheaply and serialize to the JSON report directly.
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
+
+from ezskiros_runtime.codes import code_for
+
+if TYPE_CHECKING:
+    from .lint.facts import StaticDescription
 
 SkillStatus = Literal["converted", "skipped", "failed", "unchanged"]
 
@@ -21,6 +26,11 @@ class Finding:
     kind: str
     line: int
     message: str
+
+    @property
+    def code(self) -> str:
+        """The stable code of ``kind`` (``ezskiros_runtime.codes``), for lint output."""
+        return code_for(self.kind)
 
     def to_json(self) -> dict[str, Any]:
         return asdict(self)
@@ -38,6 +48,8 @@ class SkillResult:
     model: dict[str, Any] | None = None
     equivalent: bool | None = None
     diff: list[dict[str, Any]] | None = None
+    static: StaticDescription | None = None
+    """What a converted legacy description declares, for ``check``'s static early checks."""
 
 
 @dataclass

@@ -4,8 +4,9 @@ A ``Finding`` is plain data so that ``ezmigrate`` can put it in a report and a t
 on its fields; the message is only one of them. The exceptions carry the findings that caused
 them, so a caller that catches ``SkillTypeError`` still has the structured facts.
 
-This module imports nothing from the rest of the runtime: the namespaces, the DSL and the
-legacy loader all depend on it, never the other way round.
+This module imports nothing from the rest of the runtime but the catalogue of codes (itself
+a leaf): the namespaces, the DSL and the legacy loader all depend on it, never the other way
+round.
 """
 
 from __future__ import annotations
@@ -14,6 +15,8 @@ import os
 from collections.abc import Iterable, Sequence
 from dataclasses import asdict, dataclass
 from typing import Any, Literal
+
+from .codes import code_for
 
 Severity = Literal["error", "warning", "info"]
 SEVERITIES: tuple[str, ...] = ("error", "warning", "info")
@@ -41,6 +44,11 @@ class Finding:
     suggestions: tuple[str, ...] = ()
 
     @property
+    def code(self) -> str:
+        """The stable code of ``kind`` in the catalogue (``ezskiros_runtime.codes``)."""
+        return code_for(self.kind)
+
+    @property
     def location(self) -> str:
         """``path:line`` (relative to the working directory when below it), or ``""``."""
         if not self.file:
@@ -57,6 +65,7 @@ class Finding:
         """A JSON-ready dict (suggestions as a list)."""
         data = asdict(self)
         data["suggestions"] = list(self.suggestions)
+        data["code"] = self.code
         return data
 
 

@@ -1,0 +1,58 @@
+"""One line of ``check`` output: a finding with its code, severity, position and fix hint."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ezskiros_runtime.codes import rule_for
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    """A finding at a position of a file; every output format is built from these fields.
+
+    ``skill`` names the description class ("" for a file-level finding); positions are
+    1-based like an editor's, and ``end_*`` close the span (the rest of the line).
+    """
+
+    path: str
+    line: int
+    column: int
+    code: str
+    severity: str
+    message: str
+    fix: str
+    skill: str = ""
+    end_line: int = 0
+    end_column: int = 0
+
+    @property
+    def text(self) -> str:
+        """The message with the skill it concerns, as every format shows it."""
+        return f"{self.skill}: {self.message}" if self.skill else self.message
+
+    def __str__(self) -> str:
+        return f"{self.path}:{self.line}:{self.column}: {self.code} {self.text}"
+
+
+class Positions:
+    """Columns of a file's lines: a finding points at the first non-blank character."""
+
+    def __init__(self, source: str) -> None:
+        self.lines = source.splitlines()
+
+    def span(self, line: int) -> tuple[int, int, int]:
+        """(column, end line, end column) of a 1-based line; line 0 is the file itself."""
+        if not 1 <= line <= len(self.lines):
+            return 1, max(line, 1), 1
+        text = self.lines[line - 1]
+        return len(text) - len(text.lstrip()) + 1, line, len(text.rstrip()) + 1
+
+
+def diagnostic(path: str, positions: Positions, kind: str, line: int, message: str,
+               skill: str = "", fix: str | None = None) -> Diagnostic:
+    """The diagnostic of a finding kind, with the catalogue's code, severity and fix."""
+    rule = rule_for(kind)
+    column, end_line, end_column = positions.span(line)
+    return Diagnostic(path, max(line, 1), column, rule.code, rule.severity, message,
+                      fix or rule.fix, skill, end_line, end_column)

@@ -1,0 +1,223 @@
+"""The one catalogue of findings: a stable code (``EZ`` + 3 digits) for every finding kind.
+
+Codes are what users select, ignore and suppress (``# ezskiros: ignore[EZ201]``), so they
+never change meaning once published; kinds are the internal identifiers the checks emit
+(``"range"``, ``"description-in-options"``). Several kinds may share a code when they are
+the same problem found by two passes (the runtime's ``undeclared_parameter`` and the
+codemod's ``undeclared-key``); a kind never has two codes.
+
+Groups, by the hundreds digit: EZ1xx the description itself, EZ2xx vocabulary and ontology,
+EZ3xx compound skills (reserved for the next issue: no entries yet), EZ9xx migration state.
+
+Like ``diagnostics``, this module imports nothing from the rest of the runtime.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+CODE_PATTERN = re.compile(r"EZ\d{3}\Z")
+GROUPS: dict[str, str] = {
+    "EZ1": "description",
+    "EZ2": "vocabulary and ontology",
+    "EZ3": "compound skills",
+    "EZ9": "migration state",
+}
+
+
+@dataclass(frozen=True)
+class Rule:
+    """One finding code: what it means, how bad it is by default, and how to fix it.
+
+    ``enabled`` is False for rules that run only when selected (``--select EZ901``):
+    "not migrated yet" is news only for a repository that finished migrating.
+    """
+
+    code: str
+    name: str
+    severity: str
+    rationale: str
+    fix: str
+    kinds: tuple[str, ...] = ()
+    enabled: bool = True
+
+    @property
+    def group(self) -> str:
+        return GROUPS[self.code[:3]]
+
+
+RULES: tuple[Rule, ...] = (
+    # EZ1xx: the description itself
+    Rule("EZ100", "unused-suppression", "warning",
+         "An `# ezskiros: ignore[...]` comment that suppresses nothing hides future findings.",
+         "Delete the comment, or the codes in it that no longer fire.",
+         ("unused-suppression",)),
+    Rule("EZ101", "description-in-options", "warning",
+         "A string passed 4th to addParam lands in the options slot; SkiROS2 drops it and the "
+         "parameter's description stays empty.",
+         "Pass it as description=\"...\" (5th argument).",
+         ("description-in-options",)),
+    Rule("EZ102", "options-ignored", "warning",
+         "SkiROS2 expands ParamOptions only for Element values; on any other value they do "
+         "nothing.",
+         "Remove the options, or make the parameter an Element.",
+         ("options-ignored",)),
+    Rule("EZ103", "duplicate-key", "warning",
+         "A second addParam with the same key replaces the first one silently.",
+         "Rename one of the parameters or delete the duplicate.",
+         ("duplicate-key",)),
+    Rule("EZ104", "undeclared-parameter", "warning",
+         "A condition refers to a key no addParam declares; SkiROS2 accepts it and the "
+         "condition can never be grounded.",
+         "Declare the parameter, or fix the key's spelling in the condition.",
+         ("undeclared-parameter", "undeclared-key")),
+    Rule("EZ105", "uninferable", "warning",
+         "An Inferred parameter that no pre-condition mentions can never be inferred.",
+         "Add a pre-condition that relates it to a known parameter, or make it Required.",
+         ("uninferable",)),
+    Rule("EZ106", "default-type", "error",
+         "The default value does not fit the parameter's declared type.",
+         "Change the default or the annotation so that they agree.",
+         ("default-type",)),
+    Rule("EZ107", "contradiction", "error",
+         "One condition list wants the same fact true and false (or two different values), "
+         "so it can never hold.",
+         "Delete one of the two conditions.",
+         ("contradiction",)),
+    Rule("EZ108", "description-error", "error",
+         "The EzSkiROS DSL is used in a way that cannot be lowered (`*args`, `~` on is_a, a "
+         "malformed marker).",
+         "Follow the message; docs/dsl.md lists the accepted forms.",
+         ("description",)),
+    # EZ2xx: vocabulary and ontology
+    Rule("EZ201", "domain", "error",
+         "The subject's class is outside the relation's or property's domain.",
+         "Use a relation whose domain contains the parameter's class, or change its type.",
+         ("domain",)),
+    Rule("EZ202", "range", "error",
+         "The object's class is outside the relation's range.",
+         "Use a relation whose range contains the parameter's class, or change its type.",
+         ("range",)),
+    Rule("EZ203", "domain-unproven", "warning",
+         "The subject's class is wider than the domain: the relation may not hold for it.",
+         "Narrow the parameter's type to a class inside the domain.",
+         ("domain-unproven",)),
+    Rule("EZ204", "range-unproven", "warning",
+         "The object's class is wider than the range: the relation may not hold for it.",
+         "Narrow the parameter's type to a class inside the range.",
+         ("range-unproven",)),
+    Rule("EZ205", "property-kind", "error",
+         "A relation over a datatype property, or a property condition over an object "
+         "property.",
+         "Use a relation condition for object properties and a property condition for "
+         "datatype properties.",
+         ("property-kind",)),
+    Rule("EZ206", "value-type", "error",
+         "A property condition compares with a value of the wrong Python type for the "
+         "property's datatype.",
+         "Write the value with the type the property's range asks for.",
+         ("value-type",)),
+    Rule("EZ207", "operator", "error",
+         "An ordering operator (> < >= <=) on a property whose values are not numbers.",
+         "Compare with = or use a numeric property.",
+         ("operator",)),
+    Rule("EZ208", "unknown-operator", "warning",
+         "An operator outside = > < >= <=, which SkiROS2's world model does not evaluate.",
+         "Use one of = > < >= <=.",
+         ("unknown-operator",)),
+    Rule("EZ209", "unknown-vocabulary", "warning",
+         "A class or property the loaded ontology does not define (SkiROS2 accepts it; the "
+         "world model never matches it).",
+         "Fix the name (see the suggestion), or load the ontology that defines it "
+         "(--ontology, [tool.ezmigrate] ontology).",
+         ("unknown-vocabulary",)),
+    Rule("EZ210", "ambiguous-vocabulary", "error",
+         "A local name that several prefixes define cannot be resolved to one IRI.",
+         "Write the name with its prefix (A.relation(\"skiros:name\", B)).",
+         ("ambiguous-vocabulary",)),
+    Rule("EZ211", "element-type-unqualified", "warning",
+         "An Element type not written as prefix:Name; SkiROS2 stores it verbatim and it "
+         "matches no class.",
+         "Write the type with its prefix, e.g. Element(\"skiros:Gripper\").",
+         ("element-type-spelling",)),
+    Rule("EZ212", "prefix-typo", "error",
+         "A prefix that the ontology does not define but that is a typo of one it does "
+         "(\"skiros;:Parameter\", \"skirso:Product\").",
+         "Correct the prefix.",
+         ("prefix-typo",)),
+    Rule("EZ213", "class-spelling", "error",
+         "An Element type that differs from a class of the ontology only in case or "
+         "separators (\"skiros:largebox\" for skiros:LargeBox).",
+         "Spell the class exactly as the ontology does.",
+         ("class-spelling",)),
+    # EZ3xx: compound skills. Reserved for issue 12 (skill trees): no entries yet.
+    # EZ9xx: migration state
+    Rule("EZ901", "not-migrated", "error",
+         "A legacy description that `ezmigrate rewrite` would convert is still in the "
+         "repository (off by default: select it once the migration is finished).",
+         "Run `ezmigrate rewrite PATH`.",
+         ("not-migrated",), enabled=False),
+    Rule("EZ902", "kept-legacy", "info",
+         "A legacy description that cannot be migrated automatically (a loop, a computed "
+         "key...) is kept; its description is not statically checked.",
+         "Migrate it by hand following the reason, or accept it.",
+         ("kept-legacy", "skipped")),
+    Rule("EZ903", "not-equivalent", "error",
+         "Verification found that the migrated description means something else than the "
+         "legacy one.",
+         "Read the difference in the report; rewrite the description or keep the legacy "
+         "form.",
+         ("not-equivalent", "failed")),
+    Rule("EZ904", "unloadable", "error",
+         "The module could not be loaded to run the early checks (an import error, a "
+         "timeout, a crash).",
+         "Fix the error in the message; run `python -c 'import MODULE'` to reproduce.",
+         ("unloadable",)),
+    Rule("EZ905", "unreadable", "error",
+         "The file could not be parsed or decoded, so nothing in it was checked.",
+         "Fix the syntax or encoding error.",
+         ("unreadable", "syntax-error")),
+)
+
+BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}
+_BY_KIND: dict[str, Rule] = {kind: rule for rule in RULES for kind in rule.kinds}
+FALLBACK_KIND = "description"
+"""What an unexpected kind is filed under: every finding has a code, even a new one."""
+
+
+def normalize_kind(kind: str) -> str:
+    """``"range_unproven"`` and ``"range-unproven"`` are one kind (runtime vs reports)."""
+    return kind.replace("_", "-")
+
+
+def rule_for(kind: str) -> Rule:
+    """The rule of a finding kind (a kind the catalogue does not know is a DSL misuse)."""
+    return _BY_KIND.get(normalize_kind(kind)) or _BY_KIND[FALLBACK_KIND]
+
+
+def code_for(kind: str) -> str:
+    """The code of a finding kind (``"range"`` -> ``"EZ202"``)."""
+    return rule_for(kind).code
+
+
+def known_kind(kind: str) -> bool:
+    """Whether the catalogue lists the kind explicitly (tests demand it for every kind)."""
+    return normalize_kind(kind) in _BY_KIND
+
+
+def matches(code: str, selector: str) -> bool:
+    """``EZ2`` selects EZ201..EZ299, ``EZ201`` only itself, ``ALL`` everything (as ruff)."""
+    return selector == "ALL" or code.startswith(selector)
+
+
+def valid_selector(selector: str) -> bool:
+    """A code, a prefix of one (``EZ``, ``EZ2``, ``EZ20``), or ``ALL``."""
+    if selector == "ALL" or selector in GROUPS:  # EZ3 is reserved but already valid
+        return True
+    return (re.fullmatch(r"EZ\d{0,3}", selector) is not None
+            and any(matches(r.code, selector) for r in RULES))
+
+
+__all__ = ["BY_CODE", "CODE_PATTERN", "GROUPS", "RULES", "Rule", "code_for", "known_kind",
+           "matches", "normalize_kind", "rule_for", "valid_selector"]
