@@ -1,8 +1,9 @@
 """``ezmigrate check``: the linter a SkiROS2 repository keeps in CI, before and after migrating.
 
-Legacy descriptions are checked statically: the codemod's reader extracts what each
-``createDescription`` declares (no user code runs) and the runtime's early checks run on
-it, plus the checks only legacy code needs (``lint/legacy.py``). EzSkiROS files are loaded
+Legacy descriptions are checked statically: ``read_statically`` extracts what each
+``createDescription`` declares (no user code runs; plain ones with ``ast``, the rest with
+the codemod's reader) and the runtime's early checks run on it, plus the checks only
+legacy code needs (``lint/legacy.py``). EzSkiROS files are loaded
 in an isolated child, exactly as ``verify`` does, and report the runtime's own findings.
 Every finding gets its catalogue code (``ezskiros_runtime.codes``); selection and
 suppression happen afterwards (``lint/select.py``), so this module reports everything.
@@ -10,16 +11,18 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .discover import discover
+from .discover import Candidate, discover
 from .lint.diagnostic import Diagnostic, Positions, diagnostic
 from .lint.legacy import legacy_hits
+from .lint.plain_reader import Declined, read_plain
 from .package import RUNTIME_MARKER, migrate_package
-from .runner import Migrated
+from .prefilter import may_hold_descriptions
+from .results import FileResult
 from .verify.pool import PoolConfig, job_for, run_jobs
 
 if TYPE_CHECKING:
@@ -43,14 +46,13 @@ def _text(data: bytes) -> str:
     return data.decode("utf-8", errors="replace")
 
 
-def _legacy(item: Migrated, positions: Positions, index: OntologyIndex | None
-            ) -> list[Diagnostic]:
-    path = str(item.candidate.path)
+def _legacy(path: str, result: FileResult, positions: Positions,
+            index: OntologyIndex | None) -> list[Diagnostic]:
     found: list[Diagnostic] = []
-    if item.result.error:
-        found.append(diagnostic(path, positions, "unreadable", item.result.error_line or 0,
-                                item.result.error.splitlines()[0]))
-    for skill in item.result.skills:
+    if result.error:
+        found.append(diagnostic(path, positions, "unreadable", result.error_line or 0,
+                                result.error.splitlines()[0]))
+    for skill in result.skills:
         if skill.status == "converted":
             found.append(diagnostic(path, positions, "not-migrated", skill.line,
                                     "legacy description not migrated yet (run `ezmigrate "
@@ -71,6 +73,42 @@ def _legacy(item: Migrated, positions: Positions, index: OntologyIndex | None
     return found
 
 
+def read_statically(candidates: list[Candidate], workers: int,
+                    index: OntologyIndex | None) -> Iterator[tuple[Candidate, bytes, FileResult]]:
+    """What every legacy description declares, without importing user code.
+
+    Plain descriptions are read with ``ast`` (``lint/plain_reader.py``); every other file
+    goes through the codemod's reader exactly as ``rewrite`` reads it, with its whole
+    package when a class may derive from a description of a sibling file. Files without a
+    description are read, never parsed.
+    """
+    plain: list[tuple[Candidate, bytes, FileResult]] = []
+    declined: list[Candidate] = []
+    whole_package: set[Path] = set()
+    for candidate in candidates:
+        try:
+            data = candidate.path.read_bytes()
+        except OSError:
+            declined.append(candidate)  # the codemod reports why it cannot be read
+            continue
+        if not may_hold_descriptions(data):
+            yield candidate, data, FileResult(path=candidate.relative)
+            continue
+        verdict = read_plain(data, candidate.relative) if RUNTIME_MARKER not in data \
+            else Declined()
+        if isinstance(verdict, Declined):
+            declined.append(candidate)
+            if verdict.cross_file:
+                whole_package.add(candidate.root)
+        else:
+            plain.append((candidate, data, verdict))
+    declined += [c for c, _, _ in plain if c.root in whole_package]
+    yield from ((c, d, r) for c, d, r in plain if c.root not in whole_package)
+    if declined:
+        for item in migrate_package(declined, index, workers):
+            yield item.candidate, item.original, item.result
+
+
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               exclude: tuple[str, ...] = (),
               progress: Callable[[str], None] | None = None) -> CheckOutcome:
@@ -79,23 +117,23 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     outcome = CheckOutcome(files=len(candidates))
     if progress is not None:
         progress(f"checking {len(candidates)} files")
-    loadable = []
-    positions: dict[str, Positions] = {}
-    for item in migrate_package(candidates, index, pool.workers):
-        path = str(item.candidate.path)
-        outcome.sources[path] = _text(item.original)
-        positions[path] = Positions(outcome.sources[path])
-        outcome.skills += sum(1 for s in item.result.skills if s.status != "unchanged")
-        outcome.diagnostics += _legacy(item, positions[path], index)
-        if RUNTIME_MARKER in item.original:
-            loadable.append(item)
+    loadable: list[Candidate] = []
+    for candidate, data, result in read_statically(candidates, pool.workers, index):
+        path = str(candidate.path)
+        outcome.sources[path] = _text(data)
+        outcome.skills += sum(1 for s in result.skills if s.status != "unchanged")
+        if result.error or result.skills:
+            outcome.diagnostics += _legacy(path, result, Positions(outcome.sources[path]),
+                                           index)
+        if RUNTIME_MARKER in data:
+            loadable.append(candidate)
     if loadable and progress is not None:
         progress(f"loading {len(loadable)} EzSkiROS files")
-    outcomes = run_jobs([job_for(i.candidate.path, None, i.candidate.root) for i in loadable],
+    outcomes = run_jobs([job_for(c.path, None, c.root) for c in loadable],
                         pool) if loadable else []
-    for item, loaded in zip(loadable, outcomes, strict=True):
-        path = str(item.candidate.path)
-        where = positions[path]
+    for candidate, loaded in zip(loadable, outcomes, strict=True):
+        path = str(candidate.path)
+        where = Positions(outcome.sources[path])
         if not loaded.loaded:
             outcome.diagnostics.append(diagnostic(path, where, "unloadable", loaded.line or 0,
                                                   f"{loaded.status}: {loaded.message}"))
@@ -103,12 +141,12 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         outcome.skills += len(loaded.models)
         for error in loaded.errors:
             outcome.diagnostics.append(_class_error(path, where, error))
-        for data in loaded.findings:
-            suggestions = data.get("suggestions") or []
+        for found in loaded.findings:
+            suggestions = found.get("suggestions") or []
             outcome.diagnostics.append(diagnostic(
-                path, where, str(data.get("kind", "description")),
-                int(data.get("line") or 0), str(data.get("message", "")),
-                str(data.get("skill", "")),
+                path, where, str(found.get("kind", "description")),
+                int(found.get("line") or 0), str(found.get("message", "")),
+                str(found.get("skill", "")),
                 f"Did you mean {suggestions[0]}?" if suggestions else None))
     outcome.diagnostics.sort(key=lambda d: (d.path, d.line, d.column, d.code))
     return outcome

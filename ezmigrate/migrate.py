@@ -306,7 +306,7 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
                                                                                effective))
         read_operations(func, ctx)
         params = emitted_params(skill)
-        model = _checked_model(cls.name, skill.operations, params)
+        model = checked_model(cls.name, skill.operations, params)
         emit = EmitContext(index=settings.index, self_name=ctx.self_name, aliases=aliases,
                            reserved=_reserved(skill, settings.index, ctx.self_name),
                            column=_body_column(func, positions))
@@ -348,7 +348,7 @@ def _parent_operations(cls: DescriptionClass, base: str,
     return effective[base]
 
 
-def _checked_model(name: str, operations: list[Operation], params: list[ParamOp]) -> SkillModel:
+def checked_model(name: str, operations: list[Operation], params: list[ParamOp]) -> SkillModel:
     """The static legacy model; refused when the EzSkiROS form would lower to another one.
 
     The EzSkiROS form declares ``params`` first, then the conditions in order.

@@ -100,7 +100,10 @@ class LegacyNames:
 
     def symbol(self, node: cst.BaseExpression) -> str | None:
         """The legacy API symbol (``"ParamTypes"``, ``"Element"``) an expression names."""
-        name = dotted_name(node)
+        return self.symbol_named(dotted_name(node))
+
+    def symbol_named(self, name: str | None) -> str | None:
+        """``symbol`` for a name already spelt out (``"PT"``, ``"params.ParamTypes"``)."""
         if name is None:
             return None
         if name in self.symbols:

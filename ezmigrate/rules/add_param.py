@@ -16,6 +16,7 @@ import libcst as cst
 from ..core.context import ExtractContext, bind_arguments
 from ..core.ir import (
     ElementValue,
+    ExtractedSkill,
     Literal,
     OpaqueValue,
     ParamOp,
@@ -53,7 +54,7 @@ def add_param(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[ParamOp
     op = ParamOp(key, _value(args["value"], ctx), _kind(args["param_type"], ctx), options,
                  description, line, options_text=options_text, description_code=code)
     op.comments = statement_comments(stmt, ctx)  # inside a multi-line call
-    _findings(op, ctx)
+    param_findings(op, ctx.skill)
     return [op]
 
 
@@ -147,14 +148,15 @@ def _options(node: cst.BaseExpression | None, ctx: ExtractContext) -> tuple[list
                       "a list of ParamOptions members", node)
 
 
-def _findings(op: ParamOp, ctx: ExtractContext) -> None:
+def param_findings(op: ParamOp, skill: ExtractedSkill) -> None:
+    """The silent quirks of one ``addParam`` that migration keeps (and ``check`` reports)."""
     if op.options_text is not None:
-        ctx.skill.finding("description-in-options", op.line,
+        skill.finding("description-in-options", op.line,
                           f"addParam({op.key!r}) passes {op.options_text!r} in the options slot:"
                           " SkiROS2 ignores it and the description stays empty (kept as is; "
                           "pass it as description=... to fix)")
     if op.options and not (isinstance(op.value, ElementValue) and not op.value.is_class):
-        ctx.skill.finding("options-ignored", op.line,
+        skill.finding("options-ignored", op.line,
                           f"ParamOptions on {op.key!r} have no effect: SkiROS2 only expands "
                           "them for Element values (dropped, meaning unchanged)")
 
@@ -196,11 +198,12 @@ def _type_and_default(op: ParamOp, ctx: EmitContext) -> tuple[str, str | None]:
         return value.name, None
     if isinstance(value, OpaqueValue):
         assert value.known is not None
-        return _literal_type(value.known, op), value.code
-    return _literal_type(value, op), value.code
+        return literal_type(value.known, op), value.code
+    return literal_type(value, op), value.code
 
 
-def _literal_type(value: Literal, op: ParamOp) -> str:
+def literal_type(value: Literal, op: ParamOp) -> str:
+    """The annotation of a literal default, or ``Unsupported`` when SkiROS2 rejects it."""
     items = value.value
     if isinstance(items, list):
         if not items:

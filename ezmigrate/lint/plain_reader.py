@@ -1,0 +1,359 @@
+"""``check``'s fast path: plainly written legacy descriptions read with ``ast``, not libcst.
+
+``check`` needs what each description declares, not a rewrite, and libcst parses about ten
+times slower than ``ast`` (then walks the tree several times for the rewrite). Most real
+descriptions are plain: a ``SkillDescription`` subclass whose ``createDescription`` is a
+list of ``self.addParam(...)`` and ``self.addPreCondition(self.getRelationCond(...))`` with
+literal arguments. This reader builds the codemod's own IR for exactly that form, so the
+rest of the way (``emitted_params``, the replay through the legacy backend, the static
+facts, the findings of ``add_param``) is the codemod's code, not a copy of it.
+
+Anything else — a local variable, a module constant, an or-condition, inheritance between
+descriptions, a base imported from a sibling module, decorators, extra class members, a
+value emission could refuse — makes ``read_plain`` give up on the whole file (``None``),
+and the file goes through the codemod's reader as ``rewrite`` reads it. The module
+``tests/check/test_plain_reader.py`` proves, on every fixture and on generated
+repositories, that whenever this reader accepts a file, ``check`` reports exactly what the
+codemod's reader makes it report.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from dataclasses import dataclass
+
+from ..core.function import emitted_params
+from ..core.ir import (
+    AddCondition,
+    CondSpec,
+    ElementValue,
+    ExtractedSkill,
+    Literal,
+    ParamOp,
+    ParamValue,
+    TypeValue,
+    Unsupported,
+)
+from ..core.legacy_names import LegacyNames, is_legacy_module
+from ..migrate import checked_model
+from ..results import FileResult, Finding, SkillResult
+from ..rules.add_param import (
+    ARGUMENTS,
+    KINDS,
+    OPTIONS,
+    TYPE_OBJECTS,
+    literal_type,
+    param_findings,
+)
+from ..rules.condition_factories import CLASSES, FACTORIES
+from ..rules.condition_lists import LISTS
+from .facts import static_description
+
+_NESTED_LEGACY_IMPORT = re.compile(rb"^[ \t]+(?:from|import)[ \t][^\n]*skiros2", re.MULTILINE)
+
+
+class _Declined(Exception):
+    """Not the plain form: the codemod's reader takes the file."""
+
+
+class _CrossFile(_Declined):
+    """A class derives from a name imported from a user module: maybe a description of a
+    sibling file, which only the codemod's package pass can tell."""
+
+
+@dataclass(frozen=True)
+class Declined:
+    """The file is not plain; ``cross_file``: the codemod must see its whole package."""
+
+    cross_file: bool = False
+
+
+def read_plain(data: bytes, path: str) -> FileResult | Declined:
+    """Every legacy description of a module, when all of them are plain.
+
+    Declined also for a file the codemod must judge itself: one that ``ast`` cannot parse
+    (the codemod says why). The caller keeps files using ``ezskiros_runtime`` away.
+    """
+    try:
+        tree = ast.parse(data)
+        names = _legacy_names(tree, data)
+        skills = [_skill(node, names) for node in _description_classes(tree, names)]
+    except _CrossFile:
+        return Declined(cross_file=True)
+    except (_Declined, Unsupported, SyntaxError, ValueError, UnicodeError, LookupError,
+            MemoryError, RecursionError):
+        return Declined()
+    return FileResult(path=path, skills=skills, exports=[s.name for s in skills])
+
+
+def _legacy_names(tree: ast.Module, data: bytes) -> LegacyNames:
+    """The codemod's ``LegacyNames``, filled from ``ast`` imports (nested ones included)."""
+    names = LegacyNames()
+    nodes = ast.walk(tree) if _NESTED_LEGACY_IMPORT.search(data) else iter(tree.body)
+    for node in nodes:
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                names.add_import(alias.name, alias.asname)
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            if any(a.name == "*" for a in node.names):
+                names.add_from_import(node.module, None)
+            else:
+                names.add_from_import(node.module,
+                                      [(a.name, a.asname or a.name) for a in node.names])
+    return names
+
+
+def _dotted(node: ast.expr) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        head = _dotted(node.value)
+        return None if head is None else f"{head}.{node.attr}"
+    return None
+
+
+def _user_imports(tree: ast.Module) -> set[str]:
+    """Names bound by ``from X import name`` where X is relative or not SkiROS2 (bases
+    the codemod resolves across files: ``ezmigrate.migrate.foreign_bases``)."""
+    found: set[str] = set()
+    for node in tree.body:
+        if isinstance(node, ast.ImportFrom) and (node.level or not is_legacy_module(
+                node.module or "")):
+            found.update(a.asname or a.name for a in node.names if a.name != "*")
+    return found
+
+
+def _description_classes(tree: ast.Module, names: LegacyNames) -> list[ast.ClassDef]:
+    """Top-level classes deriving directly from the legacy ``SkillDescription``."""
+    imported = _user_imports(tree)
+    found: list[ast.ClassDef] = []
+    local: set[str] = set()
+    for node in tree.body:
+        if not isinstance(node, ast.ClassDef):
+            continue
+        spelled = [_dotted(b) for b in node.bases]
+        direct = [s for s in spelled if names.symbol_named(s) == "SkillDescription"]
+        if any(s in imported for s in spelled):
+            raise _CrossFile
+        if any(s in local for s in spelled):
+            raise _Declined  # a description through another one
+        if not direct:
+            continue
+        if len(node.bases) != 1 or node.keywords or node.decorator_list:
+            raise _Declined
+        found.append(node)
+        local.add(node.name)
+    return found
+
+
+def _skill(node: ast.ClassDef, names: LegacyNames) -> SkillResult:
+    func = _create_description(node)
+    skill = ExtractedSkill(node.name, node.lineno)
+    reader = _Reader(names, func.args.args[0].arg, skill)
+    for index, stmt in enumerate(func.body):
+        if index == 0 and isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Constant) \
+                and isinstance(stmt.value.value, str):
+            continue  # the docstring
+        reader.statement(stmt)
+    params = emitted_params(skill)
+    _emittable(skill)
+    try:
+        model = checked_model(node.name, skill.operations, params)
+    except Exception as error:  # reordering, or a rejection: the codemod words it
+        raise _Declined from error
+    return SkillResult(node.name, node.lineno, "converted", model=model.to_json(),
+                       static=static_description(skill),
+                       findings=[Finding(k, ln, m) for k, ln, m in skill.findings])
+
+
+def _create_description(node: ast.ClassDef) -> ast.FunctionDef:
+    """The class's only member besides a docstring, taking ``self`` alone."""
+    body = node.body
+    if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant) \
+            and isinstance(body[0].value.value, str):
+        body = body[1:]
+    if len(body) != 1 or not isinstance(body[0], ast.FunctionDef):
+        raise _Declined
+    func = body[0]
+    args = func.args
+    if (func.name != "createDescription" or func.decorator_list or len(args.args) != 1
+            or args.posonlyargs or args.vararg or args.kwonlyargs or args.kwarg
+            or not func.body):
+        raise _Declined
+    return func
+
+
+def _emittable(skill: ExtractedSkill) -> None:
+    """Decline what the EzSkiROS writer would refuse (``add_param.annotation``,
+    ``condition_factories.with_label``/``negated``): that skill is kept, not converted."""
+    for op in skill.operations:
+        if isinstance(op, ParamOp) and isinstance(op.value, Literal):
+            literal_type(op.value, op)  # raises Unsupported
+        elif isinstance(op, AddCondition):
+            spec = op.condition
+            if spec.label is None or type(spec.label.value) is not str:
+                raise _Declined
+            if spec.desired is not None and type(spec.desired.value) is not bool:
+                raise _Declined
+
+
+class _Reader:
+    """One ``createDescription`` body, statement by statement, into ``skill.operations``."""
+
+    def __init__(self, names: LegacyNames, self_name: str, skill: ExtractedSkill) -> None:
+        self.names = names
+        self.self_name = self_name
+        self.skill = skill
+
+    def statement(self, stmt: ast.stmt) -> None:
+        if not isinstance(stmt, ast.Expr):
+            raise _Declined
+        method = self._self_method(stmt.value)
+        assert method is None or isinstance(stmt.value, ast.Call)
+        if method == "addParam":
+            self._add_param(stmt.value)  # type: ignore[arg-type]
+        elif method in LISTS:
+            call = stmt.value
+            args = _bind(call, ("condition",), 1)  # type: ignore[arg-type]
+            self.skill.operations.append(AddCondition(
+                LISTS[method], self._condition(args["condition"]), call.lineno))
+        else:
+            raise _Declined
+
+    def _self_method(self, node: ast.expr) -> str | None:
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                and isinstance(node.func.value, ast.Name) and node.func.value.id == self.self_name:
+            return node.func.attr
+        return None
+
+    def _add_param(self, call: ast.Call) -> None:
+        args = _bind(call, ARGUMENTS, 3)
+        options: list[str] = []
+        options_text = None
+        if "options" in args:
+            options, options_text = self._options(args["options"])
+        description = _string(args["description"]) if "description" in args else None
+        op = ParamOp(_string(args["key"]), self._value(args["value"]),
+                     self._kind(args["param_type"]), options, description, call.lineno,
+                     options_text=options_text)  # description_code: only emission reads it
+        self.skill.operations.append(op)
+        param_findings(op, self.skill)
+
+    def _value(self, node: ast.expr) -> ParamValue:
+        if isinstance(node, ast.Call) and self.names.symbol_named(_dotted(node.func)) == "Element":
+            args = _bind(node, ("etype", "label", "eid"), 0)
+            if "label" in args or "eid" in args:
+                raise _Declined
+            return ElementValue(_string(args["etype"]) if "etype" in args else "Unknown")
+        if self.names.symbol_named(_dotted(node)) == "Element":
+            raise _Declined
+        if isinstance(node, ast.Name) and node.id in TYPE_OBJECTS:
+            return TypeValue(node.id)
+        found = _literal(node)
+        if found is None:
+            raise _Declined
+        return found
+
+    def _kind(self, node: ast.expr) -> str:
+        member = self._member(node, "ParamTypes")
+        if member in KINDS:
+            return member
+        found = _literal(node) if member is None else None
+        if found is not None and type(found.value) is int and 0 <= found.value < len(KINDS):
+            return KINDS[found.value]
+        raise _Declined
+
+    def _options(self, node: ast.expr) -> tuple[list[str], str | None]:
+        found = _literal(node)
+        if found is not None and isinstance(found.value, str):
+            return [], found.value
+        if not isinstance(node, (ast.List, ast.Tuple)):
+            raise _Declined
+        members = [self._member(e, "ParamOptions") for e in node.elts]
+        if not all(m in OPTIONS for m in members):
+            raise _Declined
+        return [m for m in members if m is not None], None
+
+    def _member(self, node: ast.expr, symbol: str) -> str | None:
+        if isinstance(node, ast.Attribute) and self.names.symbol_named(
+                _dotted(node.value)) == symbol:
+            return node.attr
+        return None
+
+    def _condition(self, node: ast.expr) -> CondSpec:
+        if not isinstance(node, ast.Call):
+            raise _Declined
+        factory = self._self_method(node)
+        if factory not in FACTORIES:
+            factory = CLASSES.get(self.names.symbol_named(_dotted(node.func)) or "")
+            if factory is None:
+                raise _Declined
+        kind, names = FACTORIES[factory]
+        args = _bind(node, names, len(names))
+        vocab = args.get("relation") or args.get("property") or args.get("type")
+        return CondSpec(
+            kind=kind, label=_required_literal(args["label"]), line=node.lineno,
+            vocabulary=None if vocab is None else _string(vocab),
+            subject=_string(args["subject_key"]),
+            object=_string(args["object_key"]) if "object_key" in args else None,
+            operator=_string(args["operator"]) if "operator" in args else None,
+            value=_required_literal(args["value"]) if "value" in args else None,
+            desired=(_required_literal(args["desired_state"]) if "desired_state" in args
+                     else None))
+
+
+def _bind(call: ast.Call, names: tuple[str, ...], required: int) -> dict[str, ast.expr]:
+    """``core.context.bind_arguments`` for the plain form: anything unusual declines."""
+    bound: dict[str, ast.expr] = {}
+    if len(call.args) > len(names):
+        raise _Declined
+    for name, arg in zip(names, call.args, strict=False):
+        if isinstance(arg, ast.Starred):
+            raise _Declined
+        bound[name] = arg
+    for keyword in call.keywords:
+        if keyword.arg is None or keyword.arg not in names or keyword.arg in bound:
+            raise _Declined
+        bound[keyword.arg] = keyword.value
+    if any(n not in bound for n in names[:required]):
+        raise _Declined
+    return bound
+
+
+def _literal_shape(node: ast.expr) -> bool:
+    """``core.context._is_literal_shape`` on ``ast`` nodes (``...`` is not a literal)."""
+    if isinstance(node, ast.Constant):
+        return node.value is not Ellipsis
+    if isinstance(node, ast.UnaryOp):
+        return isinstance(node.op, (ast.USub, ast.UAdd)) and _literal_shape(node.operand)
+    if isinstance(node, (ast.List, ast.Tuple, ast.Set)):
+        return all(not isinstance(e, ast.Starred) and _literal_shape(e) for e in node.elts)
+    if isinstance(node, ast.Dict):
+        return all(k is not None and _literal_shape(k) and _literal_shape(v)
+                   for k, v in zip(node.keys, node.values, strict=True))
+    return False
+
+
+def _literal(node: ast.expr) -> Literal | None:
+    if not _literal_shape(node):
+        return None
+    try:
+        value = ast.literal_eval(node)
+    except (ValueError, SyntaxError, TypeError, MemoryError, RecursionError):
+        return None
+    return Literal(value, ast.unparse(node))  # ast's spelling: this IR is never written
+
+
+def _required_literal(node: ast.expr) -> Literal:
+    found = _literal(node)
+    if found is None:
+        raise _Declined
+    return found
+
+
+def _string(node: ast.expr) -> str:
+    found = _literal(node)
+    if found is None or not isinstance(found.value, str):
+        raise _Declined
+    return found.value
