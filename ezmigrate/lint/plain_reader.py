@@ -30,6 +30,7 @@ from ..core.ir import (
     ElementValue,
     ExtractedSkill,
     Literal,
+    OpaqueValue,
     ParamOp,
     ParamValue,
     TypeValue,
@@ -78,7 +79,9 @@ def read_plain(data: bytes, path: str) -> FileResult | Declined:
     try:
         tree = ast.parse(data)
         names = _legacy_names(tree, data)
-        skills = [_skill(node, names) for node in _description_classes(tree, names)]
+        constants = _Constants(tree)
+        skills = [_skill(node, names, constants)
+                  for node in _description_classes(tree, names)]
     except _CrossFile:
         return Declined(cross_file=True)
     except (_Declined, Unsupported, SyntaxError, ValueError, UnicodeError, LookupError,
@@ -147,10 +150,67 @@ def _description_classes(tree: ast.Module, names: LegacyNames) -> list[ast.Class
     return found
 
 
-def _skill(node: ast.ClassDef, names: LegacyNames) -> SkillResult:
+class _Constants:
+    """``core.context.module_constants`` on ``ast``: module-level names bound exactly once
+    (counting bindings anywhere in the module), by their own ``NAME = literal`` line.
+
+    Built on first use: most plain descriptions use no constant, and the walk over the
+    whole module is then never paid for.
+    """
+
+    def __init__(self, tree: ast.Module) -> None:
+        self.tree = tree
+        self._found: dict[str, Literal] | None = None
+
+    def get(self, name: str) -> Literal | None:
+        if self._found is None:
+            self._found = self._collect()
+        return self._found.get(name)
+
+    def _collect(self) -> dict[str, Literal]:
+        bound: dict[str, int] = {}
+        for node in ast.walk(self.tree):
+            if isinstance(node, ast.Assign):
+                for name in (n for t in node.targets for n in _target_names(t)):
+                    bound[name] = bound.get(name, 0) + 1
+            elif isinstance(node, ast.AugAssign):
+                for name in _target_names(node.target):
+                    bound[name] = bound.get(name, 0) + 2
+            elif isinstance(node, ast.Global):
+                for name in node.names:
+                    bound[name] = bound.get(name, 0) + 2
+        lines = [(n.lineno, n.end_lineno or n.lineno) for n in self.tree.body]
+        found: dict[str, Literal] = {}
+        for stmt in self.tree.body:
+            if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 \
+                    and isinstance(stmt.targets[0], ast.Name) \
+                    and bound.get(stmt.targets[0].id) == 1 and not _shares_a_line(stmt, lines):
+                value = _literal(stmt.value)
+                if value is not None:
+                    found[stmt.targets[0].id] = value
+        return found
+
+
+def _shares_a_line(stmt: ast.stmt, lines: list[tuple[int, int]]) -> bool:
+    """``A = 1; B = 2``: libcst sees one line of two statements, which is no constant."""
+    start, end = stmt.lineno, stmt.end_lineno or stmt.lineno
+    return sum(1 for s, e in lines if s <= end and e >= start) > 1
+
+
+def _target_names(node: ast.expr) -> list[str]:
+    if isinstance(node, ast.Name):
+        return [node.id]
+    if isinstance(node, ast.Starred):
+        return _target_names(node.value)
+    if isinstance(node, (ast.Tuple, ast.List)):
+        return [n for e in node.elts for n in _target_names(e)]
+    return []
+
+
+def _skill(node: ast.ClassDef, names: LegacyNames, constants: _Constants) -> SkillResult:
     func = _create_description(node)
     skill = ExtractedSkill(node.name, node.lineno)
-    reader = _Reader(names, func.args.args[0].arg, skill)
+    reader = _Reader(names, func.args.args[0].arg, skill, constants, node.name)
     for index, stmt in enumerate(func.body):
         if index == 0 and isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Constant) \
                 and isinstance(stmt.value.value, str):
@@ -190,6 +250,9 @@ def _emittable(skill: ExtractedSkill) -> None:
     for op in skill.operations:
         if isinstance(op, ParamOp) and isinstance(op.value, Literal):
             literal_type(op.value, op)  # raises Unsupported
+        elif isinstance(op, ParamOp) and isinstance(op.value, OpaqueValue):
+            assert op.value.known is not None  # the reader declines unknown ones
+            literal_type(op.value.known, op)
         elif isinstance(op, AddCondition):
             spec = op.condition
             if spec.label is None or type(spec.label.value) is not str:
@@ -201,10 +264,28 @@ def _emittable(skill: ExtractedSkill) -> None:
 class _Reader:
     """One ``createDescription`` body, statement by statement, into ``skill.operations``."""
 
-    def __init__(self, names: LegacyNames, self_name: str, skill: ExtractedSkill) -> None:
+    def __init__(self, names: LegacyNames, self_name: str, skill: ExtractedSkill,
+                 constants: _Constants, class_name: str) -> None:
         self.names = names
         self.self_name = self_name
         self.skill = skill
+        self.constants = constants
+        self.class_name = class_name
+
+    def resolved(self, node: ast.expr) -> Literal:
+        """A literal, or a module constant (``ExtractContext.resolved``); else decline."""
+        found = _literal(node)
+        if found is None and isinstance(node, ast.Name):
+            found = self.constants.get(node.id)
+        if found is None:
+            raise _Declined
+        return found
+
+    def string(self, node: ast.expr) -> str:
+        found = self.resolved(node).value
+        if not isinstance(found, str):
+            raise _Declined
+        return found
 
     def statement(self, stmt: ast.stmt) -> None:
         if not isinstance(stmt, ast.Expr):
@@ -233,8 +314,8 @@ class _Reader:
         options_text = None
         if "options" in args:
             options, options_text = self._options(args["options"])
-        description = _string(args["description"]) if "description" in args else None
-        op = ParamOp(_string(args["key"]), self._value(args["value"]),
+        description = self.string(args["description"]) if "description" in args else None
+        op = ParamOp(self.string(args["key"]), self._value(args["value"]),
                      self._kind(args["param_type"]), options, description, call.lineno,
                      options_text=options_text)  # description_code: only emission reads it
         self.skill.operations.append(op)
@@ -245,15 +326,20 @@ class _Reader:
             args = _bind(node, ("etype", "label", "eid"), 0)
             if "label" in args or "eid" in args:
                 raise _Declined
-            return ElementValue(_string(args["etype"]) if "etype" in args else "Unknown")
+            return ElementValue(self.string(args["etype"]) if "etype" in args else "Unknown")
         if self.names.symbol_named(_dotted(node)) == "Element":
             raise _Declined
         if isinstance(node, ast.Name) and node.id in TYPE_OBJECTS:
             return TypeValue(node.id)
         found = _literal(node)
-        if found is None:
-            raise _Declined
-        return found
+        if found is not None:
+            return found
+        if isinstance(node, ast.Name) and node.id not in (self.self_name, self.class_name,
+                                                          "createDescription"):
+            known = self.constants.get(node.id)
+            if known is not None:  # as written, typed by the literal it is bound to
+                return OpaqueValue(node.id, known)
+        raise _Declined
 
     def _kind(self, node: ast.expr) -> str:
         member = self._member(node, "ParamTypes")
@@ -293,13 +379,13 @@ class _Reader:
         args = _bind(node, names, len(names))
         vocab = args.get("relation") or args.get("property") or args.get("type")
         return CondSpec(
-            kind=kind, label=_required_literal(args["label"]), line=node.lineno,
-            vocabulary=None if vocab is None else _string(vocab),
-            subject=_string(args["subject_key"]),
-            object=_string(args["object_key"]) if "object_key" in args else None,
-            operator=_string(args["operator"]) if "operator" in args else None,
-            value=_required_literal(args["value"]) if "value" in args else None,
-            desired=(_required_literal(args["desired_state"]) if "desired_state" in args
+            kind=kind, label=self.resolved(args["label"]), line=node.lineno,
+            vocabulary=None if vocab is None else self.string(vocab),
+            subject=self.string(args["subject_key"]),
+            object=self.string(args["object_key"]) if "object_key" in args else None,
+            operator=self.string(args["operator"]) if "operator" in args else None,
+            value=self.resolved(args["value"]) if "value" in args else None,
+            desired=(self.resolved(args["desired_state"]) if "desired_state" in args
                      else None))
 
 
@@ -342,18 +428,4 @@ def _literal(node: ast.expr) -> Literal | None:
         value = ast.literal_eval(node)
     except (ValueError, SyntaxError, TypeError, MemoryError, RecursionError):
         return None
-    return Literal(value, ast.unparse(node))  # ast's spelling: this IR is never written
-
-
-def _required_literal(node: ast.expr) -> Literal:
-    found = _literal(node)
-    if found is None:
-        raise _Declined
-    return found
-
-
-def _string(node: ast.expr) -> str:
-    found = _literal(node)
-    if found is None or not isinstance(found.value, str):
-        raise _Declined
-    return found.value
+    return Literal(value, repr(value))  # not the source's spelling: never written

@@ -288,14 +288,24 @@ class OntologyIndex:
     ) -> list[str]:
         """Closest existing compact names to `name` ("did you mean"), best first.
 
-        `kinds` picks the vocabulary: "class", "object", "data", "annotation".
+        `kinds` picks the vocabulary: "class", "object", "data", "annotation". Answers are
+        remembered per index: a repository repeats its misspellings in many skills, and
+        each answer compares the name with the whole vocabulary.
         """
-        from .suggest import closest_names
-
         wanted = set(kinds)
         unknown = wanted.difference(NAME_KINDS)
         if unknown:
             raise ValueError(f"unknown name kinds {sorted(unknown)}; use {NAME_KINDS}")
+        memo: dict[tuple[str, frozenset[str], int], list[str]] = self.__dict__.setdefault(
+            "_suggested", {})
+        key = (name, frozenset(wanted), limit)
+        if key not in memo:
+            memo[key] = self._suggest(name, wanted, limit)
+        return list(memo[key])
+
+    def _suggest(self, name: str, wanted: set[str], limit: int) -> list[str]:
+        from .suggest import closest_names
+
         candidates: list[str] = []
         if "class" in wanted:
             candidates.extend(self.compact(iri) for iri in self.classes)

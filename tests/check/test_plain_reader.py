@@ -127,9 +127,32 @@ def test_a_plain_description_is_read(tmp_path: Path) -> None:
     assert [f.kind for f in skill.findings] == ["description-in-options"]
 
 
+def test_module_constants_are_read_as_the_codemod_reads_them() -> None:
+    source = HEADER + textwrap.dedent("""
+        KEY = "Object"
+        SPEED = 0.5
+        class A(SkillDescription):
+            def createDescription(self):
+                self.addParam(KEY, Element("skiros:Product"), ParamTypes.Required)
+                self.addParam("Speed", SPEED, ParamTypes.Optional)
+        """)
+    fast = read_plain(source.encode(), "a.py")
+    assert isinstance(fast, FileResult)
+    slow = migrate(source, Settings(index=INDEX), "a.py")
+    assert _reported("a.py", source.encode(), fast) == _reported("a.py", source.encode(), slow)
+    [skill] = fast.skills
+    assert skill.static is not None
+    assert [(p.key, p.value) for p in skill.static.params] == [("Object", None),
+                                                                ("Speed", 0.5)]
+
+
 @pytest.mark.parametrize("body", [
-    'KEY = "Object"\nclass A(SkillDescription):\n    def createDescription(self):\n'
+    'KEY = "Object"\nKEY = "Other"\nclass A(SkillDescription):\n'
+    '    def createDescription(self):\n        self.addParam(KEY, float, ParamTypes.Required)\n',
+    'KEY = "Object"; SPEED = 1\nclass A(SkillDescription):\n    def createDescription(self):\n'
     '        self.addParam(KEY, float, ParamTypes.Required)\n',
+    'import math\nclass A(SkillDescription):\n    def createDescription(self):\n'
+    '        self.addParam("x", math.pi, ParamTypes.Required)\n',
     'class A(SkillDescription):\n    def createDescription(self):\n'
     '        key = "Object"\n        self.addParam(key, float, ParamTypes.Required)\n',
     'class A(SkillDescription):\n    def createDescription(self):\n'
