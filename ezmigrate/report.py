@@ -7,6 +7,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from ezskiros_runtime.codes import code_for
+
 from .results import FileResult, SkillResult
 
 SCHEMA_VERSION = 1
@@ -67,7 +69,7 @@ class MarkdownOptions:
 def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
     data: dict[str, Any] = {
         "file": file.path, "class": skill.name, "line": skill.line, "status": skill.status,
-        "reason": skill.reason,
+        "code": skill.code, "reason": skill.reason,
         "findings": [f.to_json() for f in skill.findings],
         "equivalent": skill.equivalent,
     }
@@ -94,6 +96,7 @@ def json_report(results: Sequence[FileResult], extra: dict[str, Any] | None = No
                     "failed": summary.failed},
         "skills": [_skill_json(f, s) for f in results for s in f.skills],
         "files": [{"file": f.path, "changed": f.changed, "error": f.error,
+                   "code": code_for("unreadable") if f.error else None,
                    "error_line": f.error_line, "notes": f.notes}
                   for f in results if f.error or f.notes or f.changed],
         **(extra or {}),
@@ -113,7 +116,7 @@ def _verdict(skill: SkillResult) -> str:
     if skill.status == "converted":
         return "converted, equivalent" if skill.equivalent else (
             "converted (not verified)" if skill.equivalent is None else "converted")
-    return skill.status
+    return f"{skill.status} ({skill.code})" if skill.code else skill.status
 
 
 def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> str:
@@ -136,7 +139,7 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
             continue
         out += [f"## `{file.path}`", ""]
         if file.error:
-            out += [f"**Could not be processed:** {file.error}", ""]
+            out += [f"**Could not be processed ({code_for('unreadable')}):** {file.error}", ""]
         for note in file.notes:
             head, _, body = note.partition("\n")
             out += [f"- {head}"] + (["", "```text", body, "```", ""] if body else [])
@@ -152,8 +155,8 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
                     out.append(f"    - migrated: `{d['after']}`")
             for f in skill.findings:
                 where = f"line {f.line}" if f.line else "skill"
-                findings.append(f"- `{file.path}` {skill.name} ({where}) **{f.kind}**: "
-                                f"{f.message}")
+                findings.append(f"- `{file.path}` {skill.name} ({where}) **{f.code}** "
+                                f"{f.kind}: {f.message}")
         out.append("")
     if findings:
         out += ["## Findings (kept as they were; not equivalence problems)", "", *findings, ""]

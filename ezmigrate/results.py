@@ -33,7 +33,7 @@ class Finding:
         return code_for(self.kind)
 
     def to_json(self) -> dict[str, Any]:
-        return asdict(self)
+        return {**asdict(self), "code": self.code}
 
 
 @dataclass
@@ -50,6 +50,11 @@ class SkillResult:
     diff: list[dict[str, Any]] | None = None
     static: StaticDescription | None = None
     """What a converted legacy description declares, for ``check``'s static early checks."""
+
+    @property
+    def code(self) -> str | None:
+        """The catalogue code of a verdict that needs a reader's eye (kept, not equivalent)."""
+        return code_for(self.status) if self.status in ("skipped", "failed") else None
 
 
 @dataclass

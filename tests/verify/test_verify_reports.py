@@ -11,7 +11,9 @@ from typing import Any
 import pytest
 from verify_support import LATE_CONSTANT, LEGACY, PAPER_AXIOMS, cli, tree
 
-SKILL_KEYS = {"file", "class", "line", "status", "reason", "findings", "equivalent"}
+from ezskiros_runtime.codes import code_for
+
+SKILL_KEYS = {"file", "class", "line", "status", "code", "reason", "findings", "equivalent"}
 LEGACY_SIDE = "addParam('Speed', 1.0, ParamTypes.Optional)"
 MIGRATED_SIDE = "addParam('Speed', 0.5, ParamTypes.Optional)"
 
@@ -44,8 +46,10 @@ def test_json_report_follows_the_schema(reports):
         expected = SKILL_KEYS | ({"diff"} if skill["equivalent"] is False else set())
         assert set(skill) == expected, skill
         assert isinstance(skill["line"], int) and skill["line"] > 0
+        assert skill["code"] == {"skipped": "EZ902", "failed": "EZ903"}.get(skill["status"])
         for finding in skill["findings"]:
-            assert set(finding) == {"kind", "line", "message"}, finding
+            assert set(finding) == {"kind", "line", "message", "code"}, finding
+            assert finding["code"] == code_for(finding["kind"]), finding
 
 
 def test_json_report_says_what_was_proven(reports):
@@ -77,12 +81,13 @@ def test_markdown_report_for_code_review(reports):
     table = lines.index("| files | skills | converted | skipped | failed | unchanged |")
     assert lines[table + 2] == "| 4 | 20 | 9 | 10 | 1 | 0 |"
     late = _section(text, "## `late_constant.py`")
-    assert "- **Move** (line 8): failed" in late
+    assert "- **Move** (line 8): failed (EZ903)" in late
     assert f"    - legacy: `{LEGACY_SIDE}`" in late
     assert f"    - migrated: `{MIGRATED_SIDE}`" in late
     assert "- **Stop** (line 14): converted, equivalent" in late
     skipped = _section(text, "## `not_convertible.py`")
-    assert "- **FollowWaypoints** (line 20): skipped\n  - reason: a loop at line 23" in skipped
+    assert "- **FollowWaypoints** (line 20): skipped (EZ902)\n  - reason: a loop at line 23" \
+        in skipped
     assert "- **Navigate** (line 11): converted, equivalent" in text
 
 
@@ -90,11 +95,11 @@ def test_markdown_lists_findings_apart_from_equivalence(reports):
     text = reports["verified.md"]
     heading = "## Findings (kept as they were; not equivalence problems)"
     findings = _section(text, heading)
-    assert "`ontology_violations.py` PlaceOnPose (line 31) **range-unproven**: skiros:hasA " \
+    assert "`ontology_violations.py` PlaceOnPose (line 31) **EZ204** range-unproven: skiros:hasA " \
         "expects object of class skiros:TransformationPose" in findings
     assert text.index(heading) > text.index("## `ontology_violations.py`")
     violations = _section(text, "## `ontology_violations.py`")
-    assert "**range" not in violations and "**domain" not in violations
+    assert "**EZ20" not in violations
     assert violations.count("converted, equivalent") == 2
 
 
