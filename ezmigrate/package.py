@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 from .core.classes import RUNTIME_ROOT, ezskiros_classes
 from .core.ir import Operation
+from .core.legacy_names import ast_dotted_name
 from .discover import Candidate
 from .migrate import Settings, exported_operations, migrate
 from .runner import Migrated, migrate_all
@@ -124,22 +125,10 @@ def _imports_of(importer: str, data: bytes) -> list[tuple[str, set[str]]]:
     attributes: dict[str, set[str]] = {}
     for node in ast.walk(tree):
         if isinstance(node, ast.Attribute):
-            spelled = _spelled(node.value)
+            spelled = ast_dotted_name(node.value)
             if spelled in modules:
                 attributes.setdefault(modules[spelled], set()).add(node.attr)
     return used + list(attributes.items())
-
-
-def _spelled(node: object) -> str | None:
-    """``a.b.c`` for an ``ast`` Name/Attribute chain, else ``None``."""
-    import ast
-
-    if isinstance(node, ast.Name):
-        return node.id
-    if isinstance(node, ast.Attribute):
-        head = _spelled(node.value)
-        return None if head is None else f"{head}.{node.attr}"
-    return None
 
 
 def _split(spelling: str) -> tuple[str, str]:

@@ -36,7 +36,7 @@ from ..core.ir import (
     TypeValue,
     Unsupported,
 )
-from ..core.legacy_names import LegacyNames, is_legacy_module
+from ..core.legacy_names import LegacyNames, ast_dotted_name, is_legacy_module
 from ..migrate import checked_model
 from ..results import FileResult, Finding, SkillResult
 from ..rules.add_param import (
@@ -107,15 +107,6 @@ def _legacy_names(tree: ast.Module, data: bytes) -> LegacyNames:
     return names
 
 
-def _dotted(node: ast.expr) -> str | None:
-    if isinstance(node, ast.Name):
-        return node.id
-    if isinstance(node, ast.Attribute):
-        head = _dotted(node.value)
-        return None if head is None else f"{head}.{node.attr}"
-    return None
-
-
 def _user_imports(tree: ast.Module) -> set[str]:
     """Names bound by ``from X import name`` where X is relative or not SkiROS2 (bases
     the codemod resolves across files: ``ezmigrate.migrate.foreign_bases``)."""
@@ -135,7 +126,7 @@ def _description_classes(tree: ast.Module, names: LegacyNames) -> list[ast.Class
     for node in tree.body:
         if not isinstance(node, ast.ClassDef):
             continue
-        spelled = [_dotted(b) for b in node.bases]
+        spelled = [ast_dotted_name(b) for b in node.bases]
         direct = [s for s in spelled if names.symbol_named(s) == "SkillDescription"]
         if any(s in imported for s in spelled):
             raise _CrossFile
@@ -302,6 +293,10 @@ class _Reader:
         else:
             raise _Declined
 
+    def _symbol(self, node: ast.expr) -> str | None:
+        """The legacy API symbol an expression names (``LegacyNames.symbol``)."""
+        return self.names.symbol_named(ast_dotted_name(node))
+
     def _self_method(self, node: ast.expr) -> str | None:
         if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
                 and isinstance(node.func.value, ast.Name) and node.func.value.id == self.self_name:
@@ -322,12 +317,12 @@ class _Reader:
         param_findings(op, self.skill)
 
     def _value(self, node: ast.expr) -> ParamValue:
-        if isinstance(node, ast.Call) and self.names.symbol_named(_dotted(node.func)) == "Element":
+        if isinstance(node, ast.Call) and self._symbol(node.func) == "Element":
             args = _bind(node, ("etype", "label", "eid"), 0)
             if "label" in args or "eid" in args:
                 raise _Declined
             return ElementValue(self.string(args["etype"]) if "etype" in args else "Unknown")
-        if self.names.symbol_named(_dotted(node)) == "Element":
+        if self._symbol(node) == "Element":
             raise _Declined
         if isinstance(node, ast.Name) and node.id in TYPE_OBJECTS:
             return TypeValue(node.id)
@@ -362,8 +357,7 @@ class _Reader:
         return [m for m in members if m is not None], None
 
     def _member(self, node: ast.expr, symbol: str) -> str | None:
-        if isinstance(node, ast.Attribute) and self.names.symbol_named(
-                _dotted(node.value)) == symbol:
+        if isinstance(node, ast.Attribute) and self._symbol(node.value) == symbol:
             return node.attr
         return None
 
@@ -372,7 +366,7 @@ class _Reader:
             raise _Declined
         factory = self._self_method(node)
         if factory not in FACTORIES:
-            factory = CLASSES.get(self.names.symbol_named(_dotted(node.func)) or "")
+            factory = CLASSES.get(self._symbol(node.func) or "")
             if factory is None:
                 raise _Declined
         kind, names = FACTORIES[factory]
