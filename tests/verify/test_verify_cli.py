@@ -154,7 +154,7 @@ def test_ignore_order_and_ignore_labels_relax_exactly_that(before, relaxed, tmp_
     markdown = (tmp_path / "r.md").read_text(encoding="utf-8")
     assert wording in markdown.splitlines()[2]
     shown = {line.split("**")[1] for line in markdown.splitlines()
-             if line.startswith("- **") and line.endswith(": failed")}
+             if line.startswith("- **") and line.endswith(": failed (EZ903)")}
     assert shown == failing, markdown
     if "Navigate" in failing:
         assert "same post-conditions in a different order" in markdown
