@@ -1,0 +1,214 @@
+"""Read compound skills' trees from the syntax tree, when ``expand`` is written literally.
+
+About three ``expand`` bodies in four are literal: ``skill.setProcessor(SerialStar())``
+then ``skill(self.skill("Navigate", "", remap={"Target": "Location"}), ...)``. For those
+the tree is read here with ``ast``, without importing anything; a body that computes its
+tree (a loop, a branch, a helper call, ``specify`` values other than literals and
+``self.params["X"].value``) is handed to the tracer (``ezskiros_runtime.compound.trace``),
+which runs it in a child process. Both give the same ``CompoundModel``; a property test
+holds them to it on generated trees.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass
+from typing import Any
+
+from ezskiros_runtime.compound.model import (
+    CallProblem,
+    CompoundModel,
+    Node,
+    ProcessorNode,
+    SkillNode,
+)
+from ezskiros_runtime.compound.trace import ARGUMENTS
+
+from ..core.legacy_names import ast_dotted_name
+
+
+class _Computed(Exception):
+    """The body computes (part of) its tree: only running it tells."""
+
+
+@dataclass(frozen=True)
+class NeedsTrace:
+    """A compound class whose tree ``ast`` cannot read: trace it (why, for the report)."""
+
+    implementation: str
+    line: int
+    reason: str
+
+
+def compound_classes(tree: ast.Module) -> list[ast.ClassDef]:
+    """Top-level classes that define ``expand``: compound skill implementations."""
+    return [node for node in tree.body if isinstance(node, ast.ClassDef)
+            and any(isinstance(m, ast.FunctionDef) and m.name == "expand" for m in node.body)]
+
+
+def read_compounds(tree: ast.Module, path: str) -> list[CompoundModel | NeedsTrace]:
+    """Every compound class of a module, read statically or marked for tracing."""
+    found: list[CompoundModel | NeedsTrace] = []
+    for cls in compound_classes(tree):
+        expand = [m for m in cls.body if isinstance(m, ast.FunctionDef)
+                  and m.name == "expand"][-1]
+        try:
+            processor, children = _Reader(expand).read()
+        except _Computed as computed:
+            found.append(NeedsTrace(cls.name, cls.lineno, str(computed)))
+            continue
+        description, label = _described(cls)
+        found.append(CompoundModel(cls.name, description, label, processor, children, path,
+                                   cls.lineno, expand.lineno, "static"))
+    return found
+
+
+def _described(cls: ast.ClassDef) -> tuple[str | None, str]:
+    """``self.setDescription(Desc(), label)`` in the class's ``createDescription``."""
+    for member in cls.body:
+        if isinstance(member, ast.FunctionDef) and member.name == "createDescription":
+            for node in ast.walk(member):
+                if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                        and node.func.attr == "setDescription" and node.args:
+                    first = node.args[0]
+                    kind = ast_dotted_name(first.func if isinstance(first, ast.Call)
+                                           else first)
+                    label = node.args[1] if len(node.args) > 1 else None
+                    if isinstance(label, ast.Constant) and isinstance(label.value, str):
+                        return kind and kind.rpartition(".")[2], label.value
+                    return kind and kind.rpartition(".")[2], cls.name
+    return None, cls.name
+
+
+class _Reader:
+    """One literal ``expand`` body."""
+
+    def __init__(self, expand: ast.FunctionDef) -> None:
+        args = expand.args.args
+        if len(args) != 2:
+            raise _Computed("expand does not take (self, skill)")
+        self.self_name, self.root = args[0].arg, args[1].arg
+        self.body = expand.body
+
+    def read(self) -> tuple[str, tuple[Node | CallProblem, ...]]:
+        processor = "Sequential"
+        children: list[Node | CallProblem] = []
+        for index, stmt in enumerate(self.body):
+            if index == 0 and isinstance(stmt, ast.Expr) \
+                    and isinstance(stmt.value, ast.Constant):
+                continue  # docstring
+            if isinstance(stmt, ast.Pass):
+                continue
+            call = stmt.value if isinstance(stmt, ast.Expr) else None
+            if not isinstance(call, ast.Call) or call.keywords:
+                raise _Computed(f"line {stmt.lineno} is not a literal tree statement")
+            func = call.func
+            if isinstance(func, ast.Attribute) and func.attr == "setProcessor" \
+                    and self._is_root(func.value) and len(call.args) == 1:
+                processor = self._processor(call.args[0])
+            elif self._is_root(func):
+                children += [self._node(a) for a in call.args]
+            else:
+                raise _Computed(f"line {stmt.lineno} is not a literal tree statement")
+        return processor, tuple(children)
+
+    def _is_root(self, node: ast.expr) -> bool:
+        return isinstance(node, ast.Name) and node.id == self.root
+
+    def _is_skill_call(self, node: ast.expr) -> bool:
+        return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+            and node.func.attr == "skill" and isinstance(node.func.value, ast.Name) \
+            and node.func.value.id == self.self_name
+
+    def _node(self, node: ast.expr) -> Node | CallProblem:
+        if isinstance(node, ast.Starred):
+            raise _Computed(f"line {node.lineno} adds children with *")
+        if not isinstance(node, ast.Call):
+            raise _Computed(f"line {node.lineno} adds a child computed at run time")
+        if self._is_skill_call(node):
+            return self._skill(node, ())
+        if self._is_skill_call(node.func) and not node.keywords:
+            assert isinstance(node.func, ast.Call)
+            children = tuple(self._node(a) for a in node.args)
+            return self._skill(node.func, children)
+        raise _Computed(f"line {node.lineno} adds a child computed at run time")
+
+    def _skill(self, call: ast.Call, children: tuple[Node | CallProblem, ...]
+               ) -> Node | CallProblem:
+        if any(isinstance(a, ast.Starred) for a in call.args) or len(call.args) > 5 \
+                or any(k.arg is None for k in call.keywords):
+            raise _Computed(f"line {call.lineno} passes computed arguments")
+        bound: dict[str, ast.expr] = dict(zip(ARGUMENTS, call.args, strict=False))
+        for keyword in call.keywords:
+            if keyword.arg not in ARGUMENTS or keyword.arg in bound:
+                raise _Computed(f"line {call.lineno} passes unusual keywords")
+            bound[keyword.arg] = keyword.value
+        first = bound.get("stype")
+        if first is not None and self._is_skill_call(first):
+            return CallProblem("self.skill(self.skill(...), ...) passes a node where "
+                               "SkiROS2 wants a type name or a processor; call the node "
+                               "instead: self.skill(...)(child, ...)", call.lineno)
+        remap = tuple((k, str(v)) for k, v in self._pairs(bound.get("remap"), call))
+        specify = self._pairs(bound.get("specify"), call)
+        if isinstance(first, ast.Constant) and isinstance(first.value, str):
+            label = self._literal(bound["slabel"], call) if "slabel" in bound else ""
+            pre = bound.get("preconditions")
+            if pre is not None and not (isinstance(pre, (ast.List, ast.Tuple)) and not pre.elts):
+                raise _Computed(f"line {call.lineno} passes preconditions")
+            return SkillNode(first.value, label if isinstance(label, str) else repr(label),
+                             remap, specify, (), children, call.lineno)
+        if isinstance(first, ast.Call) and not first.keywords:
+            return ProcessorNode(self._processor(first), children, remap, specify,
+                                 call.lineno)
+        if isinstance(first, ast.Constant):
+            return CallProblem(f"self.skill({first.value!r}) is neither a type name nor a "
+                               "processor", call.lineno)
+        raise _Computed(f"line {call.lineno} names the child with a computed value")
+
+    def _processor(self, node: ast.expr) -> str:
+        if not isinstance(node, ast.Call) or node.keywords:
+            raise _Computed(f"line {node.lineno} sets a processor computed at run time")
+        name = ast_dotted_name(node.func)
+        if name is None or len(node.args) > 1:
+            raise _Computed(f"line {node.lineno} sets a processor computed at run time")
+        base = name.rpartition(".")[2]
+        return f"{base}({self._processor(node.args[0])})" if node.args else base
+
+    def _pairs(self, node: ast.expr | None, call: ast.Call) -> tuple[tuple[str, Any], ...]:
+        if node is None:
+            return ()
+        if not isinstance(node, ast.Dict) or any(k is None for k in node.keys):
+            raise _Computed(f"line {call.lineno} passes a computed remap or specify")
+        pairs = []
+        for key, value in zip(node.keys, node.values, strict=True):
+            assert key is not None
+            name = self._literal(key, call)
+            if not isinstance(name, str):
+                raise _Computed(f"line {call.lineno} has a non-string key")
+            pairs.append((name, self._value(value, call)))
+        if len({k for k, _ in pairs}) != len(pairs):
+            raise _Computed(f"line {call.lineno} repeats a key")  # Python keeps the last
+        return tuple(pairs)
+
+    def _value(self, node: ast.expr, call: ast.Call) -> Any:
+        """A literal, or ``{"param": "X"}`` for ``self.params["X"].value``."""
+        if isinstance(node, ast.Attribute) and node.attr == "value" \
+                and isinstance(node.value, ast.Subscript) \
+                and isinstance(node.value.value, ast.Attribute) \
+                and node.value.value.attr == "params" \
+                and isinstance(node.value.value.value, ast.Name) \
+                and node.value.value.value.id == self.self_name:
+            key = self._literal(node.value.slice, call)
+            if isinstance(key, str):
+                return {"param": key}
+        return self._literal(node, call)
+
+    def _literal(self, node: ast.expr, call: ast.Call) -> Any:
+        try:
+            value = ast.literal_eval(node)
+        except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+            raise _Computed(f"line {call.lineno} passes a value computed at run time") \
+                from None
+        if isinstance(value, (tuple, set, bytes, complex)):
+            raise _Computed(f"line {call.lineno} passes a value JSON cannot hold")
+        return value

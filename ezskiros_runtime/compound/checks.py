@@ -1,0 +1,253 @@
+"""The early checks of a compound skill's tree against the skill index and the ontology.
+
+Every mistake here is silent in SkiROS2: at best a log line when the compound skill runs
+(legacy-compound-skills.md §2). Each check is one finding kind with a code in
+``ezskiros_runtime.codes`` (EZ3xx). A check reports only what it can prove: a remap whose
+child type is unknown, or whose tree below is unknown, is not judged; the blackboard
+idioms of the shared doc (a utility remapped to several keys in turn, a value written by a
+sibling, a key declared only by a grandchild) stay silent or informational.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from .library import DescriptionInfo, SkillIndex
+from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
+from .trace import Unanalysable
+
+if TYPE_CHECKING:
+    from ..ontology.index import OntologyIndex
+
+UPSTREAM_PROCESSORS = frozenset({"NoProcessor", "Serial", "SerialStar", "Sequential",
+                                 "Selector", "SelectorStar", "ParallelFf", "ParallelFs",
+                                 "NoFail"})
+_MAX_DEPTH = 16
+
+
+@dataclass(frozen=True)
+class CompoundFinding:
+    """One finding: its kind (a catalogue key), line, the compound class and the child."""
+
+    kind: str
+    line: int
+    message: str
+    implementation: str
+    child: str = ""
+    suggestion: str | None = None
+
+
+def check_model(model: CompoundModel | Unanalysable, index: SkillIndex,
+                ontology: OntologyIndex | None = None) -> list[CompoundFinding]:
+    """Every finding of one compound skill, in tree order."""
+    if isinstance(model, Unanalysable):
+        return [CompoundFinding("compound-unanalysable", model.line,
+                                f"the tree of {model.implementation} could not be read "
+                                f"statically nor traced ({model.reason}); it is not checked",
+                                model.implementation)]
+    return _Checker(model, index, ontology).run()
+
+
+class _Checker:
+    def __init__(self, model: CompoundModel, index: SkillIndex,
+                 ontology: OntologyIndex | None) -> None:
+        self.model = model
+        self.index = index
+        self.ontology = ontology
+        self.found: list[CompoundFinding] = []
+        self.parent = index.descriptions.get(model.description or "")
+
+    def add(self, kind: str, line: int, message: str, child: str = "",
+            suggestion: str | None = None) -> None:
+        self.found.append(CompoundFinding(kind, line or self.model.expand_line, message,
+                                          self.model.implementation, child, suggestion))
+
+    def run(self) -> list[CompoundFinding]:
+        self._processor(self.model.processor, self.model.expand_line)
+        nodes = self.model.walk()
+        for node, _ in nodes:
+            if isinstance(node, CallProblem):
+                self.add("compound-call-shape", node.line, node.message)
+            elif isinstance(node, ProcessorNode):
+                self._processor(node.processor, node.line)
+            else:
+                self._skill(node, [n for n, _ in nodes if n is not node])
+        return self.found
+
+    def _processor(self, name: str, line: int) -> None:
+        for part in name.replace(")", "").split("("):
+            if part and part not in UPSTREAM_PROCESSORS:
+                self.add("processor-not-upstream", line,
+                         f"processor {part} is not in upstream SkiROS2 (a fork's or a branch's "
+                         "own); the tree runs only where that fork is installed")
+
+    # -- one child ----------------------------------------------------------------------
+
+    def _skill(self, node: SkillNode, others: list[Node | CallProblem]) -> None:
+        matches, literal = self.index.resolve(node.type)
+        if not matches:
+            close = difflib.get_close_matches(node.type.removeprefix("skiros:"),
+                                              list(self.index.names()), 1, 0.6)
+            hint = f"Did you mean {close[0]!r}?" if close else None
+            self.add("unknown-child-type", node.line,
+                     f"child type {node.type!r} matches no description the skill manager "
+                     "could load (the repository, skiros2_std_lib, [tool.ezmigrate] "
+                     "skill-libraries): the compound skill fails when it runs",
+                     node.type, hint)
+            return
+        if not literal:
+            names = ", ".join(d.name for d in matches)
+            self.add("regex-child-type", node.line,
+                     f"child type {node.type!r} matches {names} only as a regular "
+                     "expression (SkiROS2 matches types with re.match)", node.type,
+                     f"Write the type name exactly: {matches[0].name!r}.")
+        if len(matches) != 1:
+            return
+        child = matches[0]
+        self._label(node, child)
+        renamed = self._remaps(node, child)
+        self._specify(node, child, renamed)
+        self._dangling(node, others)
+
+    def _label(self, node: SkillNode, child: DescriptionInfo) -> None:
+        implements = self.index.implementations.get(node.label) if node.label else None
+        if implements is not None and implements != child.name:
+            self.add("label-other-type", node.line,
+                     f"label {node.label!r} names an implementation of {implements}, not of "
+                     f"{child.name}: SkiROS2 runs it anyway (upstream issue #80)", node.type)
+
+    def _remaps(self, node: SkillNode, child: DescriptionInfo) -> dict[str, str]:
+        """Check each remap; return the renames SkiROS2 applies (child key -> new key)."""
+        declared = child.declared()
+        renamed: dict[str, str] = {}
+        for key, target in node.remap:
+            if key in declared:
+                if target in declared and target != key:
+                    self.add("remap-onto-declared", node.line,
+                             f"remap {key!r} -> {target!r}: {child.name} already declares "
+                             f"{target!r}, so SkiROS2 rejects the remap and renames nothing",
+                             node.type)
+                    continue
+                renamed[key] = target
+                self._element_types(node, child, key, target)
+                continue
+            below, complete = self._descendant_keys(node, child)
+            if key in below:
+                self.add("remap-key-descendant", node.line,
+                         f"remap key {key!r} is declared not by {child.name} but below it; "
+                         "SkiROS2 passes the remap down to it", node.type)
+            elif complete:
+                close = difflib.get_close_matches(key, sorted(declared | below), 1, 0.6)
+                self.add("remap-key-unknown", node.line,
+                         f"remap key {key!r}: neither {child.name} nor anything below it "
+                         "declares it, so the remap does nothing", node.type,
+                         f"Did you mean {close[0]!r}?" if close else None)
+        return renamed
+
+    def _specify(self, node: SkillNode, child: DescriptionInfo,
+                 renamed: dict[str, str]) -> None:
+        keys = {renamed.get(k, k) for k in child.declared()}
+        for key, _ in node.specify:
+            if key not in keys:
+                close = difflib.get_close_matches(key, sorted(keys), 1, 0.5)
+                was = [k for k, v in renamed.items() if v == key or k == key]
+                why = (f" (remapped, it is called {renamed[was[0]]!r})" if was
+                       and was[0] in renamed and renamed[was[0]] != key else "")
+                self.add("specify-key-unknown", node.line,
+                         f"specify key {key!r}: {child.name} has no such parameter after "
+                         f"remapping{why}, so SkiROS2 drops the value", node.type,
+                         f"Did you mean {close[0]!r}?" if close else None)
+
+    def _dangling(self, node: SkillNode, others: list[Node | CallProblem]) -> None:
+        if not node.remap or self.parent is None:
+            return
+        written, complete = self._written(others)
+        if not complete:
+            return
+        for key, target in node.remap:
+            if target not in self.parent.declared() and target not in written:
+                close = difflib.get_close_matches(target, sorted(self.parent.declared()), 1, 0.6)
+                self.add("remap-dangling", node.line,
+                         f"remap {key!r} -> {target!r}: no parameter of "
+                         f"{self.parent.name} and no other node of the tree declares "
+                         f"{target!r}, so it connects to nothing", node.type,
+                         f"Did you mean {close[0]!r}?" if close else None)
+
+    def _element_types(self, node: SkillNode, child: DescriptionInfo, key: str,
+                       target: str) -> None:
+        if self.ontology is None or self.parent is None:
+            return
+        mine, theirs = child.element_type(key), self.parent.element_type(target)
+        if mine is None or theirs is None or target not in self.parent.declared():
+            return
+        onto = self.ontology
+        sub, sup = onto.expand(theirs), onto.expand(mine)
+        if sub is None or sup is None or not onto.is_class(sub) or not onto.is_class(sup):
+            return
+        from ..ontology.expressions import Named
+
+        if onto.is_subclass(sub, sup):
+            return
+        if onto.can_satisfy(sub, Named(sup)) is False:
+            self.add("remap-disjoint", node.line,
+                     f"remap {key!r} -> {target!r}: {self.parent.name}'s {target} is "
+                     f"{theirs} and {child.name}'s {key} is {mine}; no element can be both",
+                     node.type)
+        else:
+            self.add("remap-narrower", node.line,
+                     f"remap {key!r} -> {target!r}: {child.name}'s {key} wants {mine}, "
+                     f"narrower than {self.parent.name}'s {target} ({theirs})", node.type)
+
+    # -- what reaches where -------------------------------------------------------------
+
+    def _descendant_keys(self, node: SkillNode, child: DescriptionInfo) -> tuple[set[str], bool]:
+        """Keys declared below ``node``: its own children and its type's compound trees."""
+        keys: set[str] = set()
+        complete = self._below(node.children, keys, 0)
+        if child.name in self.index.unknown_compounds:
+            complete = False
+        for tree in self.index.compounds.get(child.name, ()):
+            complete &= self._below(tree.children, keys, 1)
+        return keys, complete
+
+    def _below(self, nodes: Iterable[Node | CallProblem], keys: set[str], depth: int) -> bool:
+        if depth > _MAX_DEPTH:
+            return False
+        complete = True
+        for node in nodes:
+            if isinstance(node, CallProblem):
+                continue
+            if isinstance(node, ProcessorNode):
+                complete &= self._below(node.children, keys, depth + 1)
+                continue
+            matches, _ = self.index.resolve(node.type)
+            if len(matches) != 1:
+                complete = False
+                continue
+            keys.update(matches[0].declared())
+            d, c = self._descendant_keys(node, matches[0]) if depth < _MAX_DEPTH else (set(),
+                                                                                         False)
+            keys |= d
+            complete &= c
+        return complete
+
+    def _written(self, others: list[Node | CallProblem]) -> tuple[set[str], bool]:
+        """Blackboard keys the other nodes declare or remap onto (and those below them)."""
+        keys: set[str] = set()
+        complete = True
+        for node in others:
+            if not isinstance(node, SkillNode):
+                continue
+            keys.update(target for _, target in node.remap)
+            matches, _ = self.index.resolve(node.type)
+            if len(matches) != 1:
+                complete = False
+                continue
+            keys.update(matches[0].declared())
+            below, whole = self._descendant_keys(node, matches[0])
+            keys |= below
+            complete &= whole
+        return keys, complete

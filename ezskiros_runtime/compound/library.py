@@ -1,0 +1,109 @@
+"""The skill index: which description types exist, what they declare, who implements them.
+
+A compound skill names its children by description type and optional implementation label
+(legacy-compound-skills.md §3). Checking a tree needs every type the skill manager could
+load: the repository's own descriptions, the standard library's (bundled here as facts,
+the list in the shared doc), and further libraries a project names
+(``[tool.ezmigrate] skill-libraries``). Types resolve as SkiROS2 resolves them:
+``re.match("^" + type + "$", name)`` over description class names.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+
+from .model import CompoundModel
+
+ROBOT = "Robot"
+ROBOT_TYPE = "sumo:Agent"
+"""SkiROS2 gives every description an inferred ``Robot`` parameter (legacy-skiros2-api §8.1)."""
+
+
+@dataclass(frozen=True)
+class DescriptionInfo:
+    """One description type: its parameters (key -> element type, ``None`` for values)."""
+
+    name: str
+    params: Mapping[str, str | None]
+    origin: str = "repository"
+    path: str = ""
+    line: int = 0
+
+    def declared(self) -> set[str]:
+        """Declared keys, the automatic ``Robot`` included."""
+        return {*self.params, ROBOT}
+
+    def element_type(self, key: str) -> str | None:
+        if key == ROBOT and key not in self.params:
+            return ROBOT_TYPE
+        return self.params.get(key)
+
+
+def _std(name: str, params: dict[str, str | None]) -> DescriptionInfo:
+    return DescriptionInfo(name, params, "skiros2_std_lib")
+
+
+STANDARD_LIBRARY: tuple[DescriptionInfo, ...] = (
+    _std("Wait", {"Duration": None}),
+    _std("WmSetRelation", {"Src": "sumo:Object", "Relation": None, "Dst": "sumo:Object",
+                           "RelationState": None}),
+    _std("WmSetProperties", {"Src": "sumo:Object", "Properties": None}),
+    _std("WmMoveObject", {"StartLocation": "sumo:Object", "TargetLocation": "sumo:Object",
+                          "Object": "sumo:Object", "Relation": None}),
+    _std("Counter", {"CountTarget": None}),
+    _std("TaskPlan", {"Goal": None}),
+)
+"""``skiros2_std_lib``'s descriptions (master), from legacy-compound-skills.md §3."""
+
+
+@dataclass
+class SkillIndex:
+    """Descriptions by type name, implementation labels, and the compound trees known.
+
+    ``implementations`` maps a label to the description type its implementation sets;
+    ``compounds`` the type to the trees of its compound implementations (a remap on a
+    compound child reaches their nodes). ``unknown_compounds`` names types with a compound
+    implementation whose tree could not be read: what reaches below them is unknown.
+    """
+
+    descriptions: dict[str, DescriptionInfo] = field(default_factory=dict)
+    implementations: dict[str, str] = field(default_factory=dict)
+    compounds: dict[str, list[CompoundModel]] = field(default_factory=dict)
+    unknown_compounds: set[str] = field(default_factory=set)
+
+    @classmethod
+    def with_standard_library(cls) -> SkillIndex:
+        return cls({d.name: d for d in STANDARD_LIBRARY})
+
+    def add_description(self, info: DescriptionInfo) -> None:
+        """A repository's own description wins over a library's of the same name."""
+        self.descriptions[info.name] = info
+
+    def add_implementation(self, label: str, description: str | None) -> None:
+        if description is not None:
+            self.implementations.setdefault(label, description)
+
+    def add_compound(self, model: CompoundModel) -> None:
+        if model.description is not None:
+            self.compounds.setdefault(model.description, []).append(model)
+        self.add_implementation(model.label, model.description)
+
+    def resolve(self, stype: str) -> tuple[list[DescriptionInfo], bool]:
+        """(matching descriptions, whether the match is literal) for a child's type.
+
+        SkiROS2 adds a ``skiros:`` prefix and matches the rest as a regular expression
+        anchored at both ends; a type that is no valid expression matches nothing.
+        """
+        name = stype.removeprefix("skiros:")
+        if name in self.descriptions:
+            return [self.descriptions[name]], True
+        try:
+            pattern = re.compile("^" + name + "$")
+        except re.error:
+            return [], False
+        return [d for n, d in sorted(self.descriptions.items()) if pattern.match(n)], False
+
+    def names(self) -> Iterable[str]:
+        return self.descriptions.keys()

@@ -1,0 +1,197 @@
+"""Read a compound skill's tree by running its ``expand`` against recording stand-ins.
+
+About one ``expand`` in four computes its tree (``specify={"Duration":
+self.params["Wait"].value}``, a loop over parameters, a type name built with ``format``);
+reading its syntax cannot tell the tree, running it can. ``trace`` calls the class's own
+``expand`` with a ``self`` whose ``skill(...)`` records a node instead of asking a skill
+manager and whose ``params[...]`` are symbols (``{"param": "X"}``), and with a root node
+that records ``setProcessor`` and its children. It works on the legacy backend and on real
+SkiROS2 alike: only ``skill``, ``params`` and the root are replaced.
+
+A body that needs more (the world model, a branch on a parameter's value, a helper that
+fails on symbols) raises; ``trace`` reports that as ``Unanalysable`` with the error, never
+as a clean tree. Run it in a child process when the code is not trusted (``ezmigrate``
+does, in its verification sandbox).
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+from typing import Any
+
+from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
+
+ARGUMENTS = ("stype", "slabel", "remap", "specify", "preconditions")
+
+
+@dataclass(frozen=True)
+class Unanalysable:
+    """Neither reading nor running ``expand`` gave its tree; ``reason`` says why."""
+
+    implementation: str
+    reason: str
+    line: int = 0
+
+
+class ParamRef:
+    """``self.params["X"].value`` while tracing: the value is not known, its source is."""
+
+    def __init__(self, key: str) -> None:
+        self.key = key
+
+    def __repr__(self) -> str:
+        return f"self.params[{self.key!r}].value"
+
+    def __bool__(self) -> bool:
+        raise TypeError(f"expand branches on {self!r}, which is known only when the skill "
+                        "runs")
+
+    def __iter__(self) -> Any:
+        raise TypeError(f"expand iterates over {self!r}, which is known only at run time")
+
+
+class _Param:
+    def __init__(self, key: str) -> None:
+        self.key = key
+        self.value = ParamRef(key)
+
+    def getValue(self) -> ParamRef:
+        return self.value
+
+
+class _Params:
+    """``self.params``: every key gives a symbolic parameter."""
+
+    def __getitem__(self, key: str) -> _Param:
+        return _Param(str(key))
+
+    def get(self, key: str, default: Any = None) -> _Param:
+        return _Param(str(key))
+
+
+class Recorded:
+    """A node while ``expand`` builds it: the call's arguments, then its children."""
+
+    def __init__(self, args: tuple[Any, ...], kwargs: dict[str, Any], line: int) -> None:
+        self.args = args
+        self.kwargs = kwargs
+        self.line = line
+        self.children: list[Any] = []
+        self.processor: Any = None
+
+    def __call__(self, *children: Any) -> Recorded:
+        self.children.extend(children)
+        return self
+
+    def setProcessor(self, processor: Any) -> None:
+        self.processor = processor
+
+
+def _record(_self: Any, *args: Any, **kwargs: Any) -> Recorded:
+    return Recorded(args, kwargs, sys._getframe(1).f_lineno)
+
+
+def processor_name(processor: Any) -> str:
+    """``SerialStar`` for ``SerialStar()``; ``NoFail(Sequential)`` for a wrapping one."""
+    name = type(processor).__name__
+    inner = [a for a in getattr(processor, "args", ()) if not isinstance(a, (str, int, float))]
+    return f"{name}({processor_name(inner[0])})" if inner else name
+
+
+def _is_processor(value: Any) -> bool:
+    return not isinstance(value, (str, bytes, int, float, bool, dict, list, tuple, Recorded,
+                                  type(None), ParamRef))
+
+
+def _plain(value: Any) -> Any:
+    """A ``specify`` value as JSON-ready data (symbols as ``{"param": key}``)."""
+    if isinstance(value, ParamRef):
+        return {"param": value.key}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if value is None or isinstance(value, (str, int, float, bool)):
+        return value
+    return repr(value)
+
+
+def _pairs(value: Any, what: str) -> tuple[tuple[str, Any], ...]:
+    if value is None:
+        return ()
+    if not isinstance(value, dict):
+        raise TypeError(f"{what} is {type(value).__name__}, not a dict")
+    return tuple((str(k), _plain(v)) for k, v in value.items())
+
+
+def node_of(recorded: Any) -> Node | CallProblem:
+    """The model node of one recorded call (or the problem SkiROS2 would have with it)."""
+    if not isinstance(recorded, Recorded):
+        return CallProblem(f"{recorded!r} is added as a child, but it is not a node made "
+                           "by self.skill(...)")
+    bound = dict(zip(ARGUMENTS, recorded.args, strict=False))
+    bound.update(recorded.kwargs)
+    first = bound.get("stype")
+    children = tuple(node_of(c) for c in recorded.children)
+    if isinstance(first, Recorded):
+        return CallProblem("self.skill(self.skill(...), ...) passes a node where SkiROS2 "
+                           "wants a type name or a processor; call the node instead: "
+                           "self.skill(...)(child, ...)", recorded.line)
+    remap = tuple((k, str(v)) for k, v in _pairs(bound.get("remap"), "remap"))
+    specify = _pairs(bound.get("specify"), "specify")
+    if isinstance(first, str):
+        label = bound.get("slabel", "")
+        preconditions = tuple(str(getattr(c, "label", c))
+                              for c in bound.get("preconditions") or ())
+        return SkillNode(first, label if isinstance(label, str) else repr(label), remap,
+                         specify, preconditions, children, recorded.line)
+    if first is not None and _is_processor(first):
+        return ProcessorNode(processor_name(first), children, remap, specify, recorded.line)
+    return CallProblem(f"self.skill({first!r}) is neither a type name nor a processor",
+                       recorded.line)
+
+
+def described(stand_in: Any, cls: type) -> tuple[str | None, str]:
+    """(description class, label) that ``createDescription`` passes to ``setDescription``."""
+    seen: list[tuple[str | None, str]] = []
+
+    def set_description(_self: Any, description: Any, label: Any = "") -> None:
+        kind = description if isinstance(description, type) else type(description)
+        seen.append((kind.__name__, label if isinstance(label, str) else cls.__name__))
+
+    stand_in.setDescription = set_description.__get__(stand_in)
+    try:
+        cls.createDescription(stand_in)  # type: ignore[attr-defined]
+    except Exception:  # the tree can still be read; the description stays unknown
+        return None, cls.__name__
+    return seen[-1] if seen else (None, cls.__name__)
+
+
+def trace(cls: type, path: str = "", line: int = 0) -> CompoundModel | Unanalysable:
+    """The tree ``cls.expand`` builds, by running it with recording stand-ins."""
+    name = cls.__name__
+    expand = getattr(cls, "expand", None)
+    if expand is None:
+        return Unanalysable(name, "the class has no expand method", line)
+    stand_in = type(name, (cls,), {"skill": _record, "params": _Params(),
+                                   "__init__": lambda self: None})
+    description, label = described(stand_in(), cls)
+    root = Recorded((), {}, 0)
+    try:
+        expand(stand_in(), root)
+        children = tuple(node_of(c) for c in root.children)
+    except Exception as error:
+        frame = error.__traceback__
+        where = 0
+        while frame is not None:
+            if frame.tb_frame.f_code is getattr(expand, "__code__", None):
+                where = frame.tb_lineno
+            frame = frame.tb_next
+        return Unanalysable(name, f"running expand raised {type(error).__name__}: {error}",
+                            where or line)
+    code = getattr(expand, "__code__", None)
+    return CompoundModel(
+        name, description, label,
+        processor_name(root.processor) if root.processor is not None else "Sequential",
+        children, path, line, code.co_firstlineno if code is not None else 0, "traced")
