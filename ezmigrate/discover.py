@@ -49,9 +49,12 @@ def excluded_under(base: Path, patterns: Sequence[str]) -> Callable[[Path], bool
 
 
 def _excluded(relative: str, patterns: Sequence[str]) -> bool:
+    """A pattern matches the path, any one folder or file name in it, or any leading
+    folders of it (``src/legacy`` excludes ``src/legacy/a.py``, as in ruff)."""
     parts = relative.split("/")
+    prefixes = ["/".join(parts[:i]) for i in range(1, len(parts) + 1)]
     for pattern in patterns:
-        if fnmatch.fnmatch(relative, pattern) or any(fnmatch.fnmatch(p, pattern) for p in parts):
+        if any(fnmatch.fnmatch(p, pattern) for p in (*prefixes, *parts)):
             return True
     return False
 

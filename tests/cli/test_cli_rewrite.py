@@ -260,6 +260,22 @@ def test_project_excludes_see_explicit_files_and_folders_from_anywhere(
     assert kept.returncode == 1 and b"would rewrite" in kept.stdout
 
 
+@pytest.mark.parametrize("pattern", ["src/legacy", "src/legacy/*", "src/*/pick.py"])
+def test_excludes_with_several_folders_match_leading_folders(tmp_path: Path, pattern: str):
+    """``exclude = ["src/legacy"]`` holds for ``src/legacy/pick.py``, named or walked."""
+    (tmp_path / "src" / "legacy").mkdir(parents=True)
+    shutil.copy(PICK, tmp_path / "src" / "legacy" / "pick.py")
+    (tmp_path / "pyproject.toml").write_text(f'[tool.ezmigrate]\nexclude = ["{pattern}"]\n',
+                                             encoding="utf-8")
+    for target in (Path("src") / "legacy" / "pick.py", Path(".")):
+        proc = ezmigrate("rewrite", "--check", "--no-verify", target, cwd=tmp_path)
+        assert proc.returncode == 0 and proc.stdout == b"", (target, proc.stderr)
+    (tmp_path / "pyproject.toml").write_text('[tool.ezmigrate]\nexclude = ["src/other"]\n',
+                                             encoding="utf-8")
+    kept = ezmigrate("rewrite", "--check", "--no-verify", ".", cwd=tmp_path)
+    assert kept.returncode == 1 and b"would rewrite" in kept.stdout
+
+
 def test_output_dir_refuses_a_second_file_with_the_same_relative_path(tmp_path: Path):
     """c1/x.py and c2/x.py would both be out/x.py: the second is refused, named with the
     first, and the run says so (exit 1) instead of reporting two files changed."""
