@@ -28,6 +28,8 @@ from .verify.pool import PoolConfig, job_for, run_jobs
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
+    from .verify.protocol import LoadOutcome
+
 KEPT_FROM_CODEMOD = frozenset({"description-in-options", "options-ignored"})
 """Codemod findings ``check`` keeps; the others are found again by the runtime's checks."""
 
@@ -111,15 +113,21 @@ def read_statically(candidates: list[Candidate], workers: int,
 
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               exclude: tuple[str, ...] = (),
-              progress: Callable[[str], None] | None = None) -> CheckOutcome:
-    """Static pass over legacy descriptions, then the runtime's checks of EzSkiROS files."""
+              progress: Callable[[str], None] | None = None,
+              skill_libraries: tuple[Path, ...] = ()) -> CheckOutcome:
+    """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
+    the compound skills' trees against every description found."""
     candidates, _ = discover(paths, exclude)
     outcome = CheckOutcome(files=len(candidates))
     if progress is not None:
         progress(f"checking {len(candidates)} files")
     loadable: list[Candidate] = []
+    read: list[tuple[Candidate, bytes]] = []
+    results: list[tuple[Candidate, FileResult]] = []
     for candidate, data, result in read_statically(candidates, pool.workers, index):
         path = str(candidate.path)
+        read.append((candidate, data))
+        results.append((candidate, result))
         outcome.sources[path] = _text(data)
         outcome.skills += sum(1 for s in result.skills if s.status != "unchanged")
         if result.error or result.skills:
@@ -131,6 +139,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         progress(f"loading {len(loadable)} EzSkiROS files")
     outcomes = run_jobs([job_for(c.path, None, c.root) for c in loadable],
                         pool) if loadable else []
+    outcome.diagnostics += _compound(read, results, list(zip(loadable, outcomes, strict=True)),
+                                     index, pool, skill_libraries, outcome.sources)
     for candidate, loaded in zip(loadable, outcomes, strict=True):
         path = str(candidate.path)
         where = Positions(outcome.sources[path])
@@ -150,6 +160,36 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
                 f"Did you mean {suggestions[0]}?" if suggestions else None))
     outcome.diagnostics.sort(key=lambda d: (d.path, d.line, d.column, d.code))
     return outcome
+
+
+def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
+              loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
+              pool: PoolConfig, libraries: tuple[Path, ...],
+              sources: dict[str, str]) -> list[Diagnostic]:
+    """The compound skills' findings (EZ3xx), against this run's and the libraries'
+    descriptions."""
+    if not any(b"expand" in data for _, data in read):
+        return []
+    from ezskiros_runtime.compound.library import SkillIndex
+
+    from .compound.analysis import add_descriptions, analyse, library_candidates
+
+    skills = SkillIndex.with_standard_library()
+    library = library_candidates(list(libraries))
+    if library:  # read like the run's own files; the run's descriptions win over them
+        statics = [(c, r) for c, _, r in read_statically([c for c, _ in library], pool.workers,
+                                                         index)]
+        add_descriptions(skills, statics, [], "skill library")
+    add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],
+                     "repository")
+    run = analyse(read, skills, index, pool, library)
+    found: dict[tuple[str, int, str, str], Diagnostic] = {}
+    for path, finding in run.findings:  # a traced loop adds the same mistake once a turn
+        where = Positions(sources.get(path, ""))
+        item = diagnostic(path, where, finding.kind, finding.line, finding.message,
+                          finding.implementation, finding.suggestion)
+        found.setdefault((path, item.line, item.code, item.message), item)
+    return list(found.values())
 
 
 def _class_error(path: str, where: Positions, error: dict[str, Any]) -> Diagnostic:

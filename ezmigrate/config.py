@@ -2,8 +2,10 @@
 
 Keys: ``exclude`` (list of globs), ``jobs`` (int), ``timeout`` (seconds), ``python`` (the
 interpreter that loads files when verifying, relative to the project when it is a path),
-``select``, ``ignore`` and ``extend-select`` (finding codes for ``check``), and ``ontology``
-(read by ``ezskiros_runtime.ontology.config``). Command-line options win over these.
+``select``, ``ignore`` and ``extend-select`` (finding codes for ``check``),
+``skill-libraries`` (folders of skill libraries a compound skill may use, relative to the
+project), and ``ontology`` (read by ``ezskiros_runtime.ontology.config``). Command-line
+options win over these.
 """
 
 from __future__ import annotations
@@ -31,6 +33,7 @@ class ProjectConfig:
     select: tuple[str, ...] | None = None
     ignore: tuple[str, ...] = ()
     extend_select: tuple[str, ...] = ()
+    skill_libraries: tuple[Path, ...] = ()
 
 
 def find_pyproject(start: Path) -> Path | None:
@@ -75,7 +78,12 @@ def load_project_config(start: Path) -> ProjectConfig:
     if python is not None and ("/" in python or "\\" in python):
         python = str(path.parent / python)  # a path means the same from any subfolder
     codes = {key: _codes(section, key, path) for key in ("select", "ignore", "extend-select")}
+    libraries = section.get("skill-libraries", [])
+    if not (isinstance(libraries, list) and all(isinstance(e, str) for e in libraries)):
+        raise ConfigError(f"{path}: [tool.ezmigrate] skill-libraries must be a list of "
+                          f"folders, not {libraries!r}")
     return ProjectConfig(exclude=tuple(exclude), jobs=jobs,
+                         skill_libraries=tuple(path.parent / e for e in libraries),
                          timeout=float(timeout) if timeout is not None else None,
                          python=python, source=path,
                          select=codes["select"], ignore=codes["ignore"] or (),

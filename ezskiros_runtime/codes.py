@@ -7,7 +7,7 @@ the same problem found by two passes (the runtime's ``undeclared_parameter`` and
 codemod's ``undeclared-key``); a kind never has two codes.
 
 Groups, by the hundreds digit: EZ1xx the description itself, EZ2xx vocabulary and ontology,
-EZ3xx compound skills (reserved for the next issue: no entries yet), EZ9xx migration state.
+EZ3xx compound skills, EZ9xx migration state.
 
 Like ``diagnostics``, this module imports nothing from the rest of the runtime.
 """
@@ -151,7 +151,74 @@ RULES: tuple[Rule, ...] = (
          "separators (\"skiros:largebox\" for skiros:LargeBox).",
          "Spell the class exactly as the ontology does.",
          ("class-spelling",)),
-    # EZ3xx: compound skills. Reserved for issue 12 (skill trees): no entries yet.
+    # EZ3xx: compound skills (the behaviour trees built in expand)
+    Rule("EZ301", "unknown-child-type", "error",
+         "A child type that no loadable description matches; the compound skill fails when "
+         "it runs (\"No plugin with name ... found\").",
+         "Fix the type name (see the suggestion), or add the library that defines it to "
+         "[tool.ezmigrate] skill-libraries.",
+         ("unknown-child-type",)),
+    Rule("EZ302", "regex-child-type", "warning",
+         "A child type that matches a description only as a regular expression (\"Pick()\"); "
+         "SkiROS2 matches types with re.match, so it works by accident.",
+         "Write the description's class name exactly.",
+         ("regex-child-type",)),
+    Rule("EZ303", "label-other-type", "error",
+         "The label names an implementation of another description type; SkiROS2 runs it "
+         "without a check (upstream issue #80).",
+         "Use a label that implements the child's type, or change the type.",
+         ("label-other-type",)),
+    Rule("EZ304", "remap-key-unknown", "error",
+         "A remap key that neither the child nor anything below it declares: the remap does "
+         "nothing (often a key renamed on one side only).",
+         "Use the child's parameter name (see the suggestion), or delete the remap.",
+         ("remap-key-unknown",)),
+    Rule("EZ305", "remap-key-descendant", "info",
+         "A remap key declared only below the child (by a grandchild): SkiROS2 passes the "
+         "remap down, which is easy to miss when reading the tree.",
+         "Nothing to fix if intended.",
+         ("remap-key-descendant",)),
+    Rule("EZ306", "remap-onto-declared", "error",
+         "A remap onto a key the child already declares; SkiROS2 rejects it and renames "
+         "nothing.",
+         "Remap onto another key, or drop one of the child's parameters.",
+         ("remap-onto-declared",)),
+    Rule("EZ307", "specify-key-unknown", "error",
+         "A specify key the child does not declare after remapping; SkiROS2 drops the value "
+         "(Wait given Time instead of Duration).",
+         "Use the child's parameter name after remapping (see the suggestion).",
+         ("specify-key-unknown",)),
+    Rule("EZ308", "remap-dangling", "error",
+         "A remap value that no parameter of the compound skill and no other node of its "
+         "tree declares: the child's parameter connects to nothing.",
+         "Remap onto a parameter of the compound skill (see the suggestion) or one that "
+         "another child writes.",
+         ("remap-dangling",)),
+    Rule("EZ309", "compound-call-shape", "error",
+         "A call SkiROS2 cannot use: self.skill(self.skill(...), ...), or a first argument "
+         "that is neither a type name nor a processor; nothing is attached.",
+         "Call the node with its children: self.skill(...)(child, ...).",
+         ("compound-call-shape",)),
+    Rule("EZ310", "processor-not-upstream", "warning",
+         "A processor that upstream SkiROS2 does not have (RetryOnFail, Loop, InferInvalid: "
+         "a branch's or a fork's own).",
+         "Use an upstream processor, or accept the dependency on the fork.",
+         ("processor-not-upstream",)),
+    Rule("EZ311", "remap-disjoint", "error",
+         "A remap between element parameters whose classes can never hold the same element "
+         "(disjoint in the class hierarchy).",
+         "Remap onto a parameter of a compatible class, or fix one of the two types.",
+         ("remap-disjoint",)),
+    Rule("EZ312", "remap-narrower", "info",
+         "A remap whose child parameter wants a narrower class than the parent's: some "
+         "elements the parent accepts do not fit the child.",
+         "Narrow the parent's parameter if every use fits the child.",
+         ("remap-narrower",)),
+    Rule("EZ313", "compound-unanalysable", "info",
+         "A compound skill whose tree could be neither read statically nor traced (the world "
+         "model, a branch on a value): it is not checked, not clean.",
+         "Nothing to fix; simplify expand if you want it checked.",
+         ("compound-unanalysable",)),
     # EZ9xx: migration state
     Rule("EZ901", "not-migrated", "error",
          "A legacy description that `ezmigrate rewrite` would convert is still in the "

@@ -33,11 +33,17 @@ class _Computed(Exception):
 
 @dataclass(frozen=True)
 class NeedsTrace:
-    """A compound class whose tree ``ast`` cannot read: trace it (why, for the report)."""
+    """A compound class whose tree ``ast`` cannot read: trace it (why, for the report).
+
+    ``description`` and ``label`` are read here all the same: in the child, a description
+    imported from a package outside the run may be a stand-in with another name.
+    """
 
     implementation: str
     line: int
     reason: str
+    description: str | None = None
+    label: str = ""
 
 
 def compound_classes(tree: ast.Module) -> list[ast.ClassDef]:
@@ -52,19 +58,32 @@ def read_compounds(tree: ast.Module, path: str) -> list[CompoundModel | NeedsTra
     for cls in compound_classes(tree):
         expand = [m for m in cls.body if isinstance(m, ast.FunctionDef)
                   and m.name == "expand"][-1]
+        description, label = _described(cls)
         try:
             processor, children = _Reader(expand).read()
         except _Computed as computed:
-            found.append(NeedsTrace(cls.name, cls.lineno, str(computed)))
+            found.append(NeedsTrace(cls.name, cls.lineno, str(computed), description, label))
             continue
-        description, label = _described(cls)
         found.append(CompoundModel(cls.name, description, label, processor, children, path,
                                    cls.lineno, expand.lineno, "static"))
     return found
 
 
+def implementations(tree: ast.Module) -> list[tuple[str, str | None]]:
+    """``(label, description)`` of every implementation class (primitive or compound) of a
+    module: what ``self.skill("Type", "label")`` may name."""
+    found: list[tuple[str, str | None]] = []
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            description, label = _described(node)
+            if description is not None:
+                found.append((label, description))
+    return found
+
+
 def _described(cls: ast.ClassDef) -> tuple[str | None, str]:
-    """``self.setDescription(Desc(), label)`` in the class's ``createDescription``."""
+    """``self.setDescription(Desc(), label)`` in the class's ``createDescription``
+    (``self.__class__.__name__`` or anything computed counts as the class's name)."""
     for member in cls.body:
         if isinstance(member, ast.FunctionDef) and member.name == "createDescription":
             for node in ast.walk(member):

@@ -78,7 +78,8 @@ def load(job: LoadJob) -> LoadOutcome:
     try:
         source = job.source if job.source is not None else path.read_bytes()
         with collecting(), overlaid(job.overlays):
-            result = load_bytes(source, path, root=Path(job.root) if job.root else None)
+            result = load_bytes(source, path, root=Path(job.root) if job.root else None,
+                                trace=job.trace)
     except SystemExit as stop:
         return LoadOutcome("exit", f"the module called sys.exit({stop.code!r}) while loading")
     except MemoryError:
@@ -102,7 +103,8 @@ def load(job: LoadJob) -> LoadOutcome:
         models=[m.to_json() for m in result.models],
         errors=[_plain(e) for e in result.errors],
         findings=[_plain(f) for f in result.findings],
-        seconds=time.perf_counter() - started, stood_in=result.stood_in)
+        seconds=time.perf_counter() - started, stood_in=result.stood_in,
+        compounds=result.compounds)
 
 
 def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,

@@ -207,6 +207,9 @@ def _retry_newer_syntax(jobs: Sequence[LoadJob], outcomes: list[LoadOutcome],
             outcomes[i] = outcome
 
 
-def job_for(path: Path, source: bytes | None = None, root: Path | None = None) -> LoadJob:
-    """A job for ``path`` (absolute), optionally importing ``source`` in its place."""
-    return LoadJob(str(path.absolute()), source, str(root.absolute()) if root else None)
+def job_for(path: Path, source: bytes | None = None, root: Path | None = None,
+            trace: tuple[str, ...] = ()) -> LoadJob:
+    """A job for ``path`` (absolute), optionally importing ``source`` in its place, and
+    tracing the compound skill classes named in ``trace``."""
+    return LoadJob(str(path.absolute()), source, str(root.absolute()) if root else None,
+                   trace=list(trace))

@@ -23,18 +23,21 @@ class LoadJob:
     root: str | None = None
     overlays: dict[str, bytes] = field(default_factory=dict)
     """Sibling modules (absolute path -> bytes) to import from memory instead of disk."""
+    trace: list[str] = field(default_factory=list)
+    """Compound skill classes whose ``expand`` to trace once the module is loaded."""
 
     def to_json(self) -> dict[str, Any]:
         return {"path": self.path, "root": self.root,
                 "source": None if self.source is None else _encode(self.source),
-                "overlays": {p: _encode(data) for p, data in self.overlays.items()}}
+                "overlays": {p: _encode(data) for p, data in self.overlays.items()},
+                "trace": self.trace}
 
     @classmethod
     def from_json(cls, data: dict[str, Any]) -> LoadJob:
         raw = data.get("source")
         overlays = {p: base64.b64decode(v) for p, v in data.get("overlays", {}).items()}
         return cls(data["path"], None if raw is None else base64.b64decode(raw),
-                   data.get("root"), overlays)
+                   data.get("root"), overlays, list(data.get("trace", ())))
 
 
 def _encode(data: bytes) -> str:
@@ -60,6 +63,8 @@ class LoadOutcome:
     """The file failed on syntax newer than the interpreter that loaded it."""
     python: str = ""
     """The interpreter that loaded the file when it was not ezmigrate's own."""
+    compounds: list[dict[str, Any]] = field(default_factory=list)
+    """Traced compound skills (``LoadJob.trace``), as ``FileLoad.compounds``."""
 
     def to_json(self) -> dict[str, Any]:
         return asdict(self)

@@ -15,7 +15,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from .library import DescriptionInfo, SkillIndex
+from .library import ROBOT, DescriptionInfo, SkillIndex
 from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
 from .trace import Unanalysable
 
@@ -26,6 +26,16 @@ UPSTREAM_PROCESSORS = frozenset({"NoProcessor", "Serial", "SerialStar", "Sequent
                                  "Selector", "SelectorStar", "ParallelFf", "ParallelFs",
                                  "NoFail"})
 _MAX_DEPTH = 16
+
+
+def _did_you_mean(key: str, candidates: set[str]) -> str | None:
+    """The closest spelling; else the one parameter left that is not ``Robot`` (``Wait``
+    given ``Time``: ``Duration`` is all it has)."""
+    close = difflib.get_close_matches(key, sorted(candidates), 1, 0.6)
+    if close:
+        return f"Did you mean {close[0]!r}?"
+    left = sorted(candidates - {ROBOT})
+    return f"Did you mean {left[0]!r}?" if len(left) == 1 else None
 
 
 @dataclass(frozen=True)
@@ -140,26 +150,24 @@ class _Checker:
                          f"remap key {key!r} is declared not by {child.name} but below it; "
                          "SkiROS2 passes the remap down to it", node.type)
             elif complete:
-                close = difflib.get_close_matches(key, sorted(declared | below), 1, 0.6)
                 self.add("remap-key-unknown", node.line,
                          f"remap key {key!r}: neither {child.name} nor anything below it "
                          "declares it, so the remap does nothing", node.type,
-                         f"Did you mean {close[0]!r}?" if close else None)
+                         _did_you_mean(key, declared - {k for k, _ in node.remap}))
         return renamed
 
     def _specify(self, node: SkillNode, child: DescriptionInfo,
                  renamed: dict[str, str]) -> None:
         keys = {renamed.get(k, k) for k in child.declared()}
+        specified = {k for k, _ in node.specify}
         for key, _ in node.specify:
             if key not in keys:
-                close = difflib.get_close_matches(key, sorted(keys), 1, 0.5)
-                was = [k for k, v in renamed.items() if v == key or k == key]
-                why = (f" (remapped, it is called {renamed[was[0]]!r})" if was
-                       and was[0] in renamed and renamed[was[0]] != key else "")
+                why = f" (remapped, it is called {renamed[key]!r})" if key in renamed else ""
                 self.add("specify-key-unknown", node.line,
                          f"specify key {key!r}: {child.name} has no such parameter after "
                          f"remapping{why}, so SkiROS2 drops the value", node.type,
-                         f"Did you mean {close[0]!r}?" if close else None)
+                         f"Did you mean {renamed[key]!r}?" if key in renamed
+                         else _did_you_mean(key, keys - specified))
 
     def _dangling(self, node: SkillNode, others: list[Node | CallProblem]) -> None:
         if not node.remap or self.parent is None:

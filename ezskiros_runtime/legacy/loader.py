@@ -24,6 +24,7 @@ import os
 import re
 import sys
 import traceback
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from importlib.abc import Loader
 from importlib.machinery import ModuleSpec
@@ -68,6 +69,9 @@ class FileLoad:
     stood_in: list[str] = field(default_factory=list)
     """Modules that could not be found and got a permissive stand-in, ROS and SkiROS2 aside
     (``expected_stand_in``); a relative import of a file outside any package as ``.name``."""
+    compounds: list[dict[str, Any]] = field(default_factory=list)
+    """Traced compound skills (``load_bytes(trace=...)``): ``CompoundModel.to_json()``, or
+    ``{"implementation", "unanalysable", "line"}``."""
 
 
 class _CodeLoader(Loader):
@@ -212,16 +216,20 @@ def load_source(text: str, filename: str | Path = "<legacy>", *,
 
 
 def load_bytes(source: bytes, filename: str | Path, *, module_name: str | None = None,
-               root: Path | None = None, permissive: bool = True) -> FileLoad:
+               root: Path | None = None, permissive: bool = True,
+               trace: Sequence[str] = ()) -> FileLoad:
     """Like ``load_file`` with the file's bytes given (a rewrite not yet written to disk).
 
     Bytes, not text, so that a PEP 263 cookie or BOM in the source still decides decoding.
+    ``trace`` names compound skill classes whose ``expand`` to run with recording stand-ins
+    (``ezskiros_runtime.compound.trace``) while the module is loaded; ``compounds`` holds
+    their trees (or why none could be read) as JSON-ready dicts.
     """
-    return _load(Path(filename).absolute(), source, module_name, root, permissive)
+    return _load(Path(filename).absolute(), source, module_name, root, permissive, trace)
 
 
 def _load(file: Path, source: bytes, module_name: str | None, root: Path | None,
-          permissive: bool) -> FileLoad:
+          permissive: bool, trace: Sequence[str] = ()) -> FileLoad:
     filename = str(file)
     name, search = _module_name(file, module_name, root)
     parents = [name.rsplit(".", i)[0] for i in range(name.count("."), 0, -1)]
@@ -243,12 +251,27 @@ def _load(file: Path, source: bytes, module_name: str | None, root: Path | None,
             finally:
                 result.stood_in = _worth_a_note(stood_in)
             _collect(module, source, filename, result)
+            result.compounds = [_traced(module, name, filename) for name in trace]
     finally:
         sys.path[:] = saved_path
         sys.dont_write_bytecode = saved_bytecode
         _forget_user_modules(before, owned, search)
         sys.modules.update(stashed)
     return result
+
+
+def _traced(module: ModuleType, name: str, filename: str) -> dict[str, Any]:
+    """The tree of compound class ``name`` of ``module``, traced, as JSON-ready data."""
+    from ..compound.trace import Unanalysable, trace
+
+    cls = getattr(module, name, None)
+    if not isinstance(cls, type):
+        return {"implementation": name, "line": 0,
+                "unanalysable": f"the module has no class {name} once loaded"}
+    found = trace(cls, path=filename)
+    if isinstance(found, Unanalysable):
+        return {"implementation": name, "line": found.line, "unanalysable": found.reason}
+    return found.to_json()
 
 
 def _with_star_stand_ins(error: ModuleLoadError, source: bytes,

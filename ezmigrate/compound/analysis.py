@@ -1,0 +1,175 @@
+"""Compound skills in ``check``: read every tree, build the skill index, run the checks.
+
+Trees are read statically where ``expand`` is literal (``static.py``) and traced in the
+verification sandbox otherwise (a child process per file, with its timeout and memory
+limit; ``LoadJob.trace``). The index holds the descriptions ``check`` already read (legacy
+ones statically, EzSkiROS ones loaded), the standard library's, and those of the project's
+``skill-libraries``; implementations' labels come from each ``setDescription`` call.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from ezskiros_runtime.compound.checks import CompoundFinding, check_model
+from ezskiros_runtime.compound.library import DescriptionInfo, SkillIndex
+from ezskiros_runtime.compound.model import CompoundModel, model_from_json
+from ezskiros_runtime.compound.trace import Unanalysable
+from ezskiros_runtime.model import SkillModel
+
+from ..discover import Candidate
+from ..results import FileResult
+from ..verify.pool import PoolConfig, job_for, run_jobs
+from .static import NeedsTrace, implementations, read_compounds
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.ontology.index import OntologyIndex
+
+MARKER = b"expand"
+
+
+@dataclass
+class CompoundRun:
+    """Every compound skill of a run (by file) and its findings."""
+
+    models: list[tuple[str, CompoundModel | Unanalysable]] = field(default_factory=list)
+    findings: list[tuple[str, CompoundFinding]] = field(default_factory=list)
+
+
+@dataclass
+class _Trees:
+    models: list[tuple[str, CompoundModel | Unanalysable]] = field(default_factory=list)
+    traced: dict[str, tuple[Candidate, list[NeedsTrace]]] = field(default_factory=dict)
+    labels: list[tuple[str, str | None]] = field(default_factory=list)
+
+
+def _read(items: Iterable[tuple[Candidate, bytes]]) -> _Trees:
+    trees = _Trees()
+    for candidate, data in items:
+        if MARKER not in data and b"setDescription" not in data:
+            continue
+        try:
+            tree = ast.parse(data)
+        except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
+            continue  # the static pass reports the file
+        path = str(candidate.path)
+        trees.labels += implementations(tree)
+        pending = []
+        for found in read_compounds(tree, path):
+            if isinstance(found, NeedsTrace):
+                pending.append(found)
+            else:
+                trees.models.append((path, found))
+        if pending:
+            trees.traced[path] = (candidate, pending)
+    return trees
+
+
+def _trace(trees: _Trees, pool: PoolConfig) -> None:
+    """Trace every class the syntax could not read, one sandboxed child per file."""
+    if not trees.traced:
+        return
+    order = list(trees.traced.values())
+    jobs = [job_for(c.path, None, c.root, tuple(n.implementation for n in pending))
+            for c, pending in order]
+    for (candidate, pending), outcome in zip(order, run_jobs(jobs, pool), strict=True):
+        path = str(candidate.path)
+        needs = {n.implementation: n for n in pending}
+        if not outcome.loaded:
+            for unread in pending:
+                trees.models.append((path, Unanalysable(
+                    unread.implementation, f"{unread.reason}, and the module could not be "
+                    f"loaded to trace it ({outcome.status}: {outcome.message})", unread.line)))
+            continue
+        for data in outcome.compounds:
+            name = str(data.get("implementation", ""))
+            need = needs.get(name)
+            if need is None:
+                continue
+            if "unanalysable" in data:
+                trees.models.append((path, Unanalysable(
+                    name, str(data["unanalysable"]), int(data.get("line") or need.line))))
+            else:
+                trees.models.append((path, replace(
+                    model_from_json(data), path=path, line=need.line,
+                    description=need.description, label=need.label)))
+
+
+def description_of(name: str, model: dict[str, Any] | None, origin: str, path: str,
+                   line: int) -> DescriptionInfo | None:
+    """A description type from its static model (``SkillResult.model``/a loaded model)."""
+    if model is None:
+        return None
+    params = SkillModel.from_json(model).params
+    return DescriptionInfo(name, {p.key: p.element_type for p in params}, origin, path, line)
+
+
+def add_descriptions(index: SkillIndex, results: Iterable[tuple[Candidate, FileResult]],
+                     loaded: Iterable[tuple[Candidate, Sequence[dict[str, Any]]]],
+                     origin: str) -> None:
+    """Every description read statically (``results``) or loaded, into ``index``."""
+    for candidate, result in results:
+        for skill in result.skills:
+            info = description_of(skill.name, skill.model, origin, str(candidate.path),
+                                  skill.line)
+            if info is not None:
+                index.add_description(info)
+    for candidate, models in loaded:
+        for data in models:
+            name = str(data.get("name", ""))
+            info = description_of(name, data, origin, str(candidate.path),
+                                  int(data.get("line") or 0))
+            if info is not None and name:
+                index.add_description(info)
+
+
+def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
+            ontology: OntologyIndex | None, pool: PoolConfig,
+            library_items: Sequence[tuple[Candidate, bytes]] = ()) -> CompoundRun:
+    """Read, trace and check every compound skill of ``items`` against ``index``.
+
+    Compound skills of ``library_items`` join the index (a remap reaches into their trees)
+    but are not reported.
+    """
+    library = _read(library_items)
+    _trace(library, pool)
+    trees = _read(items)
+    _trace(trees, pool)
+    for label, description in [*library.labels, *trees.labels]:
+        index.add_implementation(label, description)
+    for _, model in [*library.models, *trees.models]:
+        if isinstance(model, CompoundModel):
+            index.add_compound(model)
+        else:
+            index.unknown_compounds.add(_described_type(model, trees, library))
+    run = CompoundRun(models=trees.models)
+    for path, model in trees.models:
+        run.findings += [(path, f) for f in check_model(model, index, ontology)]
+    return run
+
+
+def _described_type(model: Unanalysable, *trees: _Trees) -> str:
+    """The description an unreadable compound implements (its label's), for the index."""
+    for found in trees:
+        for label, description in found.labels:
+            if label == model.implementation and description is not None:
+                return description
+    return model.implementation
+
+
+def library_candidates(paths: Sequence[Path]) -> list[tuple[Candidate, bytes]]:
+    """The Python files of ``[tool.ezmigrate] skill-libraries``, read."""
+    from ..discover import discover
+
+    found, _ = discover([p for p in paths if p.exists()])
+    items = []
+    for candidate in found:
+        try:
+            items.append((candidate, candidate.path.read_bytes()))
+        except OSError:
+            continue
+    return items
