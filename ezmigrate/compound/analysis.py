@@ -100,10 +100,11 @@ def _trace(trees: _Trees, pool: PoolConfig) -> None:
 
 
 def description_of(name: str, model: dict[str, Any] | None, origin: str, path: str,
-                   line: int) -> DescriptionInfo | None:
-    """A description type from its static model (``SkillResult.model``/a loaded model)."""
+                   line: int) -> DescriptionInfo:
+    """A description type from its static model (``SkillResult.model``/a loaded model);
+    without one (a description kept as legacy) the type exists, its keys are unknown."""
     if model is None:
-        return None
+        return DescriptionInfo(name, {}, origin, path, line, complete=False)
     params = SkillModel.from_json(model).params
     return DescriptionInfo(name, {p.key: p.element_type for p in params}, origin, path, line)
 
@@ -114,17 +115,14 @@ def add_descriptions(index: SkillIndex, results: Iterable[tuple[Candidate, FileR
     """Every description read statically (``results``) or loaded, into ``index``."""
     for candidate, result in results:
         for skill in result.skills:
-            info = description_of(skill.name, skill.model, origin, str(candidate.path),
-                                  skill.line)
-            if info is not None:
-                index.add_description(info)
+            index.add_description(description_of(skill.name, skill.model, origin,
+                                                 str(candidate.path), skill.line))
     for candidate, models in loaded:
         for data in models:
             name = str(data.get("name", ""))
-            info = description_of(name, data, origin, str(candidate.path),
-                                  int(data.get("line") or 0))
-            if info is not None and name:
-                index.add_description(info)
+            if name:
+                index.add_description(description_of(name, data, origin, str(candidate.path),
+                                                     int(data.get("line") or 0)))
 
 
 def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,

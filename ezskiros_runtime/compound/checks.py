@@ -118,6 +118,8 @@ class _Checker:
             return
         child = matches[0]
         self._label(node, child)
+        if not child.complete:
+            return
         renamed = self._remaps(node, child)
         self._specify(node, child, renamed)
         self._dangling(node, others)
@@ -170,7 +172,7 @@ class _Checker:
                          else _did_you_mean(key, keys - specified))
 
     def _dangling(self, node: SkillNode, others: list[Node | CallProblem]) -> None:
-        if not node.remap or self.parent is None:
+        if not node.remap or self.parent is None or not self.parent.complete:
             return
         written, complete = self._written(others)
         if not complete:
@@ -186,7 +188,7 @@ class _Checker:
 
     def _element_types(self, node: SkillNode, child: DescriptionInfo, key: str,
                        target: str) -> None:
-        if self.ontology is None or self.parent is None:
+        if self.ontology is None or self.parent is None or not self.parent.complete:
             return
         mine, theirs = child.element_type(key), self.parent.element_type(target)
         if mine is None or theirs is None or target not in self.parent.declared():
@@ -211,35 +213,41 @@ class _Checker:
 
     # -- what reaches where -------------------------------------------------------------
 
-    def _descendant_keys(self, node: SkillNode, child: DescriptionInfo) -> tuple[set[str], bool]:
-        """Keys declared below ``node``: its own children and its type's compound trees."""
+    def _descendant_keys(self, node: SkillNode, child: DescriptionInfo,
+                         seen: frozenset[str] = frozenset()) -> tuple[set[str], bool]:
+        """Keys declared below ``node``: its own children and its type's compound trees.
+
+        Complete only when every type below resolves and every compound tree below is
+        known; a type that contains itself (directly or further down) is not complete.
+        """
+        if child.name in seen or len(seen) > _MAX_DEPTH or not child.complete:
+            return set(), False
+        seen = seen | {child.name}
         keys: set[str] = set()
-        complete = self._below(node.children, keys, 0)
+        complete = self._below(node.children, keys, seen)
         if child.name in self.index.unknown_compounds:
             complete = False
         for tree in self.index.compounds.get(child.name, ()):
-            complete &= self._below(tree.children, keys, 1)
+            complete &= self._below(tree.children, keys, seen)
         return keys, complete
 
-    def _below(self, nodes: Iterable[Node | CallProblem], keys: set[str], depth: int) -> bool:
-        if depth > _MAX_DEPTH:
-            return False
+    def _below(self, nodes: Iterable[Node | CallProblem], keys: set[str],
+               seen: frozenset[str]) -> bool:
         complete = True
         for node in nodes:
             if isinstance(node, CallProblem):
                 continue
             if isinstance(node, ProcessorNode):
-                complete &= self._below(node.children, keys, depth + 1)
+                complete &= self._below(node.children, keys, seen)
                 continue
             matches, _ = self.index.resolve(node.type)
             if len(matches) != 1:
                 complete = False
                 continue
             keys.update(matches[0].declared())
-            d, c = self._descendant_keys(node, matches[0]) if depth < _MAX_DEPTH else (set(),
-                                                                                         False)
-            keys |= d
-            complete &= c
+            below, whole = self._descendant_keys(node, matches[0], seen)
+            keys |= below
+            complete &= whole
         return complete
 
     def _written(self, others: list[Node | CallProblem]) -> tuple[set[str], bool]:
@@ -251,7 +259,7 @@ class _Checker:
                 continue
             keys.update(target for _, target in node.remap)
             matches, _ = self.index.resolve(node.type)
-            if len(matches) != 1:
+            if len(matches) != 1 or not matches[0].complete:
                 complete = False
                 continue
             keys.update(matches[0].declared())

@@ -30,6 +30,9 @@ class DescriptionInfo:
     origin: str = "repository"
     path: str = ""
     line: int = 0
+    complete: bool = True
+    """False for a description that exists but whose parameters could not be read (one
+    ``rewrite`` keeps as legacy): its type resolves, its keys are not judged."""
 
     def declared(self) -> set[str]:
         """Declared keys, the automatic ``Robot`` included."""

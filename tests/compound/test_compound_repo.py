@@ -1,0 +1,83 @@
+"""``check`` on the compound-skill fixture repository reports exactly the marked mistakes.
+
+Every line of ``fixtures/compound_repo`` that carries ``# expect: EZ3xx`` must get that
+finding, and no other compound finding may appear there; on every other fixture
+repository of the project no compound finding at error severity may appear at all
+(precision: an error is a real mistake). Real CLI, real child processes for the traced
+trees, the bundled ontology.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+REPO = ROOT / "fixtures" / "compound_repo"
+MARKER = re.compile(r"# expect: (EZ\d{3}(?:, EZ\d{3})*)")
+
+
+def _check(*args: str | Path) -> list[dict[str, object]]:
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--output-format",
+                          "json", "--exit-zero", *map(str, args)], capture_output=True,
+                         text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    return json.loads(run.stdout)
+
+
+def _markers() -> set[tuple[str, int, str]]:
+    found = set()
+    for path in REPO.rglob("*.py"):
+        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            match = MARKER.search(line)
+            if match:
+                found |= {(path.name, number, code) for code in match.group(1).split(", ")}
+    return found
+
+
+def test_every_marked_mistake_and_nothing_else_is_reported() -> None:
+    expected = _markers()
+    assert {code for _, _, code in expected} >= {f"EZ3{n:02d}" for n in range(1, 14)} - {
+        "EZ300"}, "the fixture has a case for every compound check"
+    found = _check(REPO, "--select", "EZ3")
+    reported = {(Path(str(d["path"])).name, int(str(d["line"])), str(d["code"]))
+                for d in found}
+    assert reported == expected
+
+
+def test_the_compound_findings_say_where_what_and_how_to_fix() -> None:
+    found = {(Path(str(d["path"])).name, d["line"]): d for d in _check(REPO, "--select", "EZ3")}
+    wait = found[("mistakes.py", 55)]
+    assert wait["code"] == "EZ307" and wait["fix"] == "Did you mean 'Duration'?"
+    assert "kit_wrong_specify" in str(wait["message"]) and "Wait" in str(wait["message"])
+    deleted = found[("mistakes.py", 15)]
+    assert deleted["fix"] == "Did you mean 'Pick'?" and "'PickPart'" in str(deleted["message"])
+    traced = found[("computed.py", 26)]  # a loop: only tracing reads this tree
+    assert traced["code"] == "EZ307" and traced["severity"] == "error"
+    world = found[("computed.py", 34)]
+    assert world["code"] == "EZ313" and "wmi" in str(world["message"])
+
+
+def test_compound_errors_on_the_other_fixture_repositories_are_real() -> None:
+    """Each folder is its own repository (their descriptions share names such as ``Wait``,
+    as unrelated repositories do). One real mistake, in both versions of one file:
+    ``empty_bin`` remaps its vacuum cup (``rparts:VacuumEffectorSingleCup``) onto
+    ``Place``'s ``Gripper`` (``rparts:GripperEffector``), classes no element can belong to
+    at once."""
+    others = [p for p in (ROOT / "fixtures").iterdir() if p.is_dir() and p != REPO]
+    found = [d for other in others for d in _check(other, "--select", "EZ3")]
+    errors = {(Path(str(d["path"])).parent.name, Path(str(d["path"])).name, d["line"],
+               d["code"]) for d in found if d["severity"] == "error"}
+    assert errors == {("legacy", "mixed_impl.py", 103, "EZ311"),
+                      ("migrated", "mixed_impl.py", 104, "EZ311")}
+
+
+def test_the_clean_tasks_use_the_standard_library_and_stay_silent() -> None:
+    source = (REPO / "lab_tasks" / "src" / "lab_tasks" / "tasks.py").read_text()
+    assert '"Wait"' in source and '"WmSetRelation"' in source
+    found = _check(REPO / "lab_tasks" / "src" / "lab_tasks" / "tasks.py",
+                   REPO / "lab_descriptions", "--select", "EZ3")
+    assert [(d["line"], d["code"]) for d in found] == [(59, "EZ305")]
