@@ -14,6 +14,7 @@ __version__ = "0.1.0"
 """Also part of the ontology cache key: a new release never reads an old release's cache."""
 
 if TYPE_CHECKING:
+    from .compound import CompoundSkillError, check_compound
     from .diagnostics import (
         DescriptionError,
         EzSkirosWarning,
@@ -48,6 +49,8 @@ _EXPORTS: dict[str, str] = {
     "any_of": "dsl.conditions",
     "check": "dsl.checking",
     "strict": "dsl.policy",
+    "check_compound": "compound",
+    "CompoundSkillError": "compound",
     "is_strict": "dsl.policy",
     "collecting": "dsl.policy",
     "set_severity": "dsl.policy",
@@ -76,6 +79,7 @@ __all__ = [
     "KEY",
     "OPTIONAL",
     "REQUIRED",
+    "CompoundSkillError",
     "Consume",
     "DescriptionError",
     "EzSkirosWarning",
@@ -90,6 +94,7 @@ __all__ = [
     "abstract",
     "any_of",
     "check",
+    "check_compound",
     "collecting",
     "is_strict",
     "set_severity",

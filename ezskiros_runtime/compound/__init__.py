@@ -1,0 +1,65 @@
+"""Compound skills: the behaviour trees implementations build in ``expand``, checked early.
+
+``check_compound(Implementation, index=...)`` is what a launch script calls: it traces the
+class's ``expand`` with recording stand-ins (nothing reaches a skill manager or the world
+model), checks the tree against the skill index, and returns the findings as data; with
+``strict=True`` (or ``ezskiros_runtime.strict()``) an error-severity finding raises
+``CompoundSkillError``, like the description checks.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
+
+from ..codes import rule_for
+from .checks import CompoundFinding, check_model
+from .library import DescriptionInfo, SkillIndex
+from .model import CompoundModel, ProcessorNode, SkillNode
+from .trace import Unanalysable, trace
+
+if TYPE_CHECKING:
+    from ..ontology.index import OntologyIndex
+
+
+class CompoundSkillError(TypeError):
+    """A compound skill's tree has a mistake SkiROS2 would only log when it runs."""
+
+    def __init__(self, findings: list[CompoundFinding]) -> None:
+        self.findings = findings
+        super().__init__("; ".join(f"{rule_for(f.kind).code} {f.implementation}: {f.message}"
+                                   for f in findings))
+
+
+def index_of(descriptions: Iterable[type], *, standard_library: bool = True) -> SkillIndex:
+    """A skill index of description classes (legacy or EzSkiROS), plus the standard
+    library's unless ``standard_library=False``."""
+    from ..legacy.extract import model_of
+
+    index = SkillIndex.with_standard_library() if standard_library else SkillIndex()
+    for cls in descriptions:
+        params = model_of(cls()).params
+        index.add_description(DescriptionInfo(cls.__name__,
+                                              {p.key: p.element_type for p in params}))
+    return index
+
+
+def check_compound(implementation: type, index: SkillIndex | None = None, *,
+                   ontology: OntologyIndex | None = None,
+                   strict: bool | None = None) -> list[CompoundFinding]:
+    """The findings of one compound skill implementation's tree (see the module doc)."""
+    from ..dsl.policy import is_strict
+
+    found = trace(implementation)
+    if isinstance(found, CompoundModel) and index is not None:
+        index.add_compound(found)
+    findings = check_model(found, index or SkillIndex.with_standard_library(), ontology)
+    errors = [f for f in findings if rule_for(f.kind).severity == "error"]
+    if errors and (is_strict() if strict is None else strict):
+        raise CompoundSkillError(errors)
+    return findings
+
+
+__all__ = ["CompoundFinding", "CompoundModel", "CompoundSkillError", "DescriptionInfo",
+           "ProcessorNode", "SkillIndex", "SkillNode", "Unanalysable", "check_compound",
+           "index_of", "trace"]
