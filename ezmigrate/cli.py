@@ -243,8 +243,18 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
                       item.result, dry_run, check, color, debug)
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
+    compounds: list[str] = []
+    if report is not None and report.suffix.lower() == ".md":
+        from .compound.analysis import report_section
+        from .verify.pool import PoolConfig
+
+        compounds = report_section(
+            [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
+            PoolConfig(workers=options.jobs, timeout=options.timeout,
+                       ontology=options.ontology, python=options.python))
     _finish([m.result for m in outcome.migrated], report, options.writes, check,
-            outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used))
+            outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
+                                             compounds=compounds))
 
 
 def _print_result(shown: str, relative: str, original: bytes, result: FileResult,

@@ -64,6 +64,8 @@ class MarkdownOptions:
     notes: list[str] = field(default_factory=list)
     ontology: str = ""
     """Which ontology files were used and why (``OntologySource.describe``)."""
+    compounds: list[str] = field(default_factory=list)
+    """The "Compound skills" section (``compound.diagram.markdown_section``), Markdown only."""
 
 
 def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
@@ -160,4 +162,5 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
         out.append("")
     if findings:
         out += ["## Findings (kept as they were; not equivalence problems)", "", *findings, ""]
+    out += options.compounds
     return "\n".join(out).rstrip() + "\n"

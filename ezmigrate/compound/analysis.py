@@ -171,3 +171,16 @@ def library_candidates(paths: Sequence[Path]) -> list[tuple[Candidate, bytes]]:
         except OSError:
             continue
     return items
+
+
+def report_section(items: Sequence[tuple[Candidate, bytes, FileResult]],
+                   ontology: OntologyIndex | None, pool: PoolConfig) -> list[str]:
+    """The Markdown report's "Compound skills" section for the files of a run."""
+    from .diagram import markdown_section
+
+    if not any(MARKER in data for _, data, _ in items):
+        return []
+    index = SkillIndex.with_standard_library()
+    add_descriptions(index, [(c, r) for c, _, r in items], [], "repository")
+    run = analyse([(c, d) for c, d, _ in items], index, ontology, pool)
+    return markdown_section(run.models, run.findings)
