@@ -11,6 +11,7 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -75,14 +76,24 @@ def _legacy(path: str, result: FileResult, positions: Positions,
     return found
 
 
-def read_statically(candidates: list[Candidate], workers: int,
-                    index: OntologyIndex | None) -> Iterator[tuple[Candidate, bytes, FileResult]]:
+def parse(data: bytes) -> ast.Module | None:
+    """The module's syntax tree, or None when ``ast`` cannot read it (the codemod says why)."""
+    try:
+        return ast.parse(data)
+    except (SyntaxError, ValueError, UnicodeError, LookupError, MemoryError, RecursionError):
+        return None
+
+
+def read_statically(candidates: list[Candidate], workers: int, index: OntologyIndex | None,
+                    trees: dict[str, ast.Module] | None = None
+                    ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
     """What every legacy description declares, without importing user code.
 
     Plain descriptions are read with ``ast`` (``lint/plain_reader.py``); every other file
     goes through the codemod's reader exactly as ``rewrite`` reads it, with its whole
     package when a class may derive from a description of a sibling file. Files without a
-    description are read, never parsed.
+    description are read, never parsed. ``trees`` (when given) keeps each syntax tree parsed
+    here, by path, for the compound-skill pass.
     """
     plain: list[tuple[Candidate, bytes, FileResult]] = []
     declined: list[Candidate] = []
@@ -96,8 +107,11 @@ def read_statically(candidates: list[Candidate], workers: int,
         if not may_hold_descriptions(data):
             yield candidate, data, FileResult(path=candidate.relative)
             continue
-        verdict = read_plain(data, candidate.relative) if RUNTIME_MARKER not in data \
-            else Declined()
+        tree = parse(data)
+        if tree is not None and trees is not None:
+            trees[str(candidate.path)] = tree
+        verdict = read_plain(data, candidate.relative, tree) \
+            if RUNTIME_MARKER not in data and tree is not None else Declined()
         if isinstance(verdict, Declined):
             declined.append(candidate)
             if verdict.cross_file:
@@ -114,9 +128,10 @@ def read_statically(candidates: list[Candidate], workers: int,
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               exclude: tuple[str, ...] = (),
               progress: Callable[[str], None] | None = None,
-              skill_libraries: tuple[Path, ...] = ()) -> CheckOutcome:
+              skill_libraries: tuple[Path, ...] = (), compounds: bool = True) -> CheckOutcome:
     """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
-    the compound skills' trees against every description found."""
+    the compound skills' trees against every description found (unless ``compounds`` is
+    False: no EZ3 code is selected, so their reading and tracing would be thrown away)."""
     candidates, _ = discover(paths, exclude)
     outcome = CheckOutcome(files=len(candidates))
     if progress is not None:
@@ -124,7 +139,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
     results: list[tuple[Candidate, FileResult]] = []
-    for candidate, data, result in read_statically(candidates, pool.workers, index):
+    trees: dict[str, ast.Module] = {}
+    for candidate, data, result in read_statically(candidates, pool.workers, index, trees):
         path = str(candidate.path)
         read.append((candidate, data))
         results.append((candidate, result))
@@ -139,8 +155,10 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         progress(f"loading {len(loadable)} EzSkiROS files")
     outcomes = run_jobs([job_for(c.path, None, c.root) for c in loadable],
                         pool) if loadable else []
-    outcome.diagnostics += _compound(read, results, list(zip(loadable, outcomes, strict=True)),
-                                     index, pool, skill_libraries, outcome.sources)
+    if compounds:
+        outcome.diagnostics += _compound(read, results, list(zip(loadable, outcomes,
+                                                                 strict=True)),
+                                         index, pool, skill_libraries, outcome.sources, trees)
     for candidate, loaded in zip(loadable, outcomes, strict=True):
         path = str(candidate.path)
         where = Positions(outcome.sources[path])
@@ -165,7 +183,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
               loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
               pool: PoolConfig, libraries: tuple[Path, ...],
-              sources: dict[str, str]) -> list[Diagnostic]:
+              sources: dict[str, str], trees: dict[str, ast.Module]) -> list[Diagnostic]:
     """The compound skills' findings (EZ3xx), against this run's and the libraries'
     descriptions."""
     if not any(b"expand" in data for _, data in read):
@@ -182,7 +200,7 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
         add_descriptions(skills, statics, [], "skill library")
     add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],
                      "repository")
-    run = analyse(read, skills, index, pool, library)
+    run = analyse(read, skills, index, pool, library, trees)
     found: dict[tuple[str, int, str, str], Diagnostic] = {}
     for path, finding in run.findings:  # a traced loop adds the same mistake once a turn
         where = Positions(sources.get(path, ""))

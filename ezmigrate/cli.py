@@ -410,7 +410,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
         if sys.stderr.isatty() and not quiet else None
     outcome = run_check(list(paths), index, pool, tuple(exclude) + project.exclude, progress,
-                        project.skill_libraries)
+                        project.skill_libraries,
+                        compounds=any(c.startswith("EZ3") for c in selection.codes()))
     found = apply(outcome.diagnostics, outcome.sources, selection)
     shown = [d for d in found if d.severity == "error"] if quiet else found
     click.echo(count(shown) if statistics else FORMATS[output_format](shown), nl=False)

@@ -10,7 +10,7 @@ ones statically, EzSkiROS ones loaded), the standard library's, and those of the
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -24,6 +24,7 @@ from ezskiros_runtime.model import SkillModel
 from ..discover import Candidate
 from ..results import FileResult
 from ..verify.pool import PoolConfig, job_for, run_jobs
+from ..verify.protocol import LoadOutcome
 from .static import NeedsTrace, implementations, read_compounds
 
 if TYPE_CHECKING:
@@ -47,16 +48,19 @@ class _Trees:
     labels: list[tuple[str, str | None]] = field(default_factory=list)
 
 
-def _read(items: Iterable[tuple[Candidate, bytes]]) -> _Trees:
+def _read(items: Iterable[tuple[Candidate, bytes]],
+          parsed: Mapping[str, ast.Module] | None = None) -> _Trees:
     trees = _Trees()
     for candidate, data in items:
         if MARKER not in data and b"setDescription" not in data:
             continue
-        try:
-            tree = ast.parse(data)
-        except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
-            continue  # the static pass reports the file
         path = str(candidate.path)
+        tree = (parsed or {}).get(path)
+        if tree is None:
+            try:
+                tree = ast.parse(data)
+            except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
+                continue  # the static pass reports the file
         trees.labels += implementations(tree)
         pending = []
         for found in read_compounds(tree, path):
@@ -69,34 +73,60 @@ def _read(items: Iterable[tuple[Candidate, bytes]]) -> _Trees:
     return trees
 
 
+BATCH = 32
+"""Files traced by one child at most: a hang costs one batch's timeout, then each of its
+files is traced alone."""
+
+
 def _trace(trees: _Trees, pool: PoolConfig) -> None:
-    """Trace every class the syntax could not read, one sandboxed child per file."""
+    """Trace every class the syntax could not read, in sandboxed children.
+
+    The files go in batches, one child each (a fork and a cold start per batch instead of
+    per file); a batch that did not finish (a file hung or crashed its child) is traced
+    again one file per child, so the verdict lands on the file that caused it.
+    """
     if not trees.traced:
         return
     order = list(trees.traced.values())
-    jobs = [job_for(c.path, None, c.root, tuple(n.implementation for n in pending))
-            for c, pending in order]
-    for (candidate, pending), outcome in zip(order, run_jobs(jobs, pool), strict=True):
-        path = str(candidate.path)
-        needs = {n.implementation: n for n in pending}
-        if not outcome.loaded:
-            for unread in pending:
-                trees.models.append((path, Unanalysable(
-                    unread.implementation, f"{unread.reason}, and the module could not be "
-                    f"loaded to trace it ({outcome.status}: {outcome.message})", unread.line)))
+    jobs = [replace(job_for(c.path, None, c.root, tuple(n.implementation for n in pending)),
+                    collect=False) for c, pending in order]
+    size = min(BATCH, max(1, -(-len(jobs) // max(1, pool.workers))))
+    batches = [jobs[i:i + size] for i in range(0, len(jobs), size)]
+    outcomes: list[LoadOutcome | None] = []
+    for batch, first in zip(batches, run_jobs(
+            [replace(b[0], more=b[1:]) for b in batches], pool), strict=True):
+        done = [first, *first.more]
+        outcomes += done if len(done) == len(batch) else [None] * len(batch)
+    again = [i for i, outcome in enumerate(outcomes) if outcome is None]
+    for i, retried in zip(again, run_jobs([jobs[i] for i in again], pool), strict=True):
+        outcomes[i] = retried
+    for (candidate, pending), found in zip(order, outcomes, strict=True):
+        assert found is not None
+        _record(trees, str(candidate.path), pending, found)
+
+
+def _record(trees: _Trees, path: str, pending: list[NeedsTrace],
+            outcome: LoadOutcome) -> None:
+    """The traced trees of one file (or why none could be read) into ``trees``."""
+    needs = {n.implementation: n for n in pending}
+    if not outcome.loaded:
+        for unread in pending:
+            trees.models.append((path, Unanalysable(
+                unread.implementation, f"{unread.reason}, and the module could not be "
+                f"loaded to trace it ({outcome.status}: {outcome.message})", unread.line)))
+        return
+    for data in outcome.compounds:
+        name = str(data.get("implementation", ""))
+        need = needs.get(name)
+        if need is None:
             continue
-        for data in outcome.compounds:
-            name = str(data.get("implementation", ""))
-            need = needs.get(name)
-            if need is None:
-                continue
-            if "unanalysable" in data:
-                trees.models.append((path, Unanalysable(
-                    name, str(data["unanalysable"]), int(data.get("line") or need.line))))
-            else:
-                trees.models.append((path, replace(
-                    model_from_json(data), path=path, line=need.line,
-                    description=need.description, label=need.label)))
+        if "unanalysable" in data:
+            trees.models.append((path, Unanalysable(
+                name, str(data["unanalysable"]), int(data.get("line") or need.line))))
+        else:
+            trees.models.append((path, replace(
+                model_from_json(data), path=path, line=need.line,
+                description=need.description, label=need.label)))
 
 
 def description_of(name: str, model: dict[str, Any] | None, origin: str, path: str,
@@ -127,15 +157,16 @@ def add_descriptions(index: SkillIndex, results: Iterable[tuple[Candidate, FileR
 
 def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
             ontology: OntologyIndex | None, pool: PoolConfig,
-            library_items: Sequence[tuple[Candidate, bytes]] = ()) -> CompoundRun:
+            library_items: Sequence[tuple[Candidate, bytes]] = (),
+            parsed: Mapping[str, ast.Module] | None = None) -> CompoundRun:
     """Read, trace and check every compound skill of ``items`` against ``index``.
 
     Compound skills of ``library_items`` join the index (a remap reaches into their trees)
-    but are not reported.
+    but are not reported. ``parsed``: syntax trees the caller already has, by path.
     """
     library = _read(library_items)
     _trace(library, pool)
-    trees = _read(items)
+    trees = _read(items, parsed)
     _trace(trees, pool)
     for label, description in [*library.labels, *trees.labels]:
         index.add_implementation(label, description)

@@ -83,20 +83,30 @@ def implementations(tree: ast.Module) -> list[tuple[str, str | None]]:
 
 def _described(cls: ast.ClassDef) -> tuple[str | None, str]:
     """``self.setDescription(Desc(), label)`` in the class's ``createDescription``
-    (``self.__class__.__name__`` or anything computed counts as the class's name)."""
+    (``self.__class__.__name__`` or anything computed counts as the class's name). The
+    body's own statements are looked at first: that is where nearly every call is."""
     for member in cls.body:
         if isinstance(member, ast.FunctionDef) and member.name == "createDescription":
-            for node in ast.walk(member):
-                if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
-                        and node.func.attr == "setDescription" and node.args:
-                    first = node.args[0]
-                    kind = ast_dotted_name(first.func if isinstance(first, ast.Call)
-                                           else first)
-                    label = node.args[1] if len(node.args) > 1 else None
-                    if isinstance(label, ast.Constant) and isinstance(label.value, str):
-                        return kind and kind.rpartition(".")[2], label.value
-                    return kind and kind.rpartition(".")[2], cls.name
+            direct = [s.value for s in member.body if isinstance(s, ast.Expr)]
+            for nodes in (direct, ast.walk(member)):
+                for node in nodes:
+                    found = _set_description(node, cls.name)
+                    if found is not None:
+                        return found
     return None, cls.name
+
+
+def _set_description(node: ast.AST, name: str) -> tuple[str | None, str] | None:
+    if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+            and node.func.attr == "setDescription" and node.args):
+        return None
+    first = node.args[0]
+    kind = ast_dotted_name(first.func if isinstance(first, ast.Call) else first)
+    label = node.args[1] if len(node.args) > 1 else None
+    described = kind and kind.rpartition(".")[2]
+    if isinstance(label, ast.Constant) and isinstance(label.value, str):
+        return described, label.value
+    return described, name
 
 
 class _Reader:

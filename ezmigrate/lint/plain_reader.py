@@ -70,14 +70,15 @@ class Declined:
     cross_file: bool = False
 
 
-def read_plain(data: bytes, path: str) -> FileResult | Declined:
-    """Every legacy description of a module, when all of them are plain.
+def read_plain(data: bytes, path: str, tree: ast.Module | None = None) -> FileResult | Declined:
+    """Every legacy description of a module, when all of them are plain (``tree``: the
+    module already parsed by the caller).
 
     Declined also for a file the codemod must judge itself: one that ``ast`` cannot parse
     (the codemod says why). The caller keeps files using ``ezskiros_runtime`` away.
     """
     try:
-        tree = ast.parse(data)
+        tree = tree or ast.parse(data)
         names = _legacy_names(tree, data)
         constants = _Constants(tree)
         skills = [_skill(node, names, constants)

@@ -68,7 +68,15 @@ def _max_fd() -> int:
 
 
 def load(job: LoadJob) -> LoadOutcome:
-    """Import the job's file and turn whatever happens into an outcome (never raises)."""
+    """Import the job's file, then those of ``job.more`` one by one (each load restores
+    ``sys.modules``), and turn whatever happens into outcomes (never raises)."""
+    outcome = _load_one(job)
+    outcome.more = [_load_one(other) for other in job.more]
+    return outcome
+
+
+def _load_one(job: LoadJob) -> LoadOutcome:
+    """``load`` for one file."""
     from ezskiros_runtime.dsl.policy import collecting
     from ezskiros_runtime.legacy.errors import ModuleLoadError
     from ezskiros_runtime.legacy.loader import load_bytes
@@ -79,7 +87,7 @@ def load(job: LoadJob) -> LoadOutcome:
         source = job.source if job.source is not None else path.read_bytes()
         with collecting(), overlaid(job.overlays):
             result = load_bytes(source, path, root=Path(job.root) if job.root else None,
-                                trace=job.trace)
+                                trace=job.trace, collect=job.collect)
     except SystemExit as stop:
         return LoadOutcome("exit", f"the module called sys.exit({stop.code!r}) while loading")
     except MemoryError:

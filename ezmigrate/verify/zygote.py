@@ -186,6 +186,7 @@ WARM_UP_LEGACY = b'''\
 from skiros2_common.core.abstract_skill import SkillDescription
 from skiros2_common.core.params import ParamTypes
 from skiros2_common.core.world_element import Element
+from skiros2_skill.core.skill import SerialStar, SkillBase
 import rospy
 
 
@@ -198,8 +199,20 @@ class EzmigrateWarmUp(SkillDescription):
                                                   "Arm", True))
         self.addPostCondition(self.getPropCond("ObjectOpen", "skiros:StateProperty",
                                                "Object", "=", "Open", True))
+
+
+class ezmigrate_warm_up_tree(SkillBase):
+    def createDescription(self):
+        self.setDescription(EzmigrateWarmUp(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill.setProcessor(SerialStar())
+        for key in ("Arm", "Object"):
+            skill(self.skill("Wait", "", remap={"Robot": key},
+                             specify={"Duration": self.params["Speed"].value}))
 '''
-"""A legacy description of ours that a warm-up load goes through (never user code)."""
+"""A legacy description and compound skill of ours that a warm-up load goes through and
+traces (never user code)."""
 
 WARM_UP_MIGRATED = b'''\
 from ezskiros_runtime import SkillDescription, INFERRED, OPTIONAL
@@ -235,7 +248,8 @@ def warm_up() -> list[LoadOutcome]:
             path = Path(scratch, name, "ezmigrate_warm_up.py")
             path.parent.mkdir()
             path.write_bytes(source)
-            outcomes.append(load(LoadJob(str(path), None, None)))
+            trace = ["ezmigrate_warm_up_tree"] if name == "legacy" else []
+            outcomes.append(load(LoadJob(str(path), None, None, trace=trace)))
     return outcomes
 
 
@@ -256,6 +270,7 @@ def main(argv: list[str] | None = None) -> int:
     # warm imports shared with every child; the runtime's public names are lazy, so the DSL
     # and its checks are named too, or every child that loads an EzSkiROS file imports (and
     # compiles) them again, ~70 ms per file
+    import ezskiros_runtime.compound.trace
     import ezskiros_runtime.dsl.skill
     import ezskiros_runtime.legacy.loader
     import ezskiros_runtime.ontology.namespaces

@@ -217,19 +217,21 @@ def load_source(text: str, filename: str | Path = "<legacy>", *,
 
 def load_bytes(source: bytes, filename: str | Path, *, module_name: str | None = None,
                root: Path | None = None, permissive: bool = True,
-               trace: Sequence[str] = ()) -> FileLoad:
+               trace: Sequence[str] = (), collect: bool = True) -> FileLoad:
     """Like ``load_file`` with the file's bytes given (a rewrite not yet written to disk).
 
     Bytes, not text, so that a PEP 263 cookie or BOM in the source still decides decoding.
     ``trace`` names compound skill classes whose ``expand`` to run with recording stand-ins
     (``ezskiros_runtime.compound.trace``) while the module is loaded; ``compounds`` holds
-    their trees (or why none could be read) as JSON-ready dicts.
+    their trees (or why none could be read) as JSON-ready dicts. ``collect=False`` skips the
+    descriptions' models and checks (a load for tracing alone).
     """
-    return _load(Path(filename).absolute(), source, module_name, root, permissive, trace)
+    return _load(Path(filename).absolute(), source, module_name, root, permissive, trace,
+                 collect)
 
 
 def _load(file: Path, source: bytes, module_name: str | None, root: Path | None,
-          permissive: bool, trace: Sequence[str] = ()) -> FileLoad:
+          permissive: bool, trace: Sequence[str] = (), collect: bool = True) -> FileLoad:
     filename = str(file)
     name, search = _module_name(file, module_name, root)
     parents = [name.rsplit(".", i)[0] for i in range(name.count("."), 0, -1)]
@@ -250,7 +252,8 @@ def _load(file: Path, source: bytes, module_name: str | None, root: Path | None,
                     error.__cause__
             finally:
                 result.stood_in = _worth_a_note(stood_in)
-            _collect(module, source, filename, result)
+            if collect:
+                _collect(module, source, filename, result)
             result.compounds = [_traced(module, name, filename) for name in trace]
     finally:
         sys.path[:] = saved_path

@@ -29,7 +29,76 @@ def prop(subject: str, name: str, op: str, value: str) -> str:
             f'{value}, True))')
 
 
+COMPOUND = legacy(f"{LOC}\n{PROD}") + """
+
+from skiros2_skill.core.skill import RetryOnFail, Sequential, SkillBase
+
+
+class Child(SkillDescription):
+    def createDescription(self):
+        self.addParam("Target", Element("skiros:Location"), ParamTypes.Required)
+        self.addParam("Speed", 0.5, ParamTypes.Optional)
+
+
+class Bin(SkillDescription):
+    def createDescription(self):
+        self.addParam("Target", Element("skiros:LargeBox"), ParamTypes.Required)
+
+
+class Middle(SkillDescription):
+    def createDescription(self):
+        self.addParam("Spot", Element("skiros:Location"), ParamTypes.Required)
+
+
+class middle_impl(SkillBase):
+    def createDescription(self):
+        self.setDescription(Middle(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill(self.skill("Child", "", remap={{"Target": "Spot"}}))
+
+
+class skill_tree(SkillBase):
+    def createDescription(self):
+        self.setDescription(Skill(), self.__class__.__name__)
+
+    def expand(self, skill):
+        {expand}
+"""
+
+
+def tree(*children: str, expand: str = "") -> str:
+    """A legacy module whose compound skill ``skill_tree`` (implementing ``Skill``: Box, a
+    location, and Item, a product) has these children, or this ``expand`` body."""
+    return COMPOUND.format(expand=expand or f"skill({', '.join(children)})")
+
+
+TARGET = 'remap={"Target": "Box"}'
 CASES: dict[str, tuple[str, str]] = {
+    "EZ301": (tree('self.skill("Chld", "")'), tree('self.skill("Child", "")')),
+    "EZ302": (tree('self.skill("Chil.", "")'), tree('self.skill("Child", "")')),
+    "EZ303": (tree('self.skill("Child", "middle_impl")'), tree('self.skill("Middle", '
+                                                               '"middle_impl")')),
+    "EZ304": (tree('self.skill("Child", "", remap={"Goal": "Box"})'),
+              tree(f'self.skill("Child", "", {TARGET})')),
+    "EZ305": (tree('self.skill("Middle", "", remap={"Target": "Box"})'),
+              tree('self.skill("Middle", "", remap={"Spot": "Box"})')),
+    "EZ306": (tree('self.skill("Child", "", remap={"Target": "Speed"})'),
+              tree(f'self.skill("Child", "", {TARGET})')),
+    "EZ307": (tree('self.skill("Child", "", specify={"Sped": 1.0})'),
+              tree('self.skill("Child", "", specify={"Speed": 1.0})')),
+    "EZ308": (tree('self.skill("Child", "", remap={"Target": "Station"})'),
+              tree(f'self.skill("Child", "", {TARGET})')),
+    "EZ309": (tree('self.skill(self.skill("Child", ""))'),
+              tree(f'self.skill(Sequential())(self.skill("Child", "", {TARGET}))')),
+    "EZ310": (tree(f'self.skill(RetryOnFail(Sequential()))(self.skill("Child", "", {TARGET}))'),
+              tree(f'self.skill(Sequential())(self.skill("Child", "", {TARGET}))')),
+    "EZ311": (tree('self.skill("Child", "", remap={"Target": "Item"})'),
+              tree(f'self.skill("Child", "", {TARGET})')),
+    "EZ312": (tree(f'self.skill("Bin", "", {TARGET})'), tree(f'self.skill("Child", "", {TARGET})')),
+    "EZ313": (tree(expand='skill(self.skill("Child", "", remap={"Target": self.wmi.box}))'),
+              tree(expand='for key in ("Box",):\n'
+                   '            skill(self.skill("Child", "", remap={"Target": key}))')),
     "EZ101": (legacy(f'self.addParam("Speed", 0.1, {REQ}, "metres per second")'),
               legacy(f'self.addParam("Speed", 0.1, {REQ}, description="metres per second")')),
     "EZ102": (legacy(f'self.addParam("Speed", 0.1, {REQ}, [ParamOptions.Lock])'),

@@ -313,11 +313,12 @@ def test_the_warm_up_descriptions_load_and_agree():
         assert not [n for n in sys.modules if "warm_up" in n or n.startswith("skiros2")]
         models = [SkillModel.from_json(o.models[0]) for o in (legacy, migrated)]
         print(json.dumps([legacy.status, migrated.status, len(legacy.models),
-                          len(migrated.models), [str(d) for d in compare(*models)]]))
+                          len(migrated.models), [str(d) for d in compare(*models)],
+                          [c.get("obtained") for c in legacy.compounds]]))
     """)
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=False)
     assert run.returncode == 0, run.stderr
     import json
 
-    assert json.loads(run.stdout.strip().splitlines()[-1]) == ["ok", "ok", 1, 1, []]
+    assert json.loads(run.stdout.strip().splitlines()[-1]) == ["ok", "ok", 1, 1, [], ["traced"]]

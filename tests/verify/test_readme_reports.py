@@ -20,10 +20,14 @@ def _section() -> str:
     reports have ``## `` headings of their own)."""
     lines = (ROOT / "README.md").read_text(encoding="utf-8").splitlines(keepends=True)
     start = lines.index(SECTION + "\n")
-    fenced = False
+    fence = ""  # the open fence: a report with fenced diagrams sits in a longer one
     for end in range(start + 1, len(lines)):
-        fenced ^= lines[end].startswith("```")
-        if not fenced and lines[end].startswith("## "):
+        ticks = re.match(r"`{3,}", lines[end])
+        if ticks and not fence:
+            fence = ticks.group(0)
+        elif ticks and lines[end].rstrip() == fence:
+            fence = ""
+        if not fence and lines[end].startswith("## "):
             break
     else:
         end = len(lines)
@@ -33,8 +37,8 @@ def _section() -> str:
 def _examples() -> list[tuple[str, str]]:
     """(the prose before each ```markdown block, the block's content)."""
     section = _section()
-    found = [(m.start(), m.group(1)) for m in
-             re.finditer(r"^```markdown\n(.*?)^```$", section, re.M | re.S)]
+    found = [(m.start(), m.group(2)) for m in
+             re.finditer(r"^(`{3,})markdown\n(.*?)^\1$", section, re.M | re.S)]
     assert len(found) == 2, "the section should show a rewrite and a verify report"
     return [(section[:start], block) for start, block in found]
 
