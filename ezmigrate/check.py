@@ -29,6 +29,7 @@ from .verify.pool import PoolConfig, job_for, run_jobs
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
+    from .compound.analysis import Trees
     from .verify.protocol import LoadOutcome
 
 KEPT_FROM_CODEMOD = frozenset({"description-in-options", "options-ignored"})
@@ -85,15 +86,15 @@ def parse(data: bytes) -> ast.Module | None:
 
 
 def read_statically(candidates: list[Candidate], workers: int, index: OntologyIndex | None,
-                    trees: dict[str, ast.Module] | None = None
+                    on_tree: Callable[[Candidate, bytes, ast.Module], None] | None = None
                     ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
     """What every legacy description declares, without importing user code.
 
     Plain descriptions are read with ``ast`` (``lint/plain_reader.py``); every other file
     goes through the codemod's reader exactly as ``rewrite`` reads it, with its whole
     package when a class may derive from a description of a sibling file. Files without a
-    description are read, never parsed. ``trees`` (when given) keeps each syntax tree parsed
-    here, by path, for the compound-skill pass.
+    description are read, never parsed. ``on_tree`` (when given) sees each syntax tree parsed
+    here, for the compound-skill pass to read while it is at hand.
     """
     plain: list[tuple[Candidate, bytes, FileResult]] = []
     declined: list[Candidate] = []
@@ -108,8 +109,8 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
             yield candidate, data, FileResult(path=candidate.relative)
             continue
         tree = parse(data)
-        if tree is not None and trees is not None:
-            trees[str(candidate.path)] = tree
+        if tree is not None and on_tree is not None:
+            on_tree(candidate, data, tree)
         verdict = read_plain(data, candidate.relative, tree) \
             if RUNTIME_MARKER not in data and tree is not None else Declined()
         if isinstance(verdict, Declined):
@@ -139,8 +140,13 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
     results: list[tuple[Candidate, FileResult]] = []
-    trees: dict[str, ast.Module] = {}
-    for candidate, data, result in read_statically(candidates, pool.workers, index, trees):
+    trees = None
+    if compounds:
+        from .compound.analysis import Trees
+
+        trees = Trees()
+    for candidate, data, result in read_statically(candidates, pool.workers, index,
+                                                   trees.add if trees else None):
         path = str(candidate.path)
         read.append((candidate, data))
         results.append((candidate, result))
@@ -155,7 +161,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         progress(f"loading {len(loadable)} EzSkiROS files")
     outcomes = run_jobs([job_for(c.path, None, c.root) for c in loadable],
                         pool) if loadable else []
-    if compounds:
+    if trees is not None:
         outcome.diagnostics += _compound(read, results, list(zip(loadable, outcomes,
                                                                  strict=True)),
                                          index, pool, skill_libraries, outcome.sources, trees)
@@ -183,7 +189,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
               loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
               pool: PoolConfig, libraries: tuple[Path, ...],
-              sources: dict[str, str], trees: dict[str, ast.Module]) -> list[Diagnostic]:
+              sources: dict[str, str], trees: Trees) -> list[Diagnostic]:
     """The compound skills' findings (EZ3xx), against this run's and the libraries'
     descriptions."""
     if not any(b"expand" in data for _, data in read):

@@ -10,7 +10,7 @@ ones statically, EzSkiROS ones loaded), the standard library's, and those of the
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -42,34 +42,42 @@ class CompoundRun:
 
 
 @dataclass
-class _Trees:
+class Trees:
+    """What the static pass learnt of a run's compound skills: trees read, trees to trace,
+    implementation labels. Filled file by file while the syntax tree is at hand (``add``):
+    keeping a repository's syntax trees alive until later slows every garbage collection."""
+
     models: list[tuple[str, CompoundModel | Unanalysable]] = field(default_factory=list)
     traced: dict[str, tuple[Candidate, list[NeedsTrace]]] = field(default_factory=dict)
     labels: list[tuple[str, str | None]] = field(default_factory=list)
+    seen: set[str] = field(default_factory=set)
 
-
-def _read(items: Iterable[tuple[Candidate, bytes]],
-          parsed: Mapping[str, ast.Module] | None = None) -> _Trees:
-    trees = _Trees()
-    for candidate, data in items:
-        if MARKER not in data and b"setDescription" not in data:
-            continue
+    def add(self, candidate: Candidate, data: bytes, tree: ast.Module | None = None) -> None:
+        """One file (``tree``: its syntax tree when the caller has parsed it already)."""
         path = str(candidate.path)
-        tree = (parsed or {}).get(path)
+        if path in self.seen or (MARKER not in data and b"setDescription" not in data):
+            return
+        self.seen.add(path)
         if tree is None:
             try:
                 tree = ast.parse(data)
             except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
-                continue  # the static pass reports the file
-        trees.labels += implementations(tree)
+                return  # the static pass reports the file
+        self.labels += implementations(tree)
         pending = []
         for found in read_compounds(tree, path):
             if isinstance(found, NeedsTrace):
                 pending.append(found)
             else:
-                trees.models.append((path, found))
+                self.models.append((path, found))
         if pending:
-            trees.traced[path] = (candidate, pending)
+            self.traced[path] = (candidate, pending)
+
+
+def _read(items: Iterable[tuple[Candidate, bytes]], trees: Trees | None = None) -> Trees:
+    trees = trees or Trees()
+    for candidate, data in items:
+        trees.add(candidate, data)
     return trees
 
 
@@ -78,7 +86,7 @@ BATCH = 32
 files is traced alone."""
 
 
-def _trace(trees: _Trees, pool: PoolConfig) -> None:
+def _trace(trees: Trees, pool: PoolConfig) -> None:
     """Trace every class the syntax could not read, in sandboxed children.
 
     The files go in batches, one child each (a fork and a cold start per batch instead of
@@ -105,7 +113,7 @@ def _trace(trees: _Trees, pool: PoolConfig) -> None:
         _record(trees, str(candidate.path), pending, found)
 
 
-def _record(trees: _Trees, path: str, pending: list[NeedsTrace],
+def _record(trees: Trees, path: str, pending: list[NeedsTrace],
             outcome: LoadOutcome) -> None:
     """The traced trees of one file (or why none could be read) into ``trees``."""
     needs = {n.implementation: n for n in pending}
@@ -158,15 +166,16 @@ def add_descriptions(index: SkillIndex, results: Iterable[tuple[Candidate, FileR
 def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
             ontology: OntologyIndex | None, pool: PoolConfig,
             library_items: Sequence[tuple[Candidate, bytes]] = (),
-            parsed: Mapping[str, ast.Module] | None = None) -> CompoundRun:
+            read: Trees | None = None) -> CompoundRun:
     """Read, trace and check every compound skill of ``items`` against ``index``.
 
     Compound skills of ``library_items`` join the index (a remap reaches into their trees)
-    but are not reported. ``parsed``: syntax trees the caller already has, by path.
+    but are not reported. ``read``: what the caller's own pass already read (its files are
+    not parsed again).
     """
     library = _read(library_items)
     _trace(library, pool)
-    trees = _read(items, parsed)
+    trees = _read(items, read)
     _trace(trees, pool)
     for label, description in [*library.labels, *trees.labels]:
         index.add_implementation(label, description)
@@ -181,7 +190,7 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
     return run
 
 
-def _described_type(model: Unanalysable, *trees: _Trees) -> str:
+def _described_type(model: Unanalysable, *trees: Trees) -> str:
     """The description an unreadable compound implements (its label's), for the index."""
     for found in trees:
         for label, description in found.labels:

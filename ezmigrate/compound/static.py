@@ -83,20 +83,20 @@ def implementations(tree: ast.Module) -> list[tuple[str, str | None]]:
 
 def _described(cls: ast.ClassDef) -> tuple[str | None, str]:
     """``self.setDescription(Desc(), label)`` in the class's ``createDescription``
-    (``self.__class__.__name__`` or anything computed counts as the class's name). The
-    body's own statements are looked at first: that is where nearly every call is."""
+    (``self.__class__.__name__`` or anything computed counts as the class's name). Only the
+    body's own statements are read: that is where SkiROS2 code calls it, and walking every
+    description's body for a call that is not there would cost more than the reading."""
     for member in cls.body:
         if isinstance(member, ast.FunctionDef) and member.name == "createDescription":
-            direct = [s.value for s in member.body if isinstance(s, ast.Expr)]
-            for nodes in (direct, ast.walk(member)):
-                for node in nodes:
-                    found = _set_description(node, cls.name)
-                    if found is not None:
-                        return found
+            for statement in member.body:
+                found = _set_description(statement.value, cls.name) \
+                    if isinstance(statement, ast.Expr) else None
+                if found is not None:
+                    return found
     return None, cls.name
 
 
-def _set_description(node: ast.AST, name: str) -> tuple[str | None, str] | None:
+def _set_description(node: ast.expr, name: str) -> tuple[str | None, str] | None:
     if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
             and node.func.attr == "setDescription" and node.args):
         return None
