@@ -92,7 +92,7 @@ def test_whole_runs_agree_with_the_codemod_path(tree: str,
                                                 monkeypatch: pytest.MonkeyPatch) -> None:
     """Cross-file bases included: a declined file brings its whole package along."""
     fast = _diagnostics([REPO / tree])
-    monkeypatch.setattr(check, "read_plain", lambda data, path: Declined())
+    monkeypatch.setattr(check, "read_plain", lambda data, path, tree=None: Declined())
     assert fast == _diagnostics([REPO / tree])
     assert fast[1] > 0
 
