@@ -5,7 +5,6 @@ byte-level quirks (CRLF, tabs, no final newline, latin-1) really present."""
 from __future__ import annotations
 
 import ast
-import importlib.util
 import io
 import json
 import os
@@ -18,6 +17,7 @@ from types import ModuleType
 
 import libcst
 import pytest
+from bench_generator import generator as load_generator
 from hypothesis import HealthCheck, given, settings
 
 try:
@@ -279,12 +279,7 @@ def test_strategy_covers_the_construct_table() -> None:
 
 @pytest.fixture(scope="module")
 def generator() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("generate_repo_under_test", GENERATOR)
-    assert spec and spec.loader
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # dataclasses look their module up while decorating
-    spec.loader.exec_module(module)
-    return module
+    return load_generator()
 
 
 def _tree(root: Path) -> dict[str, bytes]:

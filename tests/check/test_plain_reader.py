@@ -8,12 +8,11 @@ the corpora are every Python file under ``fixtures/`` and repositories written b
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 import textwrap
 from pathlib import Path
 
 import pytest
+from bench_generator import generator
 
 from ezmigrate import check
 from ezmigrate.check import _legacy, run_check
@@ -27,16 +26,6 @@ from ezskiros_runtime.ontology.index import bundled_ontology_path, load_index
 
 REPO = Path(__file__).resolve().parents[2]
 INDEX = load_index([bundled_ontology_path()])
-
-
-def _generator():
-    spec = importlib.util.spec_from_file_location("generate_repo_plain",
-                                                  REPO / "bench" / "generate_repo.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["generate_repo_plain"] = module  # dataclasses look their module up
-    spec.loader.exec_module(module)
-    return module
 
 
 def _reported(path: str, data: bytes, result: FileResult) -> list[tuple[object, ...]]:
@@ -74,7 +63,7 @@ def test_fixtures_read_the_same_both_ways() -> None:
                                                     (2, 0.3, 0.0)])
 def test_generated_repositories_read_the_same_both_ways(tmp_path: Path, seed: int,
                                                         messy: float, py2: float) -> None:
-    _generator().generate(tmp_path / "repo", 120, skill_share=1.0, seed=seed,
+    generator().generate(tmp_path / "repo", 120, skill_share=1.0, seed=seed,
                           messy_share=messy, py2_share=py2)
     accepted, considered = _compare_tree(tmp_path / "repo")
     assert considered >= 100

@@ -13,7 +13,6 @@
 
 from __future__ import annotations
 
-import importlib.util
 import os
 import subprocess
 import sys
@@ -21,6 +20,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from bench_generator import generator
 
 from ezmigrate import runner
 from ezmigrate.discover import Candidate, discover
@@ -31,22 +31,12 @@ from ezmigrate.runner import Migrated, migrate_all
 REPO = Path(__file__).resolve().parents[2]
 
 
-def _generator():
-    spec = importlib.util.spec_from_file_location("generate_repo",
-                                                  REPO / "bench" / "generate_repo.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["generate_repo"] = module  # dataclasses look their module up
-    spec.loader.exec_module(module)
-    return module
-
-
 @pytest.fixture(scope="module")
 def generated_with_manifest(tmp_path_factory) -> tuple[Path, set[str]]:
     """A generated repository (skill files, some messy; ordinary modules; prefilter traps)
     and the relative paths of its skill files."""
     out = tmp_path_factory.mktemp("repo") / "tree"
-    summary = _generator().generate(out, 400, 0.1, seed=5, messy_share=0.2)
+    summary = generator().generate(out, 400, 0.1, seed=5, messy_share=0.2)
     return out, {entry["path"] for entry in summary.manifest}
 
 
