@@ -26,6 +26,8 @@ UPSTREAM_PROCESSORS = frozenset({"NoProcessor", "Serial", "SerialStar", "Sequent
                                  "Selector", "SelectorStar", "ParallelFf", "ParallelFs",
                                  "NoFail"})
 _MAX_DEPTH = 16
+OBTAINED = {"static": "tree read statically", "traced": "tree traced by running expand"}
+"""How the tree a finding is about was obtained, as every finding says it."""
 
 
 def _did_you_mean(key: str, candidates: set[str]) -> str | None:
@@ -72,8 +74,10 @@ class _Checker:
 
     def add(self, kind: str, line: int, message: str, child: str = "",
             suggestion: str | None = None) -> None:
-        self.found.append(CompoundFinding(kind, line or self.model.expand_line, message,
-                                          self.model.implementation, child, suggestion))
+        how = OBTAINED[self.model.obtained]
+        self.found.append(CompoundFinding(kind, line or self.model.expand_line,
+                                          f"{message} ({how})", self.model.implementation,
+                                          child, suggestion))
 
     def run(self) -> list[CompoundFinding]:
         self._processor(self.model.processor, self.model.expand_line)

@@ -81,3 +81,84 @@ def test_the_clean_tasks_use_the_standard_library_and_stay_silent() -> None:
     found = _check(REPO / "lab_tasks" / "src" / "lab_tasks" / "tasks.py",
                    REPO / "lab_descriptions", "--select", "EZ3")
     assert [(d["line"], d["code"]) for d in found] == [(59, "EZ305")]
+
+
+def test_findings_say_how_the_tree_was_obtained() -> None:
+    found = {(Path(str(d["path"])).name, d["line"]): str(d["message"])
+             for d in _check(REPO, "--select", "EZ3")}
+    assert found[("mistakes.py", 55)].endswith("(tree read statically)")
+    assert found[("computed.py", 26)].endswith("(tree traced by running expand)")
+
+
+LIBRARY = '''\
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+from skiros2_skill.core.skill import SkillBase
+
+
+class Scan(SkillDescription):
+    def createDescription(self):
+        self.addParam("Area", Element("skiros:Location"), ParamTypes.Required)
+
+
+class Survey(SkillDescription):
+    def createDescription(self):
+        self.addParam("Zone", Element("skiros:Location"), ParamTypes.Required)
+
+
+class survey(SkillBase):
+    def createDescription(self):
+        self.setDescription(Survey(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill(self.skill("Scan", "", remap={"Area": "Zone"}))
+'''
+
+PROJECT = '''\
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+from skiros2_skill.core.skill import SkillBase
+
+
+class Patrol(SkillDescription):
+    def createDescription(self):
+        self.addParam("Route", Element("skiros:Location"), ParamTypes.Required)
+
+
+class patrol(SkillBase):
+    def createDescription(self):
+        self.setDescription(Patrol(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill(self.skill("Scan", "", remap={"Area": "Route"}, specify={"Aera": None}),
+              self.skill("Survey", "", remap={"Area": "Route"}))
+'''
+
+
+def test_skill_libraries_of_the_project_join_the_index(tmp_path: Path) -> None:
+    """``Scan`` and ``Survey`` live in a library folder: without it both children are
+    unknown; with ``[tool.ezmigrate] skill-libraries`` they resolve, the misspelt specify
+    key is found, and a remap key only the library's compound tree declares is info."""
+    (tmp_path / "lib").mkdir()
+    (tmp_path / "lib" / "library.py").write_text(LIBRARY)
+    project = tmp_path / "project"
+    project.mkdir()
+    (project / "patrol.py").write_text(PROJECT)
+    alone = {(d["line"], d["code"]) for d in _check(project, "--select", "EZ3")}
+    assert alone == {(17, "EZ301"), (18, "EZ301")}
+    (project / "pyproject.toml").write_text('[tool.ezmigrate]\nskill-libraries = ["../lib"]\n')
+    found = {(d["line"], d["code"]) for d in _check(project, "--select", "EZ3")}
+    assert found == {(17, "EZ307"), (18, "EZ305")}
+
+
+def test_no_compound_error_on_generated_repositories(tmp_path: Path) -> None:
+    from bench_generator import generator
+
+    generator().generate(tmp_path / "repo", 150, skill_share=0.6, seed=7, messy_share=0.3)
+    trees = sum(p.read_text(errors="replace").count("def expand(")
+                for p in (tmp_path / "repo").rglob("*.py"))
+    assert trees >= 20  # the generated repository has compound skills to check
+    found = _check(tmp_path / "repo", "--select", "EZ3")
+    assert [d for d in found if d["severity"] == "error"] == []
