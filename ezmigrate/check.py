@@ -24,7 +24,7 @@ from .lint.plain_reader import Declined, read_plain
 from .package import RUNTIME_MARKER, migrate_package
 from .prefilter import may_hold_descriptions
 from .results import FileResult
-from .verify.pool import PoolConfig, job_for, run_jobs
+from .verify.pool import PoolConfig, Standby, job_for, run_jobs
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -137,14 +137,28 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     outcome = CheckOutcome(files=len(candidates))
     if progress is not None:
         progress(f"checking {len(candidates)} files")
-    loadable: list[Candidate] = []
-    read: list[tuple[Candidate, bytes]] = []
-    results: list[tuple[Candidate, FileResult]] = []
     trees = None
+    standby: list[Standby] = []  # started by the static pass when a tree needs tracing
     if compounds:
         from .compound.analysis import Trees
 
-        trees = Trees()
+        trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, pool.workers)))
+    try:
+        return _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
+                    standby)
+    finally:
+        for workers in standby:
+            workers.close()
+
+
+def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyIndex | None,
+         pool: PoolConfig, progress: Callable[[str], None] | None,
+         skill_libraries: tuple[Path, ...], trees: Trees | None,
+         standby: list[Standby]) -> CheckOutcome:
+    """``run_check`` once its compound pass (``trees``) is set up."""
+    loadable: list[Candidate] = []
+    read: list[tuple[Candidate, bytes]] = []
+    results: list[tuple[Candidate, FileResult]] = []
     for candidate, data, result in read_statically(candidates, pool.workers, index,
                                                    trees.add if trees else None):
         path = str(candidate.path)
@@ -164,7 +178,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     if trees is not None:
         outcome.diagnostics += _compound(read, results, list(zip(loadable, outcomes,
                                                                  strict=True)),
-                                         index, pool, skill_libraries, outcome.sources, trees)
+                                         index, pool, skill_libraries, outcome.sources, trees,
+                                         standby[0] if standby else None)
     for candidate, loaded in zip(loadable, outcomes, strict=True):
         path = str(candidate.path)
         where = Positions(outcome.sources[path])
@@ -189,7 +204,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
               loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
               pool: PoolConfig, libraries: tuple[Path, ...],
-              sources: dict[str, str], trees: Trees) -> list[Diagnostic]:
+              sources: dict[str, str], trees: Trees,
+              standby: Standby | None = None) -> list[Diagnostic]:
     """The compound skills' findings (EZ3xx), against this run's and the libraries'
     descriptions."""
     if not any(b"expand" in data for _, data in read):
@@ -206,7 +222,7 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
         add_descriptions(skills, statics, [], "skill library")
     add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],
                      "repository")
-    run = analyse(read, skills, index, pool, library, trees)
+    run = analyse(read, skills, index, pool, library, trees, standby)
     found: dict[tuple[str, int, str, str], Diagnostic] = {}
     for path, finding in run.findings:  # a traced loop adds the same mistake once a turn
         where = Positions(sources.get(path, ""))

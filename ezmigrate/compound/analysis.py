@@ -10,7 +10,7 @@ ones statically, EzSkiROS ones loaded), the standard library's, and those of the
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -23,7 +23,7 @@ from ezskiros_runtime.model import SkillModel
 
 from ..discover import Candidate
 from ..results import FileResult
-from ..verify.pool import PoolConfig, job_for, run_jobs
+from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
 from ..verify.protocol import LoadOutcome
 from .static import NeedsTrace, implementations, read_compounds
 
@@ -51,6 +51,8 @@ class Trees:
     traced: dict[str, tuple[Candidate, list[NeedsTrace]]] = field(default_factory=dict)
     labels: list[tuple[str, str | None]] = field(default_factory=list)
     seen: set[str] = field(default_factory=set)
+    on_first_trace: Callable[[], None] | None = None
+    """Called when the first tree to trace turns up (``check`` starts a worker then)."""
 
     def add(self, candidate: Candidate, data: bytes, tree: ast.Module | None = None) -> None:
         """One file (``tree``: its syntax tree when the caller has parsed it already)."""
@@ -71,6 +73,8 @@ class Trees:
             else:
                 self.models.append((path, found))
         if pending:
+            if not self.traced and self.on_first_trace is not None:
+                self.on_first_trace()
             self.traced[path] = (candidate, pending)
 
 
@@ -86,7 +90,7 @@ BATCH = 32
 files is traced alone."""
 
 
-def _trace(trees: Trees, pool: PoolConfig) -> None:
+def _trace(trees: Trees, pool: PoolConfig, standby: Standby | None = None) -> None:
     """Trace every class the syntax could not read, in sandboxed children.
 
     The files go in batches, one child each (a fork and a cold start per batch instead of
@@ -102,7 +106,7 @@ def _trace(trees: Trees, pool: PoolConfig) -> None:
     batches = [jobs[i:i + size] for i in range(0, len(jobs), size)]
     outcomes: list[LoadOutcome | None] = []
     for batch, first in zip(batches, run_jobs(
-            [replace(b[0], more=b[1:]) for b in batches], pool), strict=True):
+            [replace(b[0], more=b[1:]) for b in batches], pool, standby=standby), strict=True):
         done = [first, *first.more]
         outcomes += done if len(done) == len(batch) else [None] * len(batch)
     again = [i for i, outcome in enumerate(outcomes) if outcome is None]
@@ -166,17 +170,17 @@ def add_descriptions(index: SkillIndex, results: Iterable[tuple[Candidate, FileR
 def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
             ontology: OntologyIndex | None, pool: PoolConfig,
             library_items: Sequence[tuple[Candidate, bytes]] = (),
-            read: Trees | None = None) -> CompoundRun:
+            read: Trees | None = None, standby: Standby | None = None) -> CompoundRun:
     """Read, trace and check every compound skill of ``items`` against ``index``.
 
     Compound skills of ``library_items`` join the index (a remap reaches into their trees)
     but are not reported. ``read``: what the caller's own pass already read (its files are
-    not parsed again).
+    not parsed again); ``standby``: workers already starting for the tracing.
     """
     library = _read(library_items)
     _trace(library, pool)
     trees = _read(items, read)
-    _trace(trees, pool)
+    _trace(trees, pool, standby)
     for label, description in [*library.labels, *trees.labels]:
         index.add_implementation(label, description)
     for _, model in [*library.models, *trees.models]:
