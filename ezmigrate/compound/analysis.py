@@ -25,12 +25,14 @@ from ..discover import Candidate
 from ..results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
 from ..verify.protocol import LoadOutcome
-from .static import NeedsTrace, implementations, read_compounds
+from .static import NeedsTrace, class_bases, implementations, read_compounds
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
 MARKER = b"expand"
+READ_WHEN = (MARKER, b"setDescription", b"createDescription")
+"""A file is read for compound skills, implementations and description bases if it has any."""
 
 
 @dataclass
@@ -50,6 +52,8 @@ class Trees:
     models: list[tuple[str, CompoundModel | Unanalysable]] = field(default_factory=list)
     traced: dict[str, tuple[Candidate, list[NeedsTrace]]] = field(default_factory=dict)
     labels: list[tuple[str, str | None]] = field(default_factory=list)
+    bases: list[tuple[str, str]] = field(default_factory=list)
+    """``(class, base)`` for every top-level class deriving from a named class."""
     seen: set[str] = field(default_factory=set)
     on_first_trace: Callable[[], None] | None = None
     """Called when the first tree to trace turns up (``check`` starts a worker then)."""
@@ -57,7 +61,7 @@ class Trees:
     def add(self, candidate: Candidate, data: bytes, tree: ast.Module | None = None) -> None:
         """One file (``tree``: its syntax tree when the caller has parsed it already)."""
         path = str(candidate.path)
-        if path in self.seen or (MARKER not in data and b"setDescription" not in data):
+        if path in self.seen or not any(m in data for m in READ_WHEN):
             return
         self.seen.add(path)
         if tree is None:
@@ -66,6 +70,7 @@ class Trees:
             except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
                 return  # the static pass reports the file
         self.labels += implementations(tree)
+        self.bases += class_bases(tree)
         pending = []
         for found in read_compounds(tree, path):
             if isinstance(found, NeedsTrace):
@@ -183,6 +188,8 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
     _trace(trees, pool, standby)
     for label, description in [*library.labels, *trees.labels]:
         index.add_implementation(label, description)
+    index.bases |= {base for cls, base in [*library.bases, *trees.bases]
+                    if cls in index.descriptions and base in index.descriptions}
     for _, model in [*library.models, *trees.models]:
         if isinstance(model, CompoundModel):
             index.add_compound(model)

@@ -69,6 +69,19 @@ def read_compounds(tree: ast.Module, path: str) -> list[CompoundModel | NeedsTra
     return found
 
 
+def class_bases(tree: ast.Module) -> list[tuple[str, str]]:
+    """``(class, base)`` for the module's top-level classes, bases by their last name
+    (``Navigate`` for ``base.Navigate``): which descriptions are not leaves."""
+    found = []
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            for base in node.bases:
+                name = ast_dotted_name(base)
+                if name is not None:
+                    found.append((node.name, name.rpartition(".")[2]))
+    return found
+
+
 def implementations(tree: ast.Module) -> list[tuple[str, str | None]]:
     """``(label, description)`` of every implementation class (primitive or compound) of a
     module: what ``self.skill("Type", "label")`` may name."""

@@ -103,13 +103,15 @@ class _Checker:
     def _skill(self, node: SkillNode, others: list[Node | CallProblem]) -> None:
         matches, literal = self.index.resolve(node.type)
         if not matches:
-            close = difflib.get_close_matches(node.type.removeprefix("skiros:"),
-                                              list(self.index.names()), 1, 0.6)
+            name = node.type.removeprefix("skiros:")
+            close = difflib.get_close_matches(name, list(self.index.names()), 1, 0.6)
             hint = f"Did you mean {close[0]!r}?" if close else None
+            why = (f" ({name} is a base other descriptions derive from; the skill manager "
+                   "loads only leaf descriptions)" if name in self.index.bases else "")
             self.add("unknown-child-type", node.line,
                      f"child type {node.type!r} matches no description the skill manager "
                      "could load (the repository, skiros2_std_lib, [tool.ezmigrate] "
-                     "skill-libraries): the compound skill fails when it runs",
+                     f"skill-libraries){why}: the compound skill fails when it runs",
                      node.type, hint)
             return
         if not literal:

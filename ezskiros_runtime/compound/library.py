@@ -5,7 +5,7 @@ A compound skill names its children by description type and optional implementat
 load: the repository's own descriptions, the standard library's (bundled here as facts,
 the list in the shared doc), and further libraries a project names
 (``[tool.ezmigrate] skill-libraries``). Types resolve as SkiROS2 resolves them:
-``re.match("^" + type + "$", name)`` over description class names.
+``re.match("^" + type + "$", name)`` over leaf description class names.
 """
 
 from __future__ import annotations
@@ -75,6 +75,8 @@ class SkillIndex:
     implementations: dict[str, str] = field(default_factory=dict)
     compounds: dict[str, list[CompoundModel]] = field(default_factory=dict)
     unknown_compounds: set[str] = field(default_factory=set)
+    bases: set[str] = field(default_factory=set)
+    """Descriptions other descriptions derive from: the skill manager loads only leaves."""
 
     @classmethod
     def with_standard_library(cls) -> SkillIndex:
@@ -100,13 +102,15 @@ class SkillIndex:
         anchored at both ends; a type that is no valid expression matches nothing.
         """
         name = stype.removeprefix("skiros:")
-        if name in self.descriptions:
+        if name in self.descriptions and name not in self.bases:
             return [self.descriptions[name]], True
         try:
             pattern = re.compile("^" + name + "$")
         except re.error:
             return [], False
-        return [d for n, d in sorted(self.descriptions.items()) if pattern.match(n)], False
+        return [d for n, d in sorted(self.descriptions.items())
+                if n not in self.bases and pattern.match(n)], False
 
     def names(self) -> Iterable[str]:
-        return self.descriptions.keys()
+        """The loadable (leaf) description names."""
+        return [n for n in self.descriptions if n not in self.bases]

@@ -192,3 +192,21 @@ def test_prefix_typo_replaces_the_vaguer_findings_of_the_same_term(tmp_path: Pat
 
 def test_verification_failure_has_its_code():
     assert code_for("failed") == "EZ903" and code_for("not-equivalent") == "EZ903"
+
+
+BASED = tree(f'self.skill("NAME", "", {TARGET})') + """
+
+class BigBin(Bin):
+    def createDescription(self):
+        Bin.createDescription(self)
+"""
+
+
+def test_a_child_type_naming_a_base_description_is_unknown(tmp_path: Path):
+    """The skill manager loads leaf descriptions only: once ``BigBin`` derives from
+    ``Bin``, ``"Bin"`` names nothing it could load, and the message says why."""
+    found = lint(tmp_path / "base", BASED.replace("NAME", "Bin"))
+    [hit] = [d for d in found if d.code == "EZ301"]
+    assert "base other descriptions derive from" in hit.message
+    leaf = lint(tmp_path / "leaf", BASED.replace("NAME", "BigBin"))
+    assert "EZ301" not in {d.code for d in leaf}, "\n".join(map(str, leaf))

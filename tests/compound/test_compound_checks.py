@@ -109,6 +109,17 @@ def test_an_unanalysable_tree_is_reported_not_clean() -> None:
     assert (code_for(finding.kind), finding.line) == ("EZ313", 7)
 
 
+def test_a_base_description_resolves_to_nothing_and_says_why() -> None:
+    index = _index()
+    index.add_description(DescriptionInfo("NavigateFast", {"Target": "skiros:Location"}))
+    index.bases.add("Navigate")
+    assert index.resolve("Navigate") == ([], False)
+    assert [d.name for d in index.resolve("Navigate.*")[0]] == ["NavigateFast"]
+    model = CompoundModel("kit", "Kit", "kit", "Sequential", (SkillNode("Navigate"),))
+    [finding] = check_model(model, index, ONTOLOGY)
+    assert code_for(finding.kind) == "EZ301" and "leaf descriptions" in finding.message
+
+
 def test_the_root_processor_is_checked_too() -> None:
     assert _codes(SkillNode("Pick"), processor="Loop") == ["EZ310"]
 
