@@ -33,14 +33,18 @@ class CompoundSkillError(TypeError):
 
 def index_of(descriptions: Iterable[type], *, standard_library: bool = True) -> SkillIndex:
     """A skill index of description classes (legacy or EzSkiROS), plus the standard
-    library's unless ``standard_library=False``."""
+    library's unless ``standard_library=False``. A class another one of them derives from
+    is a base: the skill manager loads leaves only."""
     from ..legacy.extract import model_of
 
     index = SkillIndex.with_standard_library() if standard_library else SkillIndex()
-    for cls in descriptions:
+    classes = list(descriptions)
+    for cls in classes:
         params = model_of(cls()).params
         index.add_description(DescriptionInfo(cls.__name__,
                                               {p.key: p.element_type for p in params}))
+    index.bases |= {base.__name__ for base in classes for cls in classes
+                    if cls is not base and issubclass(cls, base)}
     return index
 
 

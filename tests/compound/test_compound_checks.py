@@ -149,3 +149,13 @@ def test_check_compound_traces_and_returns_findings_as_data() -> None:
         ("EZ307", "Wait", "Did you mean 'Duration'?")]
     with pytest.raises(CompoundSkillError, match="EZ307 task"):
         check_compound(task, index, strict=True)
+
+
+class SlowTask(Task):
+    """A leaf below ``Task``: from here on ``"Task"`` names nothing loadable."""
+
+
+def test_index_of_knows_which_classes_are_bases() -> None:
+    assert index_of([Task]).resolve("Task")[1]
+    index = index_of([Task, SlowTask], standard_library=False)
+    assert index.bases == {"Task"} and list(index.names()) == ["SlowTask"]
