@@ -20,6 +20,7 @@ import sys
 from dataclasses import dataclass
 from typing import Any
 
+from ..legacy.skill import SkillWrapper
 from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
 
 ARGUMENTS = ("stype", "slabel", "remap", "specify", "preconditions")
@@ -70,22 +71,13 @@ class _Params:
         return _Param(str(key))
 
 
-class Recorded:
-    """A node while ``expand`` builds it: the call's arguments, then its children."""
+class Recorded(SkillWrapper):
+    """A node while ``expand`` builds it: the call's arguments, then its children, and the
+    line of the call (the backend's wrapper records the rest)."""
 
     def __init__(self, args: tuple[Any, ...], kwargs: dict[str, Any], line: int) -> None:
-        self.args = args
-        self.kwargs = kwargs
+        super().__init__(*args, **kwargs)
         self.line = line
-        self.children: list[Any] = []
-        self.processor: Any = None
-
-    def __call__(self, *children: Any) -> Recorded:
-        self.children.extend(children)
-        return self
-
-    def setProcessor(self, processor: Any) -> None:
-        self.processor = processor
 
 
 def _record(_self: Any, *args: Any, **kwargs: Any) -> Recorded:
