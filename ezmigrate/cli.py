@@ -23,6 +23,7 @@ from . import __version__, interrupt
 from .config import ConfigError, load_project_config
 from .diffs import colour, unified_diff
 from .discover import excluded_under
+from .options import CommandLine, Options
 from .report import MarkdownOptions, Summary, json_report, markdown_report, relaxed
 from .results import FileResult
 
@@ -97,22 +98,25 @@ def _thread_failed(args: Any, debug: bool) -> None:
         click.echo("ezmigrate: rerun with --debug for details", err=True)
 
 
-def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path] = (),
-                exclude: Sequence[str] = ()) -> tuple[Any, tuple[str, ...], str]:
+def _options(start: Path, cli: CommandLine) -> Options:
+    """The settings a command runs with: ``cli`` over the project ``start`` belongs to."""
+    return Options.resolve(cli, load_project_config(start))
+
+
+def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
+                options: Options) -> tuple[Any, tuple[str, ...], str]:
     """The ontology index by the configuration rules, the files it came from, and a line
     saying which files and why.
 
     Says once on stderr which files are used and why (the report header says it again):
     with nothing configured, the owl/ folders of the repository of ``roots`` count (less
-    what ``exclude`` or the project's excludes name)."""
+    what ``options.exclude`` names, relative to the project)."""
     from ezskiros_runtime.ontology.config import resolve_ontology_paths
     from ezskiros_runtime.ontology.errors import OntologyError
     from ezskiros_runtime.ontology.index import load_index
 
     try:
-        project = load_project_config(start)
-        base = project.source.parent if project.source else Path.cwd()
-        skip = excluded_under(base, [*exclude, *project.exclude])
+        skip = excluded_under(options.project or Path.cwd(), options.exclude)
         source = resolve_ontology_paths(list(ontology) or None, start=start, roots=roots,
                                         skip=skip)
         index = load_index(list(source.paths) or None)
@@ -121,21 +125,6 @@ def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path] =
     except OntologyError as error:
         click.echo(f"ezmigrate: error: {error}", err=True)
         sys.exit(EXIT_ERROR)
-
-
-def _interpreter(given: str | None, configured: str | None) -> str | None:
-    """``--python`` (else ``[tool.ezmigrate] python``) as a path to run; a name that does
-    not run is a usage error, not a silent fallback to this interpreter."""
-    import shutil
-
-    value = given or configured
-    if value is None:
-        return None
-    found = shutil.which(value)
-    if found is None:
-        raise click.BadParameter(f"{value}: no such interpreter (a path, or a name on PATH)",
-                                 param_hint="'--python'")
-    return found
 
 
 def _report_path(path: Path | None) -> Path | None:
@@ -206,13 +195,16 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     Temporary files (.NAME.XXXXXXXX.ezmigrate) that a killed run left beside PATHS are
     listed; a run that writes removes them (they never hold the only copy of anything).
     """
-    if [str(p) for p in paths] == ["-"]:
+    reads_stdin = [str(p) for p in paths] == ["-"]
+    start = Path.cwd() if reads_stdin else paths[0]  # stdin belongs to the current project
+    options = _options(start, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
+                                          python=python))
+    if reads_stdin:
         from .stdin import rewrite_stdin
 
-        index, ontology_files, used = _load_index(ontology, Path.cwd(), [Path.cwd()])
-        data, result = rewrite_stdin(index, ontology_files, verify=verify,
-                                     timeout=timeout or 20.0,
-                                     python=_interpreter(python, None))
+        index, ontology_files, used = _load_index(ontology, start, [start], options)
+        data, result = rewrite_stdin(index, ontology_files, options, verify=verify,
+                                     ignore_order=ignore_order, ignore_labels=ignore_labels)
         _print_result("-", "-", data, result, dry_run, check, color, debug)
         if not (dry_run or check):  # whatever happened, stdout gets a whole file
             new = result.new_source
@@ -221,21 +213,15 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
                  MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used))
     from .session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
 
-    start = paths[0]
-    project = load_project_config(start)
-    index, ontology_files, used = _load_index(ontology, start, paths, exclude)
-    options = RewriteOptions(
-        paths=list(paths), dry_run=dry_run, check=check,
-        exclude=tuple(exclude) + project.exclude, output_dir=output_dir, verify=verify,
-        timeout=timeout or project.timeout or 20.0, ignore_order=ignore_order,
-        python=_interpreter(python, project.python),
-        ignore_labels=ignore_labels, ontology=ontology_files,
-        project=project.source.parent if project.source else None)
-    if jobs or project.jobs:
-        options.jobs = jobs or project.jobs or 1
+    index, ontology_files, used = _load_index(ontology, start, paths, options)
+    request = RewriteOptions(
+        paths=list(paths), dry_run=dry_run, check=check, exclude=options.exclude,
+        jobs=options.jobs, output_dir=output_dir, verify=verify, timeout=options.timeout,
+        python=options.python, ignore_order=ignore_order, ignore_labels=ignore_labels,
+        ontology=ontology_files, project=options.project)
     from .verify.rewrite import verify_migrated
 
-    outcome = run_rewrite(options, index, verifier=verify_migrated)
+    outcome = run_rewrite(request, index, verifier=verify_migrated)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
     for item in outcome.migrated:
@@ -251,8 +237,8 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         compounds = report_section(
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
             PoolConfig(workers=options.jobs, timeout=options.timeout,
-                       ontology=options.ontology, python=options.python))
-    _finish([m.result for m in outcome.migrated], report, options.writes, check,
+                       ontology=ontology_files, python=options.python))
+    _finish([m.result for m in outcome.migrated], report, request.writes, check,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
                                              compounds=compounds))
 
@@ -310,18 +296,17 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
            exclude: tuple[str, ...],
            ignore_order: bool, ignore_labels: bool, debug: bool) -> None:
     """Prove AFTER means what BEFORE meant (two files, or two folders by relative path)."""
-    from .runner import default_jobs
     from .verify.command import PathsMismatch, VerifyOptions, run_verify
     from .verify.pool import PoolConfig
 
-    project = load_project_config(before)
-    _, ontology_files, used = _load_index(ontology, before, [before], exclude)
-    pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
-                      timeout=timeout or project.timeout or 20.0, ontology=ontology_files,
-                      python=_interpreter(python, project.python))
+    options = _options(before, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
+                                           python=python))
+    _, ontology_files, used = _load_index(ontology, before, [before], options)
+    pool = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=ontology_files,
+                      python=options.python)
     try:
         results, unloadable = run_verify(VerifyOptions(
-            before, after, pool, ignore_order, ignore_labels, tuple(exclude) + project.exclude))
+            before, after, pool, ignore_order, ignore_labels, options.exclude))
     except PathsMismatch as error:
         raise click.UsageError(str(error)) from None
     for result in results:
@@ -386,31 +371,26 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     from .lint.select import Selection, SelectorError, apply, parse_selectors
     from .output_formats import FORMATS
     from .output_formats import statistics as count
-    from .runner import default_jobs
     from .verify.pool import PoolConfig
 
-    project = load_project_config(paths[0])
-    try:  # as ruff: a --select on the command line replaces the configuration's selection
-        where = str(project.source or "[tool.ezmigrate]")
-        configured = not select
+    options = _options(paths[0], CommandLine(
+        exclude=exclude, jobs=jobs, timeout=timeout, python=python, select=select or None,
+        ignore=ignore, extend_select=extend_select))
+    try:
         selection = Selection(
-            select=parse_selectors(select, "--select") if select else (
-                parse_selectors(project.select, where) if project.select is not None else None),
-            ignore=parse_selectors((*(project.ignore if configured else ()), *ignore),
-                                   "--ignore"),
-            extend_select=parse_selectors(
-                (*(project.extend_select if configured else ()), *extend_select),
-                "--extend-select"))
+            select=None if options.select is None else parse_selectors(options.select,
+                                                                       options.select_from),
+            ignore=parse_selectors(options.ignore, "--ignore"),
+            extend_select=parse_selectors(options.extend_select, "--extend-select"))
     except SelectorError as error:
         raise click.UsageError(str(error)) from None
-    index, ontology_files, _ = _load_index(ontology, paths[0], paths, exclude)
-    pool = PoolConfig(workers=jobs or project.jobs or default_jobs(),
-                      timeout=timeout or project.timeout or 20.0, ontology=ontology_files,
-                      python=_interpreter(python, project.python))
+    index, ontology_files, _ = _load_index(ontology, paths[0], paths, options)
+    pool = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=ontology_files,
+                      python=options.python)
     progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
         if sys.stderr.isatty() and not quiet else None
-    outcome = run_check(list(paths), index, pool, tuple(exclude) + project.exclude, progress,
-                        project.skill_libraries,
+    outcome = run_check(list(paths), index, pool, options.exclude, progress,
+                        options.skill_libraries,
                         compounds=any(c.startswith("EZ3") for c in selection.codes()))
     found = apply(outcome.diagnostics, outcome.sources, selection)
     shown = [d for d in found if d.severity == "error"] if quiet else found

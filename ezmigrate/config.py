@@ -5,20 +5,24 @@ interpreter that loads files when verifying, relative to the project when it is 
 ``select``, ``ignore`` and ``extend-select`` (finding codes for ``check``),
 ``skill-libraries`` (folders of skill libraries a compound skill may use, relative to the
 project), and ``ontology`` (read by ``ezskiros_runtime.ontology.config``). Command-line
-options win over these.
+options win over these (``ezmigrate.options`` merges them).
+
+The file is found and read by ``ezskiros_runtime.pyproject``, the one reader the runtime's
+ontology setting uses too, so both always take the same file and fail on it alike: no
+``pyproject.toml`` means no configuration, while one that is found but unusable (not valid
+TOML, unreadable, ``[tool.ezmigrate]`` not a table) is a ``ConfigError``, never silently
+"no configuration". This module only checks the values of the keys it owns.
 """
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
+from ezskiros_runtime.pyproject import PyprojectError, find_pyproject, find_tool_table
+
+__all__ = ["ConfigError", "ProjectConfig", "find_pyproject", "load_project_config"]
 
 
 @dataclass(frozen=True)
@@ -36,29 +40,23 @@ class ProjectConfig:
     skill_libraries: tuple[Path, ...] = ()
 
 
-def find_pyproject(start: Path) -> Path | None:
-    """The nearest ``pyproject.toml`` at or above ``start``."""
-    folder = start.resolve()
-    if folder.is_file():
-        folder = folder.parent
-    for candidate in (folder, *folder.parents):
-        if (candidate / "pyproject.toml").is_file():
-            return candidate / "pyproject.toml"
-    return None
-
-
 def load_project_config(start: Path) -> ProjectConfig:
-    """Read ``[tool.ezmigrate]``; a missing or unreadable file means no configuration."""
-    path = find_pyproject(start)
-    if path is None:
-        return ProjectConfig()
+    """The project's ``[tool.ezmigrate]`` for a run from ``start``, its values checked.
+
+    No ``pyproject.toml`` at or above ``start`` means no configuration; an unusable one, or
+    a value the tool cannot use, is a ``ConfigError`` naming the file."""
     try:
-        table: dict[str, Any] = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError):
+        found = find_tool_table(start)
+    except PyprojectError as error:
+        raise ConfigError(str(error)) from error
+    if found is None:
         return ProjectConfig()
-    section = table.get("tool", {}).get("ezmigrate", {})
-    if not isinstance(section, dict):
-        return ProjectConfig()
+    path, section = found
+    return _project_config(path, section)
+
+
+def _project_config(path: Path, section: dict[str, Any]) -> ProjectConfig:
+    """The checked values of ``section`` (``[tool.ezmigrate]`` of ``path``)."""
     exclude = section.get("exclude", [])
     if not (isinstance(exclude, list) and all(isinstance(e, str) for e in exclude)):
         raise ConfigError(f"{path}: [tool.ezmigrate] exclude must be a list of globs, "
@@ -102,4 +100,5 @@ def _codes(section: dict[str, Any], key: str, path: Path) -> tuple[str, ...] | N
 
 
 class ConfigError(ValueError):
-    """A ``[tool.ezmigrate]`` value the tool cannot use: a usage error (exit 2), not a guess."""
+    """A setting the tool cannot use (an unusable ``pyproject.toml``, a ``[tool.ezmigrate]``
+    value, an interpreter that does not exist): a usage error (exit 2), not a guess."""

@@ -6,28 +6,34 @@ Precedence, first match wins:
 3. `[tool.ezmigrate] ontology = [...]` in the nearest pyproject.toml walking up from
    `start`; paths relative to that file's folder (so the setting means the same from any
    subfolder). The nearest pyproject.toml is the project, even without our table: the
-   other `[tool.ezmigrate]` settings (ezmigrate.config) are read from the same file;
+   file is found and read by `ezskiros_runtime.pyproject`, the same reader the other
+   `[tool.ezmigrate]` settings (ezmigrate.config) go through;
 4. the vocabulary bundled with the package, plus, when the caller names the paths it works
    on (`roots`), every ontology file under the `owl/` folders of their repository
    (`discovery`: what the SkiROS2 world model would load from the skill package).
 
 A configured path that does not exist is an `OntologyConfigError` that says where the path
 came from: silently falling back to another ontology would make every check misleading.
+For the same reason a pyproject.toml that is found but unusable (not valid TOML,
+unreadable, `[tool.ezmigrate]` not a table) is an `OntologyConfigError` too, by the rule of
+`ezskiros_runtime.pyproject`, never "nothing configured".
 """
 
 from __future__ import annotations
 
 import os
-import sys
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from ..pyproject import TOOL_TABLE, PyprojectError, find_tool_table
 from .errors import OntologyConfigError
 
+__all__ = ["ENV_VAR", "TOOL_TABLE", "OntologySource", "find_tool_config",
+           "resolve_ontology_paths"]
+
 ENV_VAR = "EZSKIROS_ONTOLOGY"
-TOOL_TABLE = "ezmigrate"
 
 
 @dataclass(frozen=True)
@@ -126,34 +132,13 @@ def find_tool_config(start: Path) -> tuple[Path, dict[str, Any]] | None:
     """The nearest pyproject.toml at or above `start`, and its [tool.ezmigrate] table.
 
     The table is empty when the file has none; None when there is no pyproject.toml at all.
+    The one reader (`ezskiros_runtime.pyproject`) does the work; an unusable file is an
+    `OntologyConfigError` here, the error every caller of this module already handles.
     """
-    here = Path(start).expanduser()
-    here = here if here.is_absolute() else Path.cwd() / here
-    folder = here if here.is_dir() else here.parent
-    for candidate_dir in (folder, *folder.parents):
-        candidate = candidate_dir / "pyproject.toml"
-        if not candidate.is_file():
-            continue
-        tool = _read_toml(candidate).get("tool", {})
-        table = tool.get(TOOL_TABLE, {}) if isinstance(tool, dict) else {}
-        if not isinstance(table, dict):
-            raise OntologyConfigError(f"{candidate}: [tool.{TOOL_TABLE}] must be a table")
-        return candidate, table
-    return None
-
-
-def _read_toml(path: Path) -> dict[str, Any]:
-    if sys.version_info >= (3, 11):
-        import tomllib
-    else:  # pragma: no cover - exercised on Python 3.10 only
-        import tomli as tomllib
     try:
-        with path.open("rb") as stream:
-            return tomllib.load(stream)
-    except OSError as error:
-        raise OntologyConfigError(f"{path}: cannot read: {error.strerror or error}") from error
-    except tomllib.TOMLDecodeError as error:
-        raise OntologyConfigError(f"{path}: invalid TOML: {error}") from error
+        return find_tool_table(start)
+    except PyprojectError as error:
+        raise OntologyConfigError(str(error)) from error
 
 
 def _path_list(value: object, pyproject: Path) -> list[Path]:
