@@ -12,6 +12,7 @@ from __future__ import annotations
 import ast
 import re
 import traceback
+from collections import Counter
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -22,7 +23,8 @@ from ezskiros_runtime.compare import compare
 from ezskiros_runtime.model import SkillModel
 
 from .core.classes import DescriptionClass, description_classes
-from .core.context import ExtractContext, module_constants, positions_of
+from .core.context import ExtractContext, StatementLines, module_constants, positions_of
+from .core.cst_facts import facts_of
 from .core.function import build_description, emitted_params
 from .core.imports import (
     ONTOLOGY,
@@ -50,6 +52,7 @@ from .core.reader import (
 )
 from .core.registry import load_rules
 from .core.replay import replay
+from .core.syntax_facts import ClassFacts, FunctionFacts, SyntaxFacts
 from .core.writer import DSL_NAMES, EmitContext
 from .findings import skill_findings
 from .lint.facts import static_description
@@ -58,7 +61,6 @@ from .results import FileResult, Finding, SkillResult
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
-PLACEHOLDER = "__ezmigrate_skill_description__"
 DEFAULT_PREFIXES = ("skiros", "sumo", "cora", "corax", "rparts")
 
 
@@ -95,6 +97,8 @@ class _Plan:
     operations: list[Operation] = field(default_factory=list)
     new_function: cst.FunctionDef | None = None
     old_function: cst.FunctionDef | None = None
+    create: FunctionFacts | None = None
+    """What ``SyntaxFacts`` knows of ``old_function`` (the names its replacement removes)."""
     runtime: set[str] = field(default_factory=set)
     prefixes: set[str] = field(default_factory=set)
 
@@ -130,69 +134,100 @@ def migrate(source: bytes | str, settings: Settings | None = None,
 def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
                     result: FileResult) -> FileResult:
     """``migrate`` once the source parsed."""
-    python2 = _python2_except(module, source)
-    if python2 is not None:
-        line, column = python2
-        result.error = (f"cannot parse: Python 2 syntax `except X, e:` (line {line}, column "
-                        f"{column}); port the file to Python 3 (`except X as e:`) first")
-        result.error_line = line
+    facts = _syntax_facts(module, source, result)
+    if facts is None:
         return result
-    names = LegacyNames.of_module(module)
+    names = facts.legacy
     result.foreign_bases = foreign_bases(module, names)
-    planned = _plan_module(module, names, settings)
+    planned = _plan_module(module, facts, settings)
     if planned is None:
         return result
-    module, plans, _, aliases = planned
-    runtime = {n for p in plans if p.result.status == "converted" for n in p.runtime}
-    prefixes = {n for p in plans if p.result.status == "converted" for n in p.prefixes}
+    plans, _, aliases = planned
+    converted = [p for p in plans if p.result.status == "converted"]
     result.skills = [p.result for p in plans]
     result.exports = [p.cls.name for p in plans if p.result.status in ("converted", "unchanged")]
-    if not any(p.result.status == "converted" for p in plans):
+    if not converted:
         return result
-    used_before = used_names(module)
-    new_module = _rewrite(module, plans)
-    base_name = "EzSkillDescription" if _legacy_still_used(new_module, names,
-                                                           settings.exported) else \
-        "SkillDescription"
-    runtime_pairs = {(n, aliases.get(n, n)) for n in runtime}
-    if any(p.result.status == "converted" and p.cls.base is None for p in plans):
+    used = _used_after(facts, converted)
+    legacy = names.local_names_for("SkillDescription")
+    still_used = bool(legacy & (used | settings.exported)) or bool(legacy and "*" in
+                                                                   settings.exported)
+    base_name = "EzSkillDescription" if still_used else "SkillDescription"
+    runtime_pairs = {(n, aliases.get(n, n)) for p in converted for n in p.runtime}
+    if any(p.cls.base is None for p in converted):
         runtime_pairs.add(("SkillDescription", base_name))
-    new_module = update_imports(new_module, runtime_pairs,
-                                {(p, aliases.get(p, p)) for p in prefixes}, settings.exported,
-                                used_before=used_before)
-    new_module = new_module.visit(_Rename(PLACEHOLDER, base_name))
-    try:
-        cst.parse_module(new_module.code)
-    except cst.ParserSyntaxError as error:  # a bug of ours: never write such a file
-        result.error = f"internal error: migrated code does not parse ({error.message})"
+    new_module = update_imports(_rewrite(module, converted, base_name), runtime_pairs,
+                                {(n, aliases.get(n, n)) for p in converted for n in p.prefixes},
+                                settings.exported, used=used, used_before=set(facts.names))
+    code = new_module.code
+    try:  # the parser that read the original reads the result
+        ast.parse(code) if facts.python_parses else cst.parse_module(code)
+    except (SyntaxError, ValueError, cst.ParserSyntaxError) as error:  # a bug of ours
+        result.error = f"internal error: migrated code does not parse ({error})"
         for skill in result.skills:
             if skill.status == "converted":
                 skill.status, skill.reason = "failed", result.error
         return result
-    result.new_source = new_module.bytes if isinstance(source, bytes) else new_module.code
+    result.new_source = code.encode(new_module.encoding) if isinstance(source, bytes) else code
     return result
 
 
-def _plan_module(module: cst.Module, names: LegacyNames, settings: Settings) -> tuple[
-        cst.Module, list[_Plan], dict[str, list[Operation]], dict[str, str]] | None:
+def _syntax_facts(module: cst.Module, source: bytes | str,
+                  result: FileResult) -> SyntaxFacts | None:
+    """The module's facts, from ``ast`` unless Python's own parser refuses the file;
+    ``None`` (with ``result.error`` set) for Python 2's ``except X, e:``, which libcst
+    reads as Python 3.14's ``except A, B:``."""
+    try:
+        return SyntaxFacts.of(ast.parse(source))
+    except (SyntaxError, ValueError, MemoryError):
+        python2 = _python2_except(module, source)
+        if python2 is None:  # syntax newer than this Python: libcst reads it all the same
+            return facts_of(module)
+        line, column = python2
+        result.error = (f"cannot parse: Python 2 syntax `except X, e:` (line {line}, column "
+                        f"{column}); port the file to Python 3 (`except X as e:`) first")
+        result.error_line = line
+        return None
+
+
+def _used_after(facts: SyntaxFacts, converted: list[_Plan]) -> set[str]:
+    """The names the module uses once the converted classes are rewritten: the original's,
+    less those of the replaced methods and bases, plus those of the new methods."""
+    removed: Counter[str] = Counter()
+    for plan in converted:
+        if plan.new_function is not None and plan.create is not None:
+            removed += plan.create.names
+        if plan.cls.base is None:
+            removed.update((dotted_name(plan.cls.base_arg.value) or "").split("."))
+    used = set(facts.names - removed)
+    for plan in converted:
+        if plan.new_function is not None:
+            used |= used_names(plan.new_function)
+    return used
+
+
+def _plan_module(module: cst.Module, facts: SyntaxFacts, settings: Settings) -> tuple[
+        list[_Plan], dict[str, list[Operation]], dict[str, str]] | None:
     """Plan every description class of the module, bases before children."""
+    names = facts.legacy
     classes = description_classes(module, names, settings.external.keys(),
                                   settings.migrated_bases, settings.unresolved_bases)
     if not classes:
         return None
-    module, positions = positions_of(module)  # same tree: the class nodes stay valid
+    cst_classes = [stmt for stmt in module.body if isinstance(stmt, cst.ClassDef)]
+    class_facts = dict(zip(map(id, cst_classes), facts.classes, strict=True))
     aliases = _aliases(module, settings.index)
-    constants = module_constants(module)
+    constants = module_constants(module, facts.bindings)
     plans: list[_Plan] = []
     effective: dict[str, list[Operation]] = dict(settings.external)
     converted: set[str] = set(settings.external)
     for cls in classes:
-        plan = _plan(cls, module, names, positions, settings, aliases, effective, converted,
-                     constants)
+        plan = _plan(cls, class_facts[id(cls.node)], module, names, settings, aliases,
+                     effective, converted, constants)
         plans.append(plan)
         if plan.result.status in ("converted", "unchanged"):
             converted.add(cls.name)
-    return module, plans, effective, aliases
+    return plans, effective, aliases
 
 
 def too_deep_line(module: cst.Module) -> int | None:
@@ -224,12 +259,13 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
     except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError):
         return {}
     try:
-        planned = _plan_module(module, LegacyNames.of_module(module), settings)
-    except RecursionError:  # its own migration reports the file
+        facts = _syntax_facts(module, source, FileResult(path=""))
+        planned = _plan_module(module, facts, settings) if facts is not None else None
+    except (RecursionError, MemoryError):  # its own migration reports the file
         return {}
     if planned is None:
         return {}
-    _, plans, effective, _ = planned
+    plans, effective, _ = planned
     ok = {p.cls.name for p in plans if p.result.status in ("converted", "unchanged")}
     return {name: effective[name] for name in wanted if name in ok and name in effective}
 
@@ -269,22 +305,22 @@ def foreign_bases(module: cst.Module, names: LegacyNames) -> list[tuple[str, str
     return found
 
 
-def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
-          positions: Mapping[cst.CSTNode, object], settings: Settings, aliases: dict[str, str],
+def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: LegacyNames,
+          settings: Settings, aliases: dict[str, str],
           effective: dict[str, list[Operation]], converted: set[str],
           constants: Mapping[str, Literal]) -> _Plan:
-    line = getattr(positions.get(cls.node), "start", None)
-    line_no = line.line if line is not None else 0
+    line_no = facts.line
     plan = _Plan(cls, SkillResult(cls.name, line_no, "skipped"))
     func = find_create_description(cls.node)
-    plan.old_function = func
+    plan.old_function, plan.create = func, facts.create
+    class_lines = StatementLines(module, cls.node.body, facts.spans)
     try:
         if cls.name in settings.held:
             raise Unsupported(settings.held[cls.name])
         if cls.kept is not None:
             raise Unsupported(cls.kept)
         bindings = class_bindings(cls.node)
-        _check_bindings(cls, bindings, positions)
+        _check_bindings(cls, bindings, class_lines)
         if cls.other_bases:
             raise Unsupported(f"{cls.name} derives from several classes; a migration could "
                               "change its method resolution order")
@@ -297,19 +333,22 @@ def _plan(cls: DescriptionClass, module: cst.Module, names: LegacyNames,
             plan.result.status = "converted" if cls.base is None else "unchanged"
             return plan
         skill = ExtractedSkill(cls.name, line_no)
-        ctx = ExtractContext(module=module, names=names, positions=positions, skill=skill,
+        create = plan.create
+        assert create is not None  # both parsers see the same class body
+        lines = StatementLines(module, func.body, create.spans)
+        ctx = ExtractContext(module=module, names=names, lines=lines, skill=skill,
                              constants=constants,
                              self_name=self_parameter(func), class_name=cls.name,
                              class_names=frozenset(n for n, _ in bindings),
                              base_names=[cls.base] if cls.base else [],
                              parent_operations=lambda base: _parent_operations(cls, base,
                                                                                effective))
-        read_operations(func, ctx)
+        read_operations(func, create.bound, ctx)
         params = emitted_params(skill)
         model = checked_model(cls.name, skill.operations, params)
         emit = EmitContext(index=settings.index, self_name=ctx.self_name, aliases=aliases,
                            reserved=_reserved(skill, settings.index, ctx.self_name),
-                           column=_body_column(func, positions))
+                           column=create.column + 4)
         plan.new_function = build_description(func, skill, params, emit,
                                               module.config_for_parsing)
         effective[cls.name] = skill.operations
@@ -366,12 +405,6 @@ def checked_model(name: str, operations: list[Operation], params: list[ParamOp])
     return legacy
 
 
-def _body_column(func: cst.FunctionDef, positions: Mapping[cst.CSTNode, object]) -> int:
-    """Column where the body of ``func`` starts (its ``def`` column plus one indent)."""
-    start = getattr(positions.get(func), "start", None)
-    return (start.column if start is not None else 4) + 4
-
-
 def _reserved(skill: ExtractedSkill, index: OntologyIndex | None, self_name: str) -> set[str]:
     """Names a parameter must not take because the new body of ``description`` uses them."""
     used: set[str] = set()
@@ -400,21 +433,21 @@ def _aliases(module: cst.Module, index: OntologyIndex | None) -> dict[str, str]:
     return aliases
 
 
-def _rewrite(module: cst.Module, plans: list[_Plan]) -> cst.Module:
-    """Swap base and method of every converted class (top-level statements, by position)."""
-    by_class = {id(p.cls.node): p for p in plans if p.result.status == "converted"}
+def _rewrite(module: cst.Module, converted: list[_Plan], base_name: str) -> cst.Module:
+    """Swap base and method of every converted class (top-level statements, by identity)."""
+    by_class = {id(p.cls.node): p for p in converted}
     body: list[cst.BaseStatement] = []
     for stmt in module.body:
         plan = by_class.get(id(stmt))
         if plan is not None:
             assert isinstance(stmt, cst.ClassDef)
-            stmt = _convert_class(stmt, plan)
+            stmt = _convert_class(stmt, plan, base_name)
         body.append(stmt)
     return module.with_changes(body=body)
 
 
-def _convert_class(node: cst.ClassDef, plan: _Plan) -> cst.ClassDef:
-    bases = [arg.with_changes(value=cst.Name(PLACEHOLDER))
+def _convert_class(node: cst.ClassDef, plan: _Plan, base_name: str) -> cst.ClassDef:
+    bases = [arg.with_changes(value=cst.Name(base_name))
              if arg is plan.cls.base_arg and plan.cls.base is None else arg
              for arg in node.bases]
     body = node.body
@@ -425,13 +458,10 @@ def _convert_class(node: cst.ClassDef, plan: _Plan) -> cst.ClassDef:
 
 
 def _check_bindings(cls: DescriptionClass, bindings: list[tuple[str, cst.CSTNode]],
-                    positions: Mapping[cst.CSTNode, object]) -> None:
+                    lines: StatementLines) -> None:
     """Refuse classes whose own names (``class_bindings``) the migrated method would
     collide with."""
-    def line(node: cst.CSTNode) -> int:
-        start = getattr(positions.get(node), "start", None)
-        return start.line if start is not None else 0
-
+    line = lines.line
     own = [node for name, node in bindings if name == "description"]
     if own:
         raise Unsupported(f"{cls.name} already defines `description` (line {line(own[0])}); "
@@ -444,21 +474,6 @@ def _check_bindings(cls: DescriptionClass, bindings: list[tuple[str, cst.CSTNode
     if creates and not isinstance(creates[0], cst.FunctionDef):
         raise Unsupported(f"createDescription is assigned, not defined, in {cls.name} (line "
                           f"{line(creates[0])}); define it with `def`, then migrate")
-
-
-def _legacy_still_used(module: cst.Module, names: LegacyNames, exported: frozenset[str]) -> bool:
-    """Whether unconverted code, here or in a module importing it from here, still needs the
-    legacy ``SkillDescription`` name."""
-    legacy = names.local_names_for("SkillDescription")
-    return bool(legacy & (used_names(module) | exported)) or bool(legacy and "*" in exported)
-
-
-class _Rename(cst.CSTTransformer):
-    def __init__(self, old: str, new: str) -> None:
-        self.old, self.new = old, new
-
-    def leave_Name(self, original: cst.Name, updated: cst.Name) -> cst.Name:
-        return updated.with_changes(value=self.new) if updated.value == self.old else updated
 
 
 def syntax_error_location(source: bytes | str, error: cst.ParserSyntaxError) -> tuple[str, int,

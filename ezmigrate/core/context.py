@@ -7,11 +7,74 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import libcst as cst
-import libcst.helpers
-from libcst.metadata import PositionProvider
+from libcst.metadata import CodeRange, PositionProvider
 
 from .ir import CondSpec, ExtractedSkill, Literal, Operation, Unsupported
 from .legacy_names import LegacyNames
+from .syntax_facts import Span
+
+
+class StatementLines:
+    """Line numbers of the nodes of one block (a class or function body), from ``ast``.
+
+    ``ast`` gives every statement its first and last line at no cost; a node of a
+    statement written on one line is on that line. Only a statement spread over lines (a
+    call with an argument per line) gets a position pass, of its own and when asked: a pass
+    over the whole module would cost as much as parsing it again. The reader says which
+    statement it is in (``enter``); rules ask for the lines of nodes inside it.
+    ``statements``: the block's statements as ``ast`` counts them (a line ``a; b`` is two).
+    """
+
+    def __init__(self, module: cst.Module, block: cst.BaseSuite,
+                 statements: Sequence[Span]) -> None:
+        self.module = module
+        self.spans: dict[int, Span] = {}
+        self.current: cst.CSTNode | None = None
+        self._positions: dict[int, tuple[Mapping[cst.CSTNode, CodeRange], int]] = {}
+        rest = iter(statements)
+        children = block.body if isinstance(block, cst.IndentedBlock) else [block]
+        for stmt in children:
+            smalls = list(stmt.body) if isinstance(stmt, (cst.SimpleStatementLine,
+                                                          cst.SimpleStatementSuite)) else []
+            group = [next(rest) for _ in range(len(smalls) or 1)]
+            for small, span in zip(smalls, group, strict=False):
+                self.spans[id(small)] = span
+            self.spans[id(stmt)] = (group[0][0], max(last for _, last in group))
+
+    def enter(self, stmt: cst.CSTNode) -> None:
+        """The reader is now in ``stmt`` (a statement of the block)."""
+        self.current = stmt
+
+    def one_line(self) -> bool:
+        """Whether the current statement is written on one line (no comment inside it)."""
+        if self.current is None:
+            return False
+        first, last = self.spans[id(self.current)]
+        return first == last
+
+    def line(self, node: cst.CSTNode) -> int:
+        """1-based line where ``node`` starts (0 when it is not in the block)."""
+        span = self.spans.get(id(node))
+        if span is not None:
+            return span[0]
+        if self.current is None:
+            return 0
+        first = self.spans[id(self.current)][0]
+        if self.one_line():
+            return first
+        positions, shift = self._positions_of(self.current)
+        found = positions.get(node)
+        return found.start.line + shift if found is not None else first
+
+    def _positions_of(self, stmt: cst.CSTNode) -> tuple[Mapping[cst.CSTNode, CodeRange], int]:
+        assert isinstance(stmt, cst.BaseStatement)  # a suite is on one line: never asked
+        if id(stmt) not in self._positions:
+            alone = self.module.with_changes(header=(), body=(stmt,), footer=())
+            wrapper = cst.MetadataWrapper(alone, unsafe_skip_copy=True)
+            positions = wrapper.resolve(PositionProvider)
+            self._positions[id(stmt)] = (
+                positions, self.spans[id(stmt)][0] - positions[stmt].start.line)
+        return self._positions[id(stmt)]
 
 
 @dataclass
@@ -26,7 +89,7 @@ class ExtractContext:
 
     module: cst.Module
     names: LegacyNames
-    positions: Mapping[cst.CSTNode, object]
+    lines: StatementLines
     skill: ExtractedSkill
     self_name: str = "self"
     class_name: str = ""
@@ -43,8 +106,7 @@ class ExtractContext:
 
     def line(self, node: cst.CSTNode) -> int:
         """1-based line where ``node`` starts (0 when unknown)."""
-        pos = self.positions.get(node)
-        return pos.start.line if pos is not None else 0  # type: ignore[attr-defined]
+        return self.lines.line(node)
 
     def code(self, node: cst.CSTNode) -> str:
         """The exact source text of ``node``."""
@@ -101,74 +163,23 @@ def literal_of(node: cst.BaseExpression, module: cst.Module) -> Literal | None:
     return Literal(value, code)
 
 
-def module_constants(module: cst.Module) -> dict[str, Literal]:
-    """Module-level names bound exactly once, to a literal (``MAX_SPEED = 0.5``)."""
-    bound: dict[str, int] = {}
+def module_constants(module: cst.Module, bindings: Mapping[str, int]) -> dict[str, Literal]:
+    """Module-level names bound exactly once, to a literal (``MAX_SPEED = 0.5``).
+
+    ``bindings``: how often each name is bound anywhere in the module
+    (``SyntaxFacts.bindings``, from one ``ast`` walk instead of a visit of this tree).
+    """
     found: dict[str, Literal] = {}
-
-    class _Bindings(cst.CSTVisitor):
-        def visit_AssignTarget(self, node: cst.AssignTarget) -> None:
-            for name in _target_names(node.target):
-                bound[name] = bound.get(name, 0) + 1
-
-        def visit_AugAssign(self, node: cst.AugAssign) -> None:
-            for name in _target_names(node.target):
-                bound[name] = bound.get(name, 0) + 2
-
-        def visit_Global(self, node: cst.Global) -> None:
-            for item in node.names:
-                bound[item.name.value] = bound.get(item.name.value, 0) + 2
-
-    module.visit(_Bindings())
     for stmt in module.body:
         if isinstance(stmt, cst.SimpleStatementLine) and len(stmt.body) == 1:
             small = stmt.body[0]
             if isinstance(small, cst.Assign) and len(small.targets) == 1 \
-                    and isinstance(small.targets[0].target, cst.Name):
-                name = small.targets[0].target.value
+                    and isinstance(small.targets[0].target, cst.Name) \
+                    and bindings.get(small.targets[0].target.value) == 1:
                 value = literal_of(small.value, module)
                 if value is not None:
-                    found[name] = value
-    return {name: value for name, value in found.items() if bound.get(name) == 1}
-
-
-def bound_names(func: cst.FunctionDef) -> frozenset[str]:
-    """Every name ``func``'s body binds (assignments, walrus, loops, imports, ``as``)."""
-    found: set[str] = set()
-
-    class _Bindings(cst.CSTVisitor):
-        def visit_AssignTarget(self, node: cst.AssignTarget) -> None:
-            found.update(_target_names(node.target))
-
-        def visit_AugAssign(self, node: cst.AugAssign) -> None:
-            found.update(_target_names(node.target))
-
-        def visit_AnnAssign(self, node: cst.AnnAssign) -> None:
-            found.update(_target_names(node.target))
-
-        def visit_NamedExpr(self, node: cst.NamedExpr) -> None:
-            found.update(_target_names(node.target))
-
-        def visit_For(self, node: cst.For) -> None:
-            found.update(_target_names(node.target))
-
-        def visit_AsName(self, node: cst.AsName) -> None:
-            found.update(_target_names(node.name))
-
-        def visit_ImportAlias(self, node: cst.ImportAlias) -> None:
-            if node.asname is None:
-                found.add(cst.helpers.get_full_name_for_node_or_raise(node.name).split(".")[0])
-
-    func.body.visit(_Bindings())
-    return frozenset(found)
-
-
-def _target_names(node: cst.BaseExpression) -> list[str]:
-    if isinstance(node, cst.Name):
-        return [node.value]
-    if isinstance(node, (cst.Tuple, cst.List)):
-        return [n for e in node.elements for n in _target_names(e.value)]
-    return []
+                    found[small.targets[0].target.value] = value
+    return found
 
 
 def _is_literal_shape(node: cst.BaseExpression) -> bool:

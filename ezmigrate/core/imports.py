@@ -43,10 +43,11 @@ class _Usage(cst.CSTVisitor):
         self.names.add(node.value)
 
 
-def used_names(module: cst.Module) -> set[str]:
-    """Every identifier the module mentions outside its imports (a safe over-approximation)."""
+def used_names(node: cst.CSTNode) -> set[str]:
+    """Every identifier a subtree mentions outside imports (a safe over-approximation). For
+    a whole module, ``SyntaxFacts.names`` gives the same from one ``ast`` walk."""
     usage = _Usage()
-    module.visit(usage)
+    node.visit(usage)
     return usage.names
 
 
@@ -137,7 +138,7 @@ def _import_line(module: str, names: Sequence[tuple[str, str]],
 
 def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
                    prefixes: Iterable[tuple[str, str]],
-                   exported: Collection[str] = (), *,
+                   exported: Collection[str] = (), *, used: set[str],
                    used_before: set[str] | None = None) -> cst.Module:
     """Add the runtime and namespace imports, drop legacy imports the migration left unused.
 
@@ -146,10 +147,11 @@ def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
     after the last top-level import, or after the docstring). ``exported`` names (``*``:
     all) are used by other modules importing them from this one. ``used_before``: the names
     the module used before the migration (``used_names`` of the original); only those can
-    lose their last use. ``None``: every imported name counts as used before.
+    lose their last use. ``None``: every imported name counts as used before. ``used``: the
+    names ``module`` uses outside imports (the caller knows them without a visit).
     """
     existing = imported_names(module)
-    used = used_names(module) | set(exported)
+    used = used | set(exported)
     if "*" in exported:  # another module takes every name: no import is unused
         used |= _all_imported(module)
     before = _all_imported(module) if used_before is None else used_before

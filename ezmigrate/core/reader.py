@@ -10,7 +10,7 @@ from __future__ import annotations
 import libcst as cst
 
 from ..rules.local_variables import drop_dead_literal_locals
-from .context import ExtractContext, bound_names
+from .context import ExtractContext
 from .ir import Comments, ExtractedSkill, Operation, Unsupported
 from .registry import STATEMENT_RULES
 
@@ -58,18 +58,21 @@ def self_parameter(func: cst.FunctionDef) -> str:
     return params.params[0].name.value
 
 
-def read_operations(func: cst.FunctionDef, ctx: ExtractContext) -> None:
-    """Fill ``ctx.skill`` with the operations of ``func``'s body."""
-    ctx.function_names = bound_names(func)
+def read_operations(func: cst.FunctionDef, bound: frozenset[str], ctx: ExtractContext) -> None:
+    """Fill ``ctx.skill`` with the operations of ``func``'s body (``bound``: the names the
+    body binds, ``FunctionFacts.bound``)."""
+    ctx.function_names = bound
     body = func.body
     if not isinstance(body, cst.IndentedBlock):  # def createDescription(self): pass
         statements: list[cst.BaseStatement] = []
+        ctx.lines.enter(body)
         _read_line_statements([s for s in body.body if isinstance(s, cst.BaseSmallStatement)],
                               Comments(), ctx, body)
     else:
         statements = list(body.body)
         ctx.skill.footer = list(body.footer)
     for index, stmt in enumerate(statements):
+        ctx.lines.enter(stmt)
         if index == 0 and _is_docstring(stmt):
             assert isinstance(stmt, cst.SimpleStatementLine)
             ctx.skill.docstring = stmt

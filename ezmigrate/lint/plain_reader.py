@@ -37,6 +37,7 @@ from ..core.ir import (
     Unsupported,
 )
 from ..core.legacy_names import LegacyNames, ast_dotted_name, is_legacy_module
+from ..core.syntax_facts import note_binding, note_import
 from ..migrate import checked_model
 from ..results import FileResult, Finding, SkillResult
 from ..rules.add_param import (
@@ -94,17 +95,8 @@ def read_plain(data: bytes, path: str, tree: ast.Module | None = None) -> FileRe
 def _legacy_names(tree: ast.Module, data: bytes) -> LegacyNames:
     """The codemod's ``LegacyNames``, filled from ``ast`` imports (nested ones included)."""
     names = LegacyNames()
-    nodes = ast.walk(tree) if _NESTED_LEGACY_IMPORT.search(data) else iter(tree.body)
-    for node in nodes:
-        if isinstance(node, ast.Import):
-            for alias in node.names:
-                names.add_import(alias.name, alias.asname)
-        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
-            if any(a.name == "*" for a in node.names):
-                names.add_from_import(node.module, None)
-            else:
-                names.add_from_import(node.module,
-                                      [(a.name, a.asname or a.name) for a in node.names])
+    for node in ast.walk(tree) if _NESTED_LEGACY_IMPORT.search(data) else iter(tree.body):
+        note_import(node, names)
     return names
 
 
@@ -162,15 +154,7 @@ class _Constants:
     def _collect(self) -> dict[str, Literal]:
         bound: dict[str, int] = {}
         for node in ast.walk(self.tree):
-            if isinstance(node, ast.Assign):
-                for name in (n for t in node.targets for n in _target_names(t)):
-                    bound[name] = bound.get(name, 0) + 1
-            elif isinstance(node, ast.AugAssign):
-                for name in _target_names(node.target):
-                    bound[name] = bound.get(name, 0) + 2
-            elif isinstance(node, ast.Global):
-                for name in node.names:
-                    bound[name] = bound.get(name, 0) + 2
+            note_binding(node, bound)
         lines = [(n.lineno, n.end_lineno or n.lineno) for n in self.tree.body]
         found: dict[str, Literal] = {}
         for stmt in self.tree.body:
@@ -187,16 +171,6 @@ def _shares_a_line(stmt: ast.stmt, lines: list[tuple[int, int]]) -> bool:
     """``A = 1; B = 2``: libcst sees one line of two statements, which is no constant."""
     start, end = stmt.lineno, stmt.end_lineno or stmt.lineno
     return sum(1 for s, e in lines if s <= end and e >= start) > 1
-
-
-def _target_names(node: ast.expr) -> list[str]:
-    if isinstance(node, ast.Name):
-        return [node.id]
-    if isinstance(node, ast.Starred):
-        return _target_names(node.value)
-    if isinstance(node, (ast.Tuple, ast.List)):
-        return [n for e in node.elts for n in _target_names(e)]
-    return []
 
 
 def _skill(node: ast.ClassDef, names: LegacyNames, constants: _Constants) -> SkillResult:

@@ -51,6 +51,8 @@ def condition_of(node: cst.BaseExpression, ctx: ExtractContext) -> CondSpec:
 def statement_comments(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> Comments:
     """Comments inside a statement (a multi-line call); the line's own are added by the reader."""
     found: list[str] = []
+    if ctx.lines.one_line():  # a comment would end the line: the reader has it
+        return Comments(inner=found)
 
     class _Collect(cst.CSTVisitor):
         def visit_Comment(self, node: cst.Comment) -> None:
