@@ -53,6 +53,7 @@ from .core.reader import (
 from .core.registry import load_rules
 from .core.replay import replay
 from .core.syntax_facts import ClassFacts, FunctionFacts, SyntaxFacts
+from .core.tree_walk import walk
 from .core.writer import DSL_NAMES, EmitContext
 from .findings import skill_findings
 from .lint.facts import static_description
@@ -407,15 +408,8 @@ def checked_model(name: str, operations: list[Operation], params: list[ParamOp])
 
 def _reserved(skill: ExtractedSkill, index: OntologyIndex | None, self_name: str) -> set[str]:
     """Names a parameter must not take because the new body of ``description`` uses them."""
-    used: set[str] = set()
-
-    class _Names(cst.CSTVisitor):
-        def visit_Name(self, node: cst.Name) -> None:
-            used.add(node.value)
-
-    for op in skill.operations:
-        if isinstance(op, KeptStatement):
-            op.node.visit(_Names())
+    used = {node.value for op in skill.operations if isinstance(op, KeptStatement)
+            for node in walk(op.node) if type(node) is cst.Name}
     prefixes = set(index.prefixes) if index is not None else set(DEFAULT_PREFIXES)
     return used | prefixes | {self_name, "abstract", "any_of"}
 

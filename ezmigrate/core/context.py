@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
@@ -155,12 +156,25 @@ def literal_of(node: cst.BaseExpression, module: cst.Module) -> Literal | None:
     """The literal value of an expression written with literal syntax only."""
     if not _is_literal_shape(node):
         return None
-    code = module.code_for_node(node).strip()
+    if isinstance(node, _LEAVES) and not node.lpar:  # its text is its own: no code pass
+        code = node.value
+        if code in _NAMED:
+            return Literal(_NAMED[code], code)
+        if _PLAIN_STRING.fullmatch(code):  # no prefix, no escape: the text between quotes
+            return Literal(code[1:-1], code)
+    else:
+        code = module.code_for_node(node).strip()
     try:
         value = ast.literal_eval(code)
     except (ValueError, SyntaxError, TypeError, MemoryError, RecursionError):
         return None
     return Literal(value, code)
+
+
+_NAMED = {"True": True, "False": False, "None": None}
+_PLAIN_STRING = re.compile(r'"[^"\\\n]*"|\'[^\'\\\n]*\'')
+"""A one-line string literal without prefix or backslash: ``literal_eval`` would only
+strip its quotes (it compiles each literal, which a file's thousands of keys feel)."""
 
 
 def module_constants(module: cst.Module, bindings: Mapping[str, int]) -> dict[str, Literal]:
@@ -180,6 +194,9 @@ def module_constants(module: cst.Module, bindings: Mapping[str, int]) -> dict[st
                 if value is not None:
                     found[small.targets[0].target.value] = value
     return found
+
+
+_LEAVES = (cst.SimpleString, cst.Integer, cst.Float, cst.Imaginary, cst.Name)
 
 
 def _is_literal_shape(node: cst.BaseExpression) -> bool:

@@ -19,6 +19,7 @@ from collections.abc import Collection, Iterable, Sequence
 import libcst as cst
 
 from .legacy_names import dotted_name, is_legacy_module
+from .tree_walk import walk
 from .writer import LINE_LIMIT
 
 RUNTIME = "ezskiros_runtime"
@@ -27,28 +28,11 @@ RUNTIME_ORDER = ("SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMEN
                  "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output")
 
 
-class _Usage(cst.CSTVisitor):
-    """Names loaded anywhere outside import statements."""
-
-    def __init__(self) -> None:
-        self.names: set[str] = set()
-
-    def visit_Import(self, node: cst.Import) -> bool:
-        return False
-
-    def visit_ImportFrom(self, node: cst.ImportFrom) -> bool:
-        return False
-
-    def visit_Name(self, node: cst.Name) -> None:
-        self.names.add(node.value)
-
-
 def used_names(node: cst.CSTNode) -> set[str]:
     """Every identifier a subtree mentions outside imports (a safe over-approximation). For
     a whole module, ``SyntaxFacts.names`` gives the same from one ``ast`` walk."""
-    usage = _Usage()
-    node.visit(usage)
-    return usage.names
+    return {found.value for found in walk(node, (cst.Import, cst.ImportFrom))
+            if type(found) is cst.Name}
 
 
 def module_bindings(module: cst.Module) -> set[str]:

@@ -21,10 +21,10 @@ from collections import Counter
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import Any
 
 from .legacy_names import LegacyNames
 
-_LISTS = (ast.Global, ast.Nonlocal)
 Span = tuple[int, int]
 """First and last line of a statement (each small statement of a line on its own)."""
 
@@ -76,16 +76,39 @@ class SyntaxFacts:
     @classmethod
     def of(cls, tree: ast.Module) -> SyntaxFacts:
         facts = cls([_class(node) for node in tree.body if isinstance(node, ast.ClassDef)])
-        names, bindings, legacy = facts.names, facts.bindings, facts.legacy
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Name):
-                names[node.id] += 1
-            elif isinstance(node, ast.Attribute):
-                names[node.attr] += 1
-            elif not note_import(node, legacy):
-                names.update(_identifiers(node))
-                note_binding(node, bindings)
+        _walk(tree, facts.names, facts.legacy, facts.bindings)
         return facts
+
+
+def count_names(nodes: Iterable[ast.AST]) -> Counter[str]:
+    """``SyntaxFacts.names`` of some subtrees (what a rewrite removes)."""
+    found: Counter[str] = Counter()
+    for node in nodes:
+        _walk(node, found)
+    return found
+
+
+def _walk(tree: ast.AST, names: Counter[str], legacy: LegacyNames | None = None,
+          bindings: dict[str, int] | None = None) -> None:
+    """One walk that counts names (and, when given, notes imports and bindings). Dispatch
+    is on the exact type: a file has thousands of nodes and a chain of ``isinstance``
+    tests was half the walk."""
+    for node in ast.walk(tree):
+        kind = type(node)
+        if kind is ast.Name:
+            names[node.id] += 1  # type: ignore[attr-defined]
+        elif kind is ast.Attribute:
+            names[node.attr] += 1  # type: ignore[attr-defined]
+        elif kind is ast.Import or kind is ast.ImportFrom:
+            if legacy is not None:
+                note_import(node, legacy)
+        else:
+            identifiers = _IDENTIFIERS.get(kind)
+            if identifiers is not None:
+                names.update(name for name in identifiers(node) if name is not None)
+            if bindings is not None and kind in _BINDERS:
+                note_binding(node, bindings)
+
 
 def note_import(node: ast.AST, legacy: LegacyNames) -> bool:
     """Record ``node`` in ``legacy`` if it is an import statement (relative ones bind no
@@ -115,37 +138,22 @@ def note_binding(node: ast.AST, bindings: dict[str, int]) -> None:
             bindings[name] = bindings.get(name, 0) + 2
 
 
-def count_names(nodes: Iterable[ast.AST]) -> Counter[str]:
-    """``SyntaxFacts.names`` of some subtrees (what a rewrite removes)."""
-    found: Counter[str] = Counter()
-    for top in nodes:
-        for node in ast.walk(top):
-            if isinstance(node, ast.Name):
-                found[node.id] += 1
-            elif isinstance(node, ast.Attribute):
-                found[node.attr] += 1
-            elif not isinstance(node, (ast.Import, ast.ImportFrom)):
-                found.update(_identifiers(node))
-    return found
-
-
-def _identifiers(node: ast.AST) -> list[str]:
-    """Identifiers a node holds as strings (libcst holds them as ``Name`` nodes)."""
-    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-        return [node.name]
-    if isinstance(node, ast.arg):
-        return [node.arg]
-    if isinstance(node, ast.keyword):
-        return [node.arg] if node.arg is not None else []
-    if isinstance(node, _LISTS):
-        return list(node.names)
-    if isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)):
-        return [node.name] if node.name is not None else []
-    if isinstance(node, ast.MatchMapping):
-        return [node.rest] if node.rest is not None else []
-    if isinstance(node, ast.MatchClass):
-        return list(node.kwd_attrs)
-    return []
+_IDENTIFIERS: dict[type, Callable[[Any], list[str | None]]] = {
+    # identifiers a node holds as strings (libcst holds them as ``Name`` nodes)
+    ast.FunctionDef: lambda node: [node.name],
+    ast.AsyncFunctionDef: lambda node: [node.name],
+    ast.ClassDef: lambda node: [node.name],
+    ast.arg: lambda node: [node.arg],
+    ast.keyword: lambda node: [node.arg],
+    ast.Global: lambda node: node.names,
+    ast.Nonlocal: lambda node: node.names,
+    ast.ExceptHandler: lambda node: [node.name],
+    ast.MatchAs: lambda node: [node.name],
+    ast.MatchStar: lambda node: [node.name],
+    ast.MatchMapping: lambda node: [node.rest],
+    ast.MatchClass: lambda node: node.kwd_attrs,
+}
+_BINDERS = frozenset({ast.Assign, ast.AugAssign, ast.Global})
 
 
 def target_names(node: ast.expr) -> list[str]:

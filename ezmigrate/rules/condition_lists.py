@@ -54,7 +54,7 @@ def statement_comments(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> Com
     if ctx.lines.one_line():  # a comment would end the line: the reader has it
         return Comments(inner=found)
 
-    class _Collect(cst.CSTVisitor):
+    class _Collect(cst.CSTVisitor):  # a visitor: it goes in source order
         def visit_Comment(self, node: cst.Comment) -> None:
             found.append(node.value)
 
@@ -72,6 +72,8 @@ def emit_condition(spec: CondSpec, ctx: EmitContext) -> str:
 
 def strip_outer_parentheses(text: str) -> str:
     """``(a == b)`` -> ``a == b`` when one pair encloses everything (for ``+=``)."""
+    if not text.startswith("("):
+        return text
     node = cst.parse_expression(text)
     if not node.lpar:
         return text
