@@ -20,6 +20,7 @@ from .core.ir import Operation
 from .core.legacy_names import ast_dotted_name
 from .discover import Candidate
 from .migrate import Settings, exported_operations, migrate
+from .progress import Progress
 from .runner import Migrated, migrate_all
 
 if TYPE_CHECKING:
@@ -253,10 +254,10 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
 
 
 def migrate_package(candidates: Sequence[Candidate], index: OntologyIndex | None,
-                    jobs: int) -> list[Migrated]:
+                    jobs: int, progress: Progress | None = None) -> list[Migrated]:
     """Migrate every candidate in parallel, then resolve bases defined in sibling files and
     keep the legacy imports that sibling files import from a migrated one."""
-    migrated = migrate_all(candidates, index, jobs)
+    migrated = migrate_all(candidates, index, jobs, progress)
     exported = imported_from(migrated)
     for item in migrated:
         names = exported.get(item.candidate.relative)

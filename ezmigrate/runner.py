@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING
 from . import holdpoint
 from .discover import Candidate
 from .prefilter import may_hold_descriptions
+from .progress import Progress
 from .results import FileResult
 from .writing import digest as content_digest
 
@@ -113,9 +114,11 @@ def read_candidates(candidates: Sequence[Candidate]) -> Iterator[tuple[Candidate
 class _Workers:
     """Migrates the files it is given: here for the first, in forked workers from the second."""
 
-    def __init__(self, index: OntologyIndex | None, jobs: int) -> None:
+    def __init__(self, index: OntologyIndex | None, jobs: int,
+                 progress: Progress | None = None) -> None:
         self.index = index
         self.jobs = jobs
+        self.progress = progress
         self._settings: Settings | None = None
         self.pool: ProcessPoolExecutor | None = None
         self.first: tuple[Migrated, bytes] | None = None
@@ -134,6 +137,7 @@ class _Workers:
         if self.jobs <= 1:
             _init_worker(self.settings)
             item.result = _migrate_one(item.candidate.relative, data)
+            self.finished(item)
             return
         if self.pool is None and self.first is None:
             self.first = (item, data)
@@ -164,6 +168,7 @@ class _Workers:
             _init_worker(self.settings)
             item, data = self.first
             item.result = _migrate_one(item.candidate.relative, data)
+            self.finished(item)
         if self.pool is None:
             return
         try:
@@ -174,8 +179,15 @@ class _Workers:
                     item.result = FileResult(
                         item.candidate.relative,
                         error=f"internal error: the migration worker died ({error})")
+                self.finished(item)
         finally:
             self.close()
+
+    def finished(self, item: Migrated | None = None) -> None:
+        """One more file done (``item``: one the core migrated, whose skills count)."""
+        if self.progress is not None:
+            self.progress.advance(1, 0 if item is None else sum(
+                1 for s in item.result.skills if s.status == "converted"))
 
     def close(self) -> None:
         if self.pool is not None:
@@ -184,15 +196,16 @@ class _Workers:
 
 
 def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
-                jobs: int) -> list[Migrated]:
+                jobs: int, progress: Progress | None = None) -> list[Migrated]:
     """Migrate every candidate; files the prefilter rules out get an empty result."""
-    workers = _Workers(index, jobs)
+    workers = _Workers(index, jobs, progress)
     done: list[Migrated] = []
     try:
         for candidate, data, error in read_candidates(candidates):
             if data is None:
                 done.append(Migrated(candidate, b"", "",
                                      FileResult(candidate.relative, error=error)))
+                workers.finished()
             elif may_hold_descriptions(data):
                 item = Migrated(candidate, data, content_digest(data),
                                 FileResult(candidate.relative))
@@ -202,6 +215,7 @@ def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                     holdpoint.reach("migrating")
             else:
                 done.append(Migrated(candidate, None, None, FileResult(candidate.relative)))
+                workers.finished()
         workers.finish()
     finally:
         workers.close()

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from . import holdpoint, interrupt
 from .discover import Candidate, discover
 from .package import migrate_package
+from .progress import Progress
 from .runner import Migrated, default_jobs
 from .writing import WriteRefused, atomic_write, remove_stale_temporary
 
@@ -79,7 +80,8 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
                                  project=options.project)
     notes += _stale_notes(stale, options.writes)
     holdpoint.reach("discovered")
-    migrated = migrate_package(candidates, index, options.jobs)
+    with Progress.for_stream(len(candidates)) as progress:  # gone before anything is said
+        migrated = migrate_package(candidates, index, options.jobs, progress)
     holdpoint.reach("migrated")
     outcome = RewriteOutcome(migrated, notes)
     if options.verify and verifier is not None:

@@ -6,11 +6,13 @@ from __future__ import annotations
 
 import io
 import os
+import re
 import select
 import shutil
 import subprocess
 import sys
 import textwrap
+import time
 from pathlib import Path
 
 import pytest
@@ -178,6 +180,21 @@ def child_env() -> dict[str, str]:
     return {**env, "TERM": "xterm-256color"}
 
 
+def read_until_closed(master: int) -> bytes:
+    """Everything written to a pseudo-terminal until its other end is closed."""
+    output = b""
+    while True:
+        ready, _, _ = select.select([master], [], [], 60)
+        assert ready, "the child neither wrote nor exited within 60 s"
+        try:
+            chunk = os.read(master, 4096)
+        except OSError:  # EIO on Linux: the slave side is closed
+            return output
+        if not chunk:
+            return output
+        output += chunk
+
+
 @pytest.mark.skipif(not hasattr(os, "openpty"), reason="needs a pseudo-terminal")
 def test_a_real_terminal_gets_the_line() -> None:
     master, slave = os.openpty()
@@ -187,22 +204,11 @@ def test_a_real_terminal_gets_the_line() -> None:
                                  stderr=slave)
     finally:
         os.close(slave)  # the child holds the only other end: EOF when it exits
-    output = b""
     try:
-        while True:
-            ready, _, _ = select.select([master], [], [], 60)
-            assert ready, "the child neither wrote nor exited within 60 s"
-            try:
-                chunk = os.read(master, 4096)
-            except OSError:  # EIO on Linux: the slave side is closed
-                break
-            if not chunk:
-                break
-            output += chunk
+        text = read_until_closed(master).decode()
     finally:
         os.close(master)
         assert child.wait(timeout=60) == 0
-    text = output.decode()
     assert "\rezmigrate: 2/3 files, 4 skills converted, about 1 s left" + ERASE in text
     assert text.count("\rezmigrate: ") == 2  # none at 0.5 s: too early
     assert ("\rezmigrate: 3/3 files, 6 skills converted" + ERASE + "\r" + ERASE
@@ -214,3 +220,58 @@ def test_a_pipe_gets_nothing() -> None:
                            stdin=subprocess.DEVNULL, capture_output=True, text=True,
                            timeout=60, check=True)
     assert child.stderr == "ezmigrate: summary\n"
+
+
+LEGACY = Path(__file__).resolve().parents[2] / "fixtures" / "legacy"
+
+
+def _rewrite(tmp_path: Path, stderr: int) -> subprocess.Popen[bytes]:
+    """``rewrite --dry-run`` over three legacy files, held once the workers have started
+    (``ezmigrate.holdpoint``) until the test lets it go: the run lasts over a second by
+    construction, on any machine."""
+    repo = tmp_path / "repo"
+    repo.mkdir()
+    for name in ("conditions.py", "descriptions.py", "inheritance.py"):
+        shutil.copy(LEGACY / name, repo / name)
+    hold = tmp_path / "hold"
+    hold.mkdir()
+    env = {**child_env(), "EZMIGRATE_HOLD_DIR": str(hold), "EZMIGRATE_HOLD_AT": "migrating"}
+    return subprocess.Popen([sys.executable, "-m", "ezmigrate", "rewrite", "--dry-run",
+                             "--no-verify", "-j", "2", str(repo)], cwd=REPO, env=env,
+                            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                            stderr=stderr)
+
+
+def _hold_past_a_second(tmp_path: Path) -> None:
+    reached = tmp_path / "hold" / "migrating.reached"
+    deadline = time.monotonic() + 60
+    while not reached.exists():
+        assert time.monotonic() < deadline, "the run never reached the hold point"
+        time.sleep(0.01)
+    time.sleep(1.1)  # the run is held: this only makes sure it has lasted over a second
+    (tmp_path / "hold" / "migrating.go").touch()
+
+
+@pytest.mark.skipif(not hasattr(os, "openpty"), reason="needs a pseudo-terminal")
+def test_rewrite_shows_the_line_on_a_terminal(tmp_path: Path) -> None:
+    master, slave = os.openpty()
+    try:
+        child = _rewrite(tmp_path, slave)
+    finally:
+        os.close(slave)
+    try:
+        _hold_past_a_second(tmp_path)
+        text = read_until_closed(master).decode()
+    finally:
+        os.close(master)
+        assert child.wait(timeout=60) == 0
+    assert re.search(r"\rezmigrate: [1-3]/3 files, \d+ skills converted", text), text
+    assert "\r" + ERASE + "ezmigrate: " in text  # erased before the summary
+
+
+def test_rewrite_writes_no_line_into_a_pipe(tmp_path: Path) -> None:
+    child = _rewrite(tmp_path, subprocess.PIPE)
+    _hold_past_a_second(tmp_path)
+    _, err = child.communicate(timeout=60)
+    assert child.returncode == 0
+    assert b"\r" not in err and b"would change" in err
