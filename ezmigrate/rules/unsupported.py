@@ -12,18 +12,25 @@ import libcst as cst
 from ..core.context import ExtractContext
 from ..core.ir import Operation, Unsupported
 from ..core.registry import statement_rule
+from .condition_factories import FACTORIES
 
 
 @statement_rule
 def unsupported(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[Operation] | None:
     """Always raises: explains why the statement blocks an exact translation."""
     line = ctx.line(stmt)
-    code = ctx.code(stmt).strip().splitlines()[0]
+    code = ctx.code(stmt.with_changes(semicolon=cst.MaybeSentinel.DEFAULT)).strip()
     if isinstance(stmt, cst.Expr) and isinstance(stmt.value, cst.Call):
         method = ctx.self_method(stmt.value)
+        call = f"{ctx.self_name}.{method}(...) at line {line}"
+        if method in FACTORIES or method == "getOrCond":
+            raise Unsupported(f"{call} builds a condition that is never added (SkiROS2 "
+                              "discards it): remove it, or add it with addPreCondition, "
+                              "addHoldCondition or addPostCondition, then migrate", stmt)
         if method is not None:
-            raise Unsupported(f"self.{method}(...) at line {line} is not part of the SkiROS2 "
-                              "description API; it may declare parameters or conditions at run "
-                              "time (inline it by hand, then migrate)", stmt)
-    raise Unsupported(f"`{code}` at line {line} is not a declarative description statement; "
-                      "parameters or conditions could depend on it at run time", stmt)
+            raise Unsupported(f"{call} is not part of the SkiROS2 description API; it may "
+                              "declare parameters or conditions at run time (inline it by "
+                              "hand, then migrate)", stmt)
+    raise Unsupported(f"`{code.splitlines()[0]}` at line {line} is not a declarative "
+                      "description statement; parameters or conditions could depend on it at "
+                      "run time", stmt)

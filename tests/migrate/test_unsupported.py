@@ -237,23 +237,17 @@ class S(SkillDescription):
     assert result.skills == []
 
 
-@pytest.mark.xfail(strict=True, reason="the reason hard-codes `self.` although "
-                   "createDescription names its parameter `me`: it quotes code not in the file")
 def test_the_reason_spells_the_receiver_as_the_source_does():
     assert_skipped(HEADER + "\n\nclass S(SkillDescription):\n    def createDescription(me):\n"
                    "        me._common()\n", "me._common(...) at line 8")
 
 
-@pytest.mark.xfail(strict=True, reason="a condition factory called as a statement (built, "
-                   "never added) is said not to be part of the SkiROS2 description API")
 def test_a_discarded_factory_call_is_not_called_foreign_api():
     result = assert_skipped(START + PARAM + '        self.getIsSpecifiedCond("ASpecified", "A", '
                             'True)\n', "self.getIsSpecifiedCond(...) at line 9")
     assert "not part of the SkiROS2 description API" not in (result.skills[0].reason or "")
 
 
-@pytest.mark.xfail(strict=True, reason="a statement followed by `;` is quoted with the "
-                   "semicolon, which belongs to the line, not to the statement")
 def test_a_statement_before_a_semicolon_is_quoted_without_it():
     assert_skipped(START + '        print("x"); self.addParam("B", float, 0)\n',
                    f'`print("x")` at line 8 {CATCH_ALL}')
