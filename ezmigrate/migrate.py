@@ -50,7 +50,6 @@ from .core.reader import (
     read_operations,
     self_parameter,
 )
-from .core.registry import load_rules
 from .core.replay import replay
 from .core.syntax_facts import ClassFacts, FunctionFacts, SyntaxFacts
 from .core.tree_walk import walk
@@ -58,6 +57,7 @@ from .core.writer import DSL_NAMES, EmitContext
 from .findings import skill_findings
 from .lint.facts import static_description
 from .results import FileResult, Finding, SkillResult
+from .rules import RULES
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -108,7 +108,6 @@ def migrate(source: bytes | str, settings: Settings | None = None,
             path: str = "<string>") -> FileResult:
     """Migrate one module's text. ``result.new_source`` is set only if something changed."""
     settings = settings or Settings()
-    load_rules()
     result = FileResult(path=path)
     try:
         module = cst.parse_module(source)
@@ -254,7 +253,6 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
     Another file deriving from one of them inlines these when it calls the base's
     ``createDescription`` (see ``ezmigrate.package``).
     """
-    load_rules()
     try:
         module = cst.parse_module(source)
     except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError):
@@ -337,7 +335,7 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         create = plan.create
         assert create is not None  # both parsers see the same class body
         lines = StatementLines(module, func.body, create.spans)
-        ctx = ExtractContext(module=module, names=names, lines=lines, skill=skill,
+        ctx = ExtractContext(module=module, names=names, lines=lines, skill=skill, rules=RULES,
                              constants=constants,
                              self_name=self_parameter(func), class_name=cls.name,
                              class_names=frozenset(n for n, _ in bindings),
@@ -347,7 +345,8 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         read_operations(func, create.bound, ctx)
         params = emitted_params(skill)
         model = checked_model(cls.name, skill.operations, params)
-        emit = EmitContext(index=settings.index, self_name=ctx.self_name, aliases=aliases,
+        emit = EmitContext(index=settings.index, rules=RULES, self_name=ctx.self_name,
+                           aliases=aliases,
                            reserved=_reserved(skill, settings.index, ctx.self_name),
                            column=create.column + 4)
         plan.new_function = build_description(func, skill, params, emit,

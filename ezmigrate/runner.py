@@ -150,9 +150,6 @@ class _Workers:
         self._submit(item, data)
 
     def _start(self) -> ProcessPoolExecutor:
-        from .core.registry import load_rules
-
-        load_rules()  # warm before forking, so that no worker does it again
         context = multiprocessing.get_context(
             "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
         return ProcessPoolExecutor(max_workers=self.jobs, mp_context=context,

@@ -12,6 +12,7 @@ from libcst.metadata import CodeRange, PositionProvider
 
 from .ir import CondSpec, ExtractedSkill, Literal, Operation, Unsupported
 from .legacy_names import LegacyNames
+from .registry import RuleTable
 from .syntax_facts import Span
 
 
@@ -92,6 +93,7 @@ class ExtractContext:
     names: LegacyNames
     lines: StatementLines
     skill: ExtractedSkill
+    rules: RuleTable
     self_name: str = "self"
     class_name: str = ""
     class_names: frozenset[str] = frozenset()

@@ -17,8 +17,6 @@ from dataclasses import replace
 
 import libcst as cst
 
-from ..rules.add_param import annotation
-from ..rules.condition_lists import condition_statement
 from .ir import (
     AddCondition,
     CommentOnly,
@@ -157,7 +155,7 @@ def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[s
     def_comment = header.comment if header is not None and params else None
     entries: list[tuple[cst.Param, Comments]] = []
     for op, name in zip(params, names, strict=True):
-        annotation_text, default = annotation(op, name, ctx)
+        annotation_text, default = ctx.rules.param_annotation(op, name, ctx)
         entries.append((cst.Param(
             name=cst.Name(name),
             annotation=cst.Annotation(cst.parse_expression(annotation_text)),
@@ -223,7 +221,8 @@ def build_body(func: cst.FunctionDef, skill: ExtractedSkill, ctx: EmitContext,
             whitespace=cst.SimpleWhitespace("  " if op.comments.trailing else ""),
             comment=op.comments.trailing)
         if isinstance(op, AddCondition):
-            parsed = cst.parse_statement(condition_statement(op, ctx) + "\n", config=config)
+            parsed = cst.parse_statement(ctx.rules.condition_statement(op, ctx) + "\n",
+                                         config=config)
             assert isinstance(parsed, cst.SimpleStatementLine)
             node: cst.SimpleStatementLine = parsed
         else:

@@ -9,10 +9,8 @@ from __future__ import annotations
 
 import libcst as cst
 
-from ..rules.local_variables import drop_dead_literal_locals
 from .context import ExtractContext
 from .ir import Comments, ExtractedSkill, Operation, Unsupported
-from .registry import STATEMENT_RULES
 
 COMPOUND_REASONS: dict[type, str] = {
     cst.For: "a loop", cst.While: "a loop", cst.If: "a conditional",
@@ -84,7 +82,8 @@ def read_operations(func: cst.FunctionDef, bound: frozenset[str], ctx: ExtractCo
         comments = Comments(leading=list(stmt.leading_lines),
                             trailing=stmt.trailing_whitespace.comment)
         _read_line_statements(list(stmt.body), comments, ctx, stmt)
-    ctx.skill.operations = drop_dead_literal_locals(ctx.skill.operations)
+    for read_pass in ctx.rules.read_passes:
+        ctx.skill.operations = read_pass(ctx.skill.operations)
 
 
 def _read_line_statements(small: list[cst.BaseSmallStatement], comments: Comments,
@@ -97,7 +96,7 @@ def _read_line_statements(small: list[cst.BaseSmallStatement], comments: Comment
 
 
 def _apply_rules(node: cst.BaseSmallStatement, ctx: ExtractContext) -> list[Operation]:
-    for rule in STATEMENT_RULES:
+    for rule in ctx.rules.statement_rules:
         ops = rule(node, ctx)
         if ops is not None:
             return list(ops)

@@ -1,63 +1,84 @@
-"""Rule registries: each legacy construct registers its extraction and emission here.
+"""The rule table's shape, and the registries of what is dispatched by condition kind.
 
-A rule module under ``ezmigrate/rules/`` owns one construct family end to end; the core
-only walks statements and asks the registered rules in order. Adding a construct is adding
-a module, not editing a dispatcher.
+A rule module under ``ezmigrate/rules/`` owns one construct family end to end: how it is
+read (a statement or condition rule), written (an emitter) and replayed through the legacy
+backend (a replayer). The core walks statements and asks the rules of a ``RuleTable`` in
+its order; the table itself is written out in ``ezmigrate/rules/__init__.py``, with the
+catch-all last by construction, so the order never depends on which module imports which.
+The core never imports a rule: the table reaches it through the extraction and emission
+contexts, and the kind-keyed registries below are filled by the rules' decorators.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, TypeVar
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import libcst as cst
 
 if TYPE_CHECKING:
     from .context import ExtractContext
-    from .ir import CondSpec, Operation
+    from .ir import AddCondition, CondSpec, Operation, ParamOp
     from .writer import EmitContext
 
 StatementRule = Callable[[cst.BaseSmallStatement, "ExtractContext"],
                          "Sequence[Operation] | None"]
+"""Turns one small statement of ``createDescription`` into IR: ``None`` when the statement
+is not its construct, a list of operations (possibly empty) when it handled it, or raises
+``Unsupported`` with a reason."""
 ConditionRule = Callable[[cst.BaseExpression, "ExtractContext"], "CondSpec | None"]
+"""Turns an expression that builds a condition into a ``CondSpec`` (``None``: not its)."""
+ReadPass = Callable[["list[Operation]"], "list[Operation]"]
+"""Runs over a whole ``createDescription``'s operations once it is read."""
 ConditionEmitter = Callable[["CondSpec", "EmitContext"], str]
+ConditionReplayer = Callable[[Any, "CondSpec"], object]
+"""Builds the legacy condition object for a ``CondSpec`` on a legacy description."""
 
-STATEMENT_RULES: list[StatementRule] = []
-CONDITION_RULES: list[ConditionRule] = []
+
+@dataclass(frozen=True)
+class RuleTable:
+    """Every rule of the codemod, in the order it is asked."""
+
+    statements: tuple[StatementRule, ...]
+    fallback: StatementRule
+    """Asked last, whatever ``statements`` holds: it explains why a statement blocks an
+    exact translation (``rules/unsupported.py``)."""
+    conditions: tuple[ConditionRule, ...]
+    read_passes: tuple[ReadPass, ...]
+    param_annotation: Callable[[ParamOp, str, EmitContext], tuple[str, str | None]]
+    """A parameter's annotation and default in the ``description`` signature."""
+    condition_statement: Callable[[AddCondition, EmitContext], str]
+    """The statement that adds a condition to its list in ``description``."""
+    condition_emitters: Mapping[str, ConditionEmitter]
+    condition_replayers: Mapping[str, ConditionReplayer]
+
+    @property
+    def statement_rules(self) -> tuple[StatementRule, ...]:
+        return (*self.statements, self.fallback)
+
+
 CONDITION_EMITTERS: dict[str, ConditionEmitter] = {}
-
-F = TypeVar("F")
-
-
-def statement_rule(fn: StatementRule) -> StatementRule:
-    """Register a rule that turns one small statement of ``createDescription`` into IR.
-
-    A rule returns ``None`` when the statement is not its construct, a list of operations
-    (possibly empty) when it handled it, or raises ``Unsupported`` with a reason.
-    """
-    STATEMENT_RULES.append(fn)
-    return fn
+CONDITION_REPLAYERS: dict[str, ConditionReplayer] = {}
 
 
-def condition_rule(fn: ConditionRule) -> ConditionRule:
-    """Register a rule that turns an expression building a condition into a ``CondSpec``."""
-    CONDITION_RULES.append(fn)
-    return fn
-
-
-def condition_emitter(*kinds: str) -> Callable[[ConditionEmitter], ConditionEmitter]:
-    """Register the EzSkiROS writer for condition ``kinds``."""
-
-    def register(fn: ConditionEmitter) -> ConditionEmitter:
+def _register(registry: dict[str, Any], what: str, kinds: tuple[str, ...]) -> Callable[[Any],
+                                                                                         Any]:
+    def register(fn: Any) -> Any:
         for kind in kinds:
-            if kind in CONDITION_EMITTERS:
-                raise RuntimeError(f"two emitters for condition kind {kind!r}")
-            CONDITION_EMITTERS[kind] = fn
+            if kind in registry:
+                raise RuntimeError(f"two {what}s for condition kind {kind!r}")
+            registry[kind] = fn
         return fn
 
     return register
 
 
-def load_rules() -> None:
-    """Import every rule module once so that their decorators have run."""
-    from .. import rules  # noqa: F401  (import for the registration side effect)
+def condition_emitter(*kinds: str) -> Callable[[ConditionEmitter], ConditionEmitter]:
+    """Register the EzSkiROS writer for condition ``kinds``."""
+    return _register(CONDITION_EMITTERS, "emitter", kinds)
+
+
+def condition_replayer(*kinds: str) -> Callable[[ConditionReplayer], ConditionReplayer]:
+    """Register how condition ``kinds`` are rebuilt on the legacy backend (for the model)."""
+    return _register(CONDITION_REPLAYERS, "replayer", kinds)

@@ -18,7 +18,17 @@ from ezskiros_runtime.legacy.params import ParamTypes
 from ezskiros_runtime.legacy.world_element import Element
 from ezskiros_runtime.model import SkillModel
 
-from .ir import AddCondition, CondSpec, ElementValue, Literal, OpaqueValue, Operation, ParamOp
+from .ir import (
+    AddCondition,
+    CondSpec,
+    ElementValue,
+    Literal,
+    OpaqueValue,
+    Operation,
+    ParamOp,
+    Unsupported,
+)
+from .registry import CONDITION_REPLAYERS
 
 
 class Unknown:
@@ -42,32 +52,17 @@ def _value(op: ParamOp) -> object:
     return getattr(builtins, value.name)
 
 
-def _condition(desc: abstract_skill.SkillDescription, spec: CondSpec) -> object:
-    def lit(x: Literal | None) -> Any:
-        return None if x is None else x.value
+def replay_condition(desc: abstract_skill.SkillDescription, spec: CondSpec) -> object:
+    """The legacy condition object for ``spec``, built by the replayer its rule registered."""
+    replayer = CONDITION_REPLAYERS.get(spec.kind)
+    if replayer is None:
+        raise Unsupported(f"no legacy form for a {spec.kind} condition (line {spec.line})")
+    return replayer(desc, spec)
 
-    label = lit(spec.label)
-    if spec.kind == "or":
-        cond = desc.getOrCond(lit(spec.desired))
-        for child in spec.children:
-            cond.addCondition(_condition(desc, child))
-        return cond
-    vocabulary, subject, obj = spec.vocabulary or "", spec.subject or "", spec.object or ""
-    desired = lit(spec.desired)
-    if spec.kind == "relation":
-        return desc.getRelationCond(label, vocabulary, subject, obj, desired)
-    if spec.kind == "abstract_relation":
-        return desc.getAbstractRelationCond(label, vocabulary, subject, obj, desired)
-    if spec.kind == "property":
-        return desc.getPropCond(label, vocabulary, subject, spec.operator or "", lit(spec.value),
-                                desired)
-    if spec.kind == "has_property":
-        return desc.getHasPropCond(label, vocabulary, subject, desired)
-    if spec.kind == "is_specified":
-        return desc.getIsSpecifiedCond(label, subject, desired)
-    if spec.kind == "generate":
-        return desc.getGenerateCond(label, subject, desired)
-    return desc.getOnTypeCond(label, subject, vocabulary)
+
+def literal_value(literal: Literal | None) -> Any:
+    """The value of an optional literal argument (``None`` when it was not given)."""
+    return None if literal is None else literal.value
 
 
 _ADD = {"pre": "addPreCondition", "hold": "addHoldCondition", "post": "addPostCondition"}
@@ -85,7 +80,7 @@ def replay(name: str, operations: Iterable[Operation]) -> SkillModel:
                               op.options_text if op.options_text is not None else options,
                               op.description or "")
             elif isinstance(op, AddCondition):
-                getattr(self, _ADD[op.which])(_condition(self, op.condition))
+                getattr(self, _ADD[op.which])(replay_condition(self, op.condition))
 
     cls = type(name, (abstract_skill.SkillDescription,), {"createDescription": create_description})
     return model_of(cls())

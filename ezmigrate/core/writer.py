@@ -25,6 +25,8 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
+    from .registry import RuleTable
+
 SYMBOL_METHODS = frozenset(
     {"relation", "property", "has", "is_specified", "generated", "is_a", "named", "key"})
 """Methods of a symbolic parameter: never usable as a short relation/property name."""
@@ -49,6 +51,7 @@ class EmitContext:
     """Per-skill emission state: key names, and what the file must import."""
 
     index: OntologyIndex | None
+    rules: RuleTable
     self_name: str = "self"
     param_names: dict[str, str] = field(default_factory=dict)
     runtime_names: set[str] = field(default_factory=set)

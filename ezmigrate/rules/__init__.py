@@ -1,10 +1,16 @@
-"""One module per legacy construct family; importing this package registers them all.
+"""One module per legacy construct family, and the table that puts their rules in order.
 
-Order matters for statement rules: the first rule that claims a statement handles it, and
-``unsupported`` (the catch-all that explains why a statement cannot be translated) is last.
+The first statement rule that claims a statement handles it, so the order below is part of
+the meaning: a condition added to a list before a parameter, a kept statement before a
+local, and ``unsupported`` (the catch-all that explains why a statement cannot be
+translated) asked last by construction. A new construct is a module here, its entries in
+``RULES``, and a test module in ``tests/migrate``. Emitters and replayers of condition kinds
+register themselves with decorators next to the rule that reads the kind: order does not
+matter there.
 """
 
-from . import (  # noqa: F401  (imported for registration)
+from ..core.registry import CONDITION_EMITTERS, CONDITION_REPLAYERS, RuleTable
+from . import (
     add_param,
     condition_factories,
     condition_lists,
@@ -14,3 +20,23 @@ from . import (  # noqa: F401  (imported for registration)
     parent_calls,
     unsupported,
 )
+
+RULES = RuleTable(
+    statements=(
+        condition_lists.add_condition,
+        add_param.add_param,
+        kept_statements.kept_statement,
+        local_variables.local_assignment,
+        or_conditions.add_child,
+        parent_calls.parent_call,
+    ),
+    fallback=unsupported.unsupported,
+    conditions=(condition_factories.factory_condition, or_conditions.or_condition),
+    read_passes=(local_variables.drop_dead_literal_locals,),
+    param_annotation=add_param.annotation,
+    condition_statement=condition_lists.condition_statement,
+    condition_emitters=CONDITION_EMITTERS,
+    condition_replayers=CONDITION_REPLAYERS,
+)
+
+__all__ = ["RULES"]

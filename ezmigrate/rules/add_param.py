@@ -24,7 +24,6 @@ from ..core.ir import (
     TypeValue,
     Unsupported,
 )
-from ..core.registry import statement_rule
 from ..core.writer import EmitContext, quote
 from .condition_lists import statement_comments
 
@@ -36,7 +35,6 @@ TYPE_OBJECTS = ("float", "int", "str", "bool", "dict", "list", "tuple")
 DEFAULT_TYPES = (bool, int, float, str, dict, tuple)
 
 
-@statement_rule
 def add_param(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[ParamOp] | None:
     """Read one ``addParam`` call into a ``ParamOp``."""
     if not isinstance(stmt, cst.Expr) or ctx.self_method(stmt.value) != "addParam":

@@ -15,13 +15,16 @@ A label that the convention would not produce is written with ``.named("...")``.
 
 from __future__ import annotations
 
+from typing import Any
+
 import libcst as cst
 
 from ezskiros_runtime.labels import conventional_label
 
 from ..core.context import ExtractContext, bind_arguments
 from ..core.ir import CondSpec, Literal, Unsupported
-from ..core.registry import condition_emitter, condition_rule
+from ..core.registry import condition_emitter, condition_replayer
+from ..core.replay import literal_value as lit
 from ..core.writer import EmitContext, quote
 
 RELATION_ARGS = ("label", "relation", "subject_key", "object_key", "desired_state")
@@ -47,7 +50,6 @@ CLASSES = {
 OPERATORS = {"=": "==", ">": ">", "<": "<", ">=": ">=", "<=": "<="}
 
 
-@condition_rule
 def factory_condition(node: cst.BaseExpression, ctx: ExtractContext) -> CondSpec | None:
     """``self.getXCond(...)`` or ``ConditionX(...)`` with literal arguments."""
     if not isinstance(node, cst.Call):
@@ -161,3 +163,43 @@ def emit_on_type(spec: CondSpec, ctx: EmitContext) -> str:
     assert spec.vocabulary is not None and spec.subject is not None
     ref = ctx.class_ref(spec.vocabulary) or quote(spec.vocabulary)
     return with_label(spec, f"{ctx.subject(spec.subject)}.is_a({ref})", ctx)
+
+
+@condition_replayer("relation")
+def replay_relation(desc: Any, spec: CondSpec) -> object:
+    return desc.getRelationCond(lit(spec.label), spec.vocabulary or "", spec.subject or "",
+                                spec.object or "", lit(spec.desired))
+
+
+@condition_replayer("abstract_relation")
+def replay_abstract_relation(desc: Any, spec: CondSpec) -> object:
+    return desc.getAbstractRelationCond(lit(spec.label), spec.vocabulary or "",
+                                        spec.subject or "", spec.object or "",
+                                        lit(spec.desired))
+
+
+@condition_replayer("property")
+def replay_property(desc: Any, spec: CondSpec) -> object:
+    return desc.getPropCond(lit(spec.label), spec.vocabulary or "", spec.subject or "",
+                            spec.operator or "", lit(spec.value), lit(spec.desired))
+
+
+@condition_replayer("has_property")
+def replay_has_property(desc: Any, spec: CondSpec) -> object:
+    return desc.getHasPropCond(lit(spec.label), spec.vocabulary or "", spec.subject or "",
+                               lit(spec.desired))
+
+
+@condition_replayer("is_specified")
+def replay_is_specified(desc: Any, spec: CondSpec) -> object:
+    return desc.getIsSpecifiedCond(lit(spec.label), spec.subject or "", lit(spec.desired))
+
+
+@condition_replayer("generate")
+def replay_generate(desc: Any, spec: CondSpec) -> object:
+    return desc.getGenerateCond(lit(spec.label), spec.subject or "", lit(spec.desired))
+
+
+@condition_replayer("on_type")
+def replay_on_type(desc: Any, spec: CondSpec) -> object:
+    return desc.getOnTypeCond(lit(spec.label), spec.subject or "", spec.vocabulary or "")

@@ -13,13 +13,12 @@ import libcst as cst
 
 from ..core.context import ExtractContext, bind_arguments
 from ..core.ir import AddCondition, Comments, CondSpec, Unsupported
-from ..core.registry import CONDITION_EMITTERS, CONDITION_RULES, statement_rule
+from ..core.registry import CONDITION_EMITTERS
 from ..core.writer import LINE_LIMIT, EmitContext
 
 LISTS = {"addPreCondition": "pre", "addHoldCondition": "hold", "addPostCondition": "post"}
 
 
-@statement_rule
 def add_condition(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[AddCondition] | None:
     """One ``add*Condition`` statement."""
     if not isinstance(stmt, cst.Expr):
@@ -40,7 +39,7 @@ def condition_of(node: cst.BaseExpression, ctx: ExtractContext) -> CondSpec:
         held = ctx.locals.get(node.value)
         if isinstance(held, CondSpec):
             return held
-    for rule in CONDITION_RULES:
+    for rule in ctx.rules.conditions:
         spec = rule(node, ctx)
         if spec is not None:
             return spec

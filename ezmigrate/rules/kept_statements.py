@@ -11,12 +11,10 @@ import libcst as cst
 
 from ..core.context import ExtractContext
 from ..core.ir import CondSpec, KeptStatement, Operation, Unsupported
-from ..core.registry import statement_rule
 
 KEPT_SELF_CALLS = frozenset({"setAvailableForPlanning"})
 
 
-@statement_rule
 def kept_statement(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[Operation] | None:
     """Keep whitelisted self-calls and attribute assignments; drop ``pass``/``return``."""
     if isinstance(stmt, cst.Pass) or (isinstance(stmt, cst.Return) and stmt.value is None):

@@ -15,19 +15,17 @@ import libcst as cst
 
 from ..core.context import ExtractContext
 from ..core.ir import CommentOnly, KeptStatement, Operation
-from ..core.registry import CONDITION_RULES, statement_rule
 from .condition_lists import statement_comments
 from .kept_statements import keep
 
 
-@statement_rule
 def local_assignment(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[Operation] | None:
     """``name = <condition | literal | anything>`` with one plain name as target."""
     if not (isinstance(stmt, cst.Assign) and len(stmt.targets) == 1
             and isinstance(stmt.targets[0].target, cst.Name)):
         return None
     name = stmt.targets[0].target.value
-    for rule in CONDITION_RULES:
+    for rule in ctx.rules.conditions:
         spec = rule(stmt.value, ctx)
         if spec is not None:
             ctx.locals[name] = spec

@@ -12,11 +12,14 @@ Or-conditions are always labelled "or", so no ``.named`` is ever written for the
 
 from __future__ import annotations
 
+from typing import Any
+
 import libcst as cst
 
 from ..core.context import ExtractContext, bind_arguments
 from ..core.ir import CommentOnly, CondSpec, Literal, Unsupported
-from ..core.registry import condition_emitter, condition_rule, statement_rule
+from ..core.registry import condition_emitter, condition_replayer
+from ..core.replay import literal_value, replay_condition
 from ..core.writer import EmitContext
 from .condition_lists import (
     condition_of,
@@ -26,7 +29,6 @@ from .condition_lists import (
 )
 
 
-@condition_rule
 def or_condition(node: cst.BaseExpression, ctx: ExtractContext) -> CondSpec | None:
     """``self.getOrCond(desired)`` or ``ConditionOr(desired)``: an empty disjunction."""
     if not isinstance(node, cst.Call):
@@ -43,7 +45,6 @@ def or_condition(node: cst.BaseExpression, ctx: ExtractContext) -> CondSpec | No
     return CondSpec(kind="or", label=Literal("or", '"or"'), line=ctx.line(node), desired=desired)
 
 
-@statement_rule
 def add_child(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[CommentOnly] | None:
     """``o.addCondition(cond)`` on a local or-condition."""
     if not (isinstance(stmt, cst.Expr) and isinstance(stmt.value, cst.Call)
@@ -95,3 +96,11 @@ def wrapped_or(spec: CondSpec, ctx: EmitContext, offset: int) -> str:
     if separator == ",":
         return opening + (",\n" + pad).join(children) + ")"
     return opening + ("\n" + pad + "| ").join(children) + ")"
+
+
+@condition_replayer("or")
+def replay_or(desc: Any, spec: CondSpec) -> object:
+    condition = desc.getOrCond(literal_value(spec.desired))
+    for child in spec.children:
+        condition.addCondition(replay_condition(desc, child))
+    return condition

@@ -17,7 +17,6 @@ import libcst as cst
 
 from ..core.context import ExtractContext
 from ..core.ir import CommentOnly, Comments, Operation, Unsupported
-from ..core.registry import statement_rule
 
 
 def _called_base(call: cst.Call, ctx: ExtractContext) -> str | None:
@@ -38,7 +37,6 @@ def _called_base(call: cst.Call, ctx: ExtractContext) -> str | None:
     return None
 
 
-@statement_rule
 def parent_call(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[Operation] | None:
     """Inline the operations of the base description whose ``createDescription`` is called."""
     if not (isinstance(stmt, cst.Expr) and isinstance(stmt.value, cst.Call)):

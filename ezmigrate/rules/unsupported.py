@@ -11,11 +11,9 @@ import libcst as cst
 
 from ..core.context import ExtractContext
 from ..core.ir import Operation, Unsupported
-from ..core.registry import statement_rule
 from .condition_factories import FACTORIES
 
 
-@statement_rule
 def unsupported(stmt: cst.BaseSmallStatement, ctx: ExtractContext) -> list[Operation] | None:
     """Always raises: explains why the statement blocks an exact translation."""
     line = ctx.line(stmt)
