@@ -15,7 +15,7 @@ import ast
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from .discover import Candidate, discover
 from .lint.diagnostic import Diagnostic, Positions, diagnostic
@@ -27,6 +27,7 @@ from .results import FileResult
 from .verify.pool import PoolConfig, Standby, job_for, run_jobs
 
 if TYPE_CHECKING:
+    from ezskiros_runtime.diagnostics import ClassError
     from ezskiros_runtime.ontology.index import OntologyIndex
 
     from .compound.analysis import Trees
@@ -191,12 +192,9 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
         for error in loaded.errors:
             outcome.diagnostics.append(_class_error(path, where, error))
         for found in loaded.findings:
-            suggestions = found.get("suggestions") or []
             outcome.diagnostics.append(diagnostic(
-                path, where, str(found.get("kind", "description")),
-                int(found.get("line") or 0), str(found.get("message", "")),
-                str(found.get("skill", "")),
-                f"Did you mean {suggestions[0]}?" if suggestions else None))
+                path, where, found.kind, found.line or 0, found.message, found.skill,
+                f"Did you mean {found.suggestions[0]}?" if found.suggestions else None))
     outcome.diagnostics.sort(key=lambda d: (d.path, d.line, d.column, d.code))
     return outcome
 
@@ -232,6 +230,5 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
     return list(found.values())
 
 
-def _class_error(path: str, where: Positions, error: dict[str, Any]) -> Diagnostic:
-    return diagnostic(path, where, "description", int(error.get("line") or 0),
-                      str(error.get("message", "")), str(error.get("name", "")))
+def _class_error(path: str, where: Positions, error: ClassError) -> Diagnostic:
+    return diagnostic(path, where, "description", error.line or 0, error.message, error.name)

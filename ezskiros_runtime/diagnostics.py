@@ -68,6 +68,34 @@ class Finding:
         data["code"] = self.code
         return data
 
+    @classmethod
+    def from_json(cls, data: dict[str, Any]) -> Finding:
+        """The finding ``to_json`` wrote (across a process boundary): ``code`` is derived."""
+        fields = {k: v for k, v in data.items() if k in cls.__dataclass_fields__}
+        return cls(**{**fields, "suggestions": tuple(data.get("suggestions") or ())})
+
+
+@dataclass(frozen=True)
+class ClassError:
+    """A description class that could not be loaded.
+
+    ``kind`` is ``"not-upstream-api"`` (a fork's API, §7: report as skipped),
+    ``"not-declarative"`` (a ``ConditionFunction``), or ``"error"`` (anything else).
+    """
+
+    name: str
+    line: int | None
+    kind: str
+    message: str
+
+    def to_json(self) -> dict[str, Any]:
+        return asdict(self)
+
+    @classmethod
+    def from_json(cls, data: dict[str, Any]) -> ClassError:
+        return cls(str(data.get("name", "?")), data.get("line"),
+                   str(data.get("kind", "error")), str(data.get("message", "")))
+
 
 def _readable_path(path: str) -> str:
     """Shorten absolute paths below the working directory; leave everything else alone."""

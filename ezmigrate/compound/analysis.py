@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 from ezskiros_runtime.compound.checks import CompoundFinding, check_model
 from ezskiros_runtime.compound.library import DescriptionInfo, SkillIndex
-from ezskiros_runtime.compound.model import CompoundModel, model_from_json
+from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.compound.trace import Unanalysable
 from ezskiros_runtime.model import SkillModel
 
@@ -132,18 +132,16 @@ def _record(trees: Trees, path: str, pending: list[NeedsTrace],
                 unread.implementation, f"{unread.reason}, and the module could not be "
                 f"loaded to trace it ({outcome.status}: {outcome.message})", unread.line)))
         return
-    for data in outcome.compounds:
-        name = str(data.get("implementation", ""))
-        need = needs.get(name)
+    for found in outcome.compounds:
+        need = needs.get(found.implementation)
         if need is None:
             continue
-        if "unanalysable" in data:
-            trees.models.append((path, Unanalysable(
-                name, str(data["unanalysable"]), int(data.get("line") or need.line))))
+        if isinstance(found, Unanalysable):
+            trees.models.append((path, replace(found, line=found.line or need.line)))
         else:
-            trees.models.append((path, replace(
-                model_from_json(data), path=path, line=need.line,
-                description=need.description, label=need.label)))
+            trees.models.append((path, replace(found, path=path, line=need.line,
+                                               description=need.description,
+                                               label=need.label)))
 
 
 def description_of(name: str, model: dict[str, Any] | None, origin: str, path: str,

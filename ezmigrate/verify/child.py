@@ -18,10 +18,9 @@ import sys
 import time
 import traceback
 from pathlib import Path
-from typing import Any
 
 from .overlay import overlaid
-from .protocol import LoadJob, LoadOutcome, Status
+from .protocol import LoadJob, LoadOutcome, Status, compound_of
 
 NEWER_SYNTAX = "cannot import under Python"
 """How a load that failed on syntax newer than this Python begins its message."""
@@ -77,6 +76,7 @@ def load(job: LoadJob) -> LoadOutcome:
 
 def _load_one(job: LoadJob) -> LoadOutcome:
     """``load`` for one file."""
+    from ezskiros_runtime.diagnostics import Finding
     from ezskiros_runtime.dsl.policy import collecting
     from ezskiros_runtime.legacy.errors import ModuleLoadError
     from ezskiros_runtime.legacy.loader import load_bytes
@@ -108,11 +108,10 @@ def _load_one(job: LoadJob) -> LoadOutcome:
                            "error while loading; its traceback is in the captured stderr)")
     return LoadOutcome(
         "ok",
-        models=[m.to_json() for m in result.models],
-        errors=[_plain(e) for e in result.errors],
-        findings=[_plain(f) for f in result.findings],
+        models=[m.to_json() for m in result.models], errors=list(result.errors),
+        findings=[f for f in result.findings if isinstance(f, Finding)],
         seconds=time.perf_counter() - started, stood_in=result.stood_in,
-        compounds=result.compounds)
+        compounds=[compound_of(c) for c in result.compounds])
 
 
 def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,
@@ -147,18 +146,6 @@ def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,
         else f"line {row}" if row is not None else "unknown position"
     name = Path(error.filename).name if error.filename else path.name
     return f"SyntaxError in {name} at {where}: {error.msg}", line if line is not None else row
-
-
-def _plain(item: Any) -> dict[str, Any]:
-    if hasattr(item, "to_json"):
-        data: dict[str, Any] = item.to_json()
-        return data
-    if hasattr(item, "__dataclass_fields__"):
-        from dataclasses import asdict
-
-        return {k: (str(v) if not isinstance(v, (int, float, str, type(None))) else v)
-                for k, v in asdict(item).items()}
-    return {"message": str(item)}
 
 
 def run_child(job: LoadJob, result_path: str, stdout_path: str, stderr_path: str,

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from ezskiros_runtime.compare import compare
+from ezskiros_runtime.diagnostics import ClassError
 from ezskiros_runtime.model import SkillModel
 
 from .protocol import LoadOutcome
@@ -32,8 +33,8 @@ class ClassVerdict:
         return self.verdict == "equivalent"
 
 
-def _errors(outcome: LoadOutcome) -> dict[str, dict[str, Any]]:
-    return {e.get("name", "?"): e for e in outcome.errors}
+def _errors(outcome: LoadOutcome) -> dict[str, ClassError]:
+    return {e.name: e for e in outcome.errors}
 
 
 def compare_outcomes(before: LoadOutcome, after: LoadOutcome, *, ignore_order: bool = False,
@@ -45,26 +46,34 @@ def compare_outcomes(before: LoadOutcome, after: LoadOutcome, *, ignore_order: b
     names = list(dict.fromkeys([*old, *old_errors, *new, *new_errors]))
     verdicts = []
     for name in names:
-        line_b = old[name].line if name in old else old_errors.get(name, {}).get("line")
-        line_a = new[name].line if name in new else new_errors.get(name, {}).get("line")
+        line_b = _line(name, old, old_errors)
+        line_a = _line(name, new, new_errors)
         verdict = _one(name, old, new, old_errors, new_errors, ignore_order, ignore_labels)
         verdict.line_before, verdict.line_after = line_b, line_a
         verdicts.append(verdict)
     return verdicts
 
 
+def _line(name: str, models: dict[str, SkillModel],
+          errors: dict[str, ClassError]) -> int | None:
+    """Where ``name`` is on one side: its model's line, its error's, or nowhere."""
+    if name in models:
+        return models[name].line
+    return errors[name].line if name in errors else None
+
+
 def _one(name: str, old: dict[str, SkillModel], new: dict[str, SkillModel],
-         old_errors: dict[str, dict[str, Any]], new_errors: dict[str, dict[str, Any]],
+         old_errors: dict[str, ClassError], new_errors: dict[str, ClassError],
          ignore_order: bool, ignore_labels: bool) -> ClassVerdict:
     if name in new_errors and name not in old_errors:
         return ClassVerdict(name, "error", "the migrated class fails to load: "
-                            + str(new_errors[name].get("message", "")))
+                            + new_errors[name].message)
     if name in old_errors and name in new_errors:  # no model on either side: no proof
         return ClassVerdict(name, "unverified", "fails to load in both versions, so it "
-                            "cannot be verified: " + str(new_errors[name].get("message", "")))
+                            "cannot be verified: " + new_errors[name].message)
     if name in old_errors:
         return ClassVerdict(name, "error", "the legacy class fails to load: "
-                            + str(old_errors[name].get("message", "")))
+                            + old_errors[name].message)
     if name not in new:
         return ClassVerdict(name, "missing-after", "the class is missing after migration")
     if name not in old:

@@ -1,15 +1,25 @@
 """What crosses the process boundary during verification: load jobs and their outcomes.
 
-Plain JSON-ready dataclasses: a job says which file to import (and, for a rewrite not yet
-written, the bytes to import instead of the file's own); an outcome carries the models,
-class errors, check findings and captured output, or why the load failed.
+A job says which file to import (and, for a rewrite not yet written, the bytes to import
+instead of the file's own); an outcome carries the models, class errors, check findings,
+traced compound skills and captured output, or why the load failed. Both travel as JSON
+and are rebuilt as the project's own types on arrival (``from_json``): class errors and
+findings as the runtime's ``ClassError`` and ``Finding``, traced trees as ``CompoundModel``
+or ``Unanalysable``, so no reader digs in dictionaries. Models keep their canonical JSON
+(``SkillModel.to_json``), the form reports and comparisons are defined on.
 """
 
 from __future__ import annotations
 
 import base64
-from dataclasses import asdict, dataclass, field
-from typing import Any, Literal
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Literal
+
+from ezskiros_runtime.diagnostics import ClassError, Finding
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.compound.model import CompoundModel
+    from ezskiros_runtime.compound.trace import Unanalysable
 
 Status = Literal["ok", "import-error", "syntax", "timeout", "crashed", "exit", "memory"]
 
@@ -60,8 +70,8 @@ class LoadOutcome:
     message: str = ""
     line: int | None = None
     models: list[dict[str, Any]] = field(default_factory=list)
-    errors: list[dict[str, Any]] = field(default_factory=list)
-    findings: list[dict[str, Any]] = field(default_factory=list)
+    errors: list[ClassError] = field(default_factory=list)
+    findings: list[Finding] = field(default_factory=list)
     stdout: str = ""
     stderr: str = ""
     seconds: float = 0.0
@@ -71,19 +81,47 @@ class LoadOutcome:
     """The file failed on syntax newer than the interpreter that loaded it."""
     python: str = ""
     """The interpreter that loaded the file when it was not ezmigrate's own."""
-    compounds: list[dict[str, Any]] = field(default_factory=list)
-    """Traced compound skills (``LoadJob.trace``), as ``FileLoad.compounds``."""
+    compounds: list[CompoundModel | Unanalysable] = field(default_factory=list)
+    """Traced compound skills (``LoadJob.trace``)."""
     more: list[LoadOutcome] = field(default_factory=list)
     """The outcomes of ``LoadJob.more``, in order; fewer when the child died on the way."""
 
     def to_json(self) -> dict[str, Any]:
-        return asdict(self)
+        return {**{name: getattr(self, name) for name in self.__dataclass_fields__},
+                "errors": [e.to_json() for e in self.errors],
+                "findings": [f.to_json() for f in self.findings],
+                "compounds": [compound_json(c) for c in self.compounds],
+                "more": [o.to_json() for o in self.more]}
 
     @classmethod
     def from_json(cls, data: dict[str, Any]) -> LoadOutcome:
-        more = [cls.from_json(item) for item in data.get("more", ())]
-        return cls(**{**data, "more": more})
+        return cls(**{**data,
+                      "errors": [ClassError.from_json(e) for e in data.get("errors", ())],
+                      "findings": [Finding.from_json(f) for f in data.get("findings", ())],
+                      "compounds": [compound_of(c) for c in data.get("compounds", ())],
+                      "more": [cls.from_json(item) for item in data.get("more", ())]})
 
     @property
     def loaded(self) -> bool:
         return self.status == "ok"
+
+
+def compound_of(data: dict[str, Any]) -> CompoundModel | Unanalysable:
+    """A traced tree from its JSON (``FileLoad.compounds``): the model, or why none."""
+    from ezskiros_runtime.compound.model import model_from_json
+    from ezskiros_runtime.compound.trace import Unanalysable
+
+    if "unanalysable" in data:
+        return Unanalysable(str(data.get("implementation", "")), str(data["unanalysable"]),
+                            int(data.get("line") or 0))
+    return model_from_json(data)
+
+
+def compound_json(found: CompoundModel | Unanalysable) -> dict[str, Any]:
+    """``compound_of``'s inverse."""
+    from ezskiros_runtime.compound.trace import Unanalysable
+
+    if isinstance(found, Unanalysable):
+        return {"implementation": found.implementation, "unanalysable": found.reason,
+                "line": found.line}
+    return found.to_json()

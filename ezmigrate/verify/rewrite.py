@@ -9,8 +9,8 @@ the file keeps its old content and its other converted skills are reported as no
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import Any
 
+from ezskiros_runtime.diagnostics import Finding as RuntimeFinding
 from ezskiros_runtime.dsl.policy import severity_of
 
 from ..results import Finding, SkillResult
@@ -187,7 +187,7 @@ def _reason(verdict: ClassVerdict) -> str:
     return verdict.message
 
 
-def rejects(finding: dict[str, Any]) -> bool:
+def rejects(finding: RuntimeFinding) -> bool:
     """Whether the EzSkiROS runtime refuses to load a skill with this finding.
 
     The child loads modules under ``collecting()``, which records findings instead of
@@ -195,8 +195,7 @@ def rejects(finding: dict[str, Any]) -> bool:
     same policy (and ``EZSKIROS_STRICT``) the robot applies. A finding without a severity
     is judged here by the same policy, never by a list of kinds of our own.
     """
-    severity = finding.get("severity") or severity_of(str(finding.get("kind", "")))
-    return severity == "error"
+    return (finding.severity or severity_of(finding.kind)) == "error"
 
 
 def rejections(skill: str, outcome: LoadOutcome, line: str = "line {}") -> list[str]:
@@ -206,9 +205,8 @@ def rejections(skill: str, outcome: LoadOutcome, line: str = "line {}") -> list[
     not load at all. ``line`` words the line number (whose file it is depends on the caller).
     """
     return list(dict.fromkeys(
-        str(data.get("message", "")) + (f" ({line.format(data['line'])})"
-                                        if data.get("line") else "")
-        for data in outcome.findings if data.get("skill") == skill and rejects(data)))
+        found.message + (f" ({line.format(found.line)})" if found.line else "")
+        for found in outcome.findings if found.skill == skill and rejects(found)))
 
 
 def _refuse_rejected(skill: SkillResult, after: LoadOutcome) -> bool:
@@ -236,16 +234,13 @@ def attach_findings(skills: list[SkillResult], after: LoadOutcome,
     ``STATIC_KINDS`` once per term; ``verify`` has no static pass and keeps them all.
     """
     by_name = {s.name: s for s in skills}
-    for data in after.findings:
-        skill = by_name.get(str(data.get("skill", "")))
-        if skill is None:
+    for found in after.findings:
+        skill = by_name.get(found.skill)
+        kind = found.kind.replace("_", "-")
+        if skill is None or kind in skip:
             continue
-        kind = str(data.get("kind", "check")).replace("_", "-")
-        message = str(data.get("message", ""))
-        if kind in skip:
-            continue
-        if not any(f.message == message for f in skill.findings):
-            skill.findings.append(Finding(kind, int(data.get("line") or 0), message))
+        if not any(f.message == found.message for f in skill.findings):
+            skill.findings.append(Finding(kind, found.line or 0, found.message))
 
 
 def note_stand_ins(notes: list[str], before: LoadOutcome, after: LoadOutcome) -> None:

@@ -33,6 +33,7 @@ from pathlib import Path
 from types import CodeType, ModuleType, TracebackType
 from typing import Any
 
+from ..diagnostics import ClassError
 from ..model import SkillModel
 from .abstract_skill import SkillCore, SkillDescription
 from .errors import ModuleLoadError, NotDeclarativeError, NotUpstreamAPIError
@@ -42,20 +43,6 @@ from .stand_ins import expected_stand_in, legacy_imports, library_roots
 __all__ = ["ClassError", "FileLoad", "ModuleLoadError", "load_bytes", "load_file", "load_source"]
 
 _counter = itertools.count(1)
-
-
-@dataclass(frozen=True)
-class ClassError:
-    """A description class that could not be loaded.
-
-    ``kind`` is ``"not-upstream-api"`` (a fork's API, §7: report as skipped),
-    ``"not-declarative"`` (a ``ConditionFunction``), or ``"error"`` (anything else).
-    """
-
-    name: str
-    line: int | None
-    kind: str
-    message: str
 
 
 @dataclass

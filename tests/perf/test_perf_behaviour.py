@@ -304,7 +304,7 @@ def test_the_warm_up_descriptions_load_and_agree():
         models = [SkillModel.from_json(o.models[0]) for o in (legacy, migrated)]
         print(json.dumps([legacy.status, migrated.status, len(legacy.models),
                           len(migrated.models), [str(d) for d in compare(*models)],
-                          [c.get("obtained") for c in legacy.compounds]]))
+                          [c.obtained for c in legacy.compounds]]))
     """)
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=False)

@@ -297,8 +297,8 @@ class RoundTrip:
                 return
         for side, outcome in (("legacy", before), ("migrated", after)):
             for error in outcome.errors:
-                fail("class-error", f"the {side} class fails to load: {error.get('message')}",
-                     str(error.get("name")))
+                fail("class-error", f"the {side} class fails to load: {error.message}",
+                     error.name)
         loaded = [m["name"] for m in before.models]
         if sorted(loaded) != sorted(module.class_names):
             fail("static", f"the loader found the classes {loaded}, the module has "
