@@ -21,7 +21,7 @@ medians:
     summary) or compared classes, over the wall time. For ``rewrite`` the verification phase
     alone is also shown: skills over (median with verification - median without).
 (v) the verification step alone: a small driver migrates the tree (untimed), then times
-    ``verify_migrated`` (the function ``rewrite`` calls), zygote start-up included.
+    ``project.verify_changed`` (the verification ``rewrite`` runs), zygote start-up included.
 (c) ontology load, cold (empty cache folder) against warm (cache primed), each in a fresh
     process: ``load_index(['../shared/ontology/skiros2'])`` timed inside the process.
 (d) peak memory of every command above, three ways:
@@ -284,9 +284,8 @@ VERIFY_STEP_CHILD = """
 import json, resource, sys, time
 from pathlib import Path
 from ezmigrate.discover import discover
-from ezmigrate.package import migrate_package
+from ezmigrate.project import settle, verify_changed
 from ezmigrate.session import RewriteOptions
-from ezmigrate.verify.rewrite import verify_migrated
 from ezskiros_runtime.ontology.config import resolve_ontology_paths
 from ezskiros_runtime.ontology.index import load_index
 
@@ -296,11 +295,12 @@ index = load_index(list(source.paths) or None)
 options = RewriteOptions(paths=[tree], dry_run=True, jobs=jobs,
                          ontology=tuple(str(p) for p in source.paths))
 candidates, _ = discover([tree])
-changed = [m for m in migrate_package(candidates, index, jobs) if m.result.changed]
+migrated = settle(candidates, index, jobs)
+changed = [m for m in migrated if m.result.changed]
 converted = sum(s.status == "converted" for m in changed for s in m.result.skills)
 before = resource.getrusage(resource.RUSAGE_CHILDREN)
 started = time.perf_counter()
-verify_migrated(changed, options)
+verify_changed(migrated, options.checks)
 seconds = time.perf_counter() - started
 after = resource.getrusage(resource.RUSAGE_CHILDREN)
 verified = sum(bool(s.equivalent) for m in changed for s in m.result.skills)
@@ -309,7 +309,8 @@ sys.stderr.write(json.dumps({"seconds": seconds, "changed": len(changed), "conve
                              "children_cpu": after.ru_utime + after.ru_stime
                              - before.ru_utime - before.ru_stime}))
 """
-"""Times ``verify_migrated`` (what ``rewrite`` calls) on the tree's changed files."""
+"""Times ``verify_changed`` (the verification ``settle`` runs for ``rewrite``) on the tree's
+changed files."""
 
 
 def verify_step_runs(tree: Path, files: int, jobs: int, rounds: int, env: dict[str, str],
@@ -455,7 +456,7 @@ def markdown(results: dict, jobs: int) -> str:
     step_rows = [(size, results["verify_step"][str(size)]) for size in sizes
                  if str(size) in results.get("verify_step", {})]
     if step_rows:
-        lines += ["", "(b, continued) the verification step alone: `verify_migrated` (what "
+        lines += ["", "(b, continued) the verification step alone: `project.verify_changed` (what "
                   "`rewrite` calls after migrating) timed inside one process, zygote start-up "
                   "included (medians)", "",
                   "| files | changed files | skills verified | seconds | **skills/s** | "

@@ -17,12 +17,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from .cross_file import RUNTIME_MARKER
 from .discover import Candidate, discover
 from .lint.diagnostic import Diagnostic, Positions, diagnostic
 from .lint.legacy import legacy_hits
 from .lint.plain_reader import Declined, read_plain
-from .package import RUNTIME_MARKER, migrate_package
 from .prefilter import may_hold_descriptions
+from .project import settle
 from .results import FileResult
 from .verify.pool import PoolConfig, Standby, job_for, run_jobs
 
@@ -123,7 +124,7 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     declined += [c for c, _, _ in plain if c.root in whole_package]
     yield from ((c, d, r) for c, d, r in plain if c.root not in whole_package)
     if declined:
-        for item in migrate_package(declined, index, workers):
+        for item in settle(declined, index, workers):
             yield item.candidate, item.original, item.result
 
 

@@ -251,7 +251,7 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
     """The operations of the ``wanted`` description classes of a module that convert.
 
     Another file deriving from one of them inlines these when it calls the base's
-    ``createDescription`` (see ``ezmigrate.package``).
+    ``createDescription`` (see ``ezmigrate.cross_file``).
     """
     try:
         module = cst.parse_module(source)

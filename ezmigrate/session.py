@@ -20,9 +20,10 @@ from typing import TYPE_CHECKING
 
 from . import holdpoint, interrupt
 from .discover import Candidate, discover
-from .package import migrate_package
 from .progress import Progress
+from .project import Checks, settle
 from .runner import Migrated, default_jobs
+from .verify.verdicts import Comparison
 from .writing import WriteRefused, atomic_write, remove_stale_temporary
 
 if TYPE_CHECKING:
@@ -54,6 +55,17 @@ class RewriteOptions:
     def writes(self) -> bool:
         return not (self.dry_run or self.check)
 
+    @property
+    def checks(self) -> Checks | None:
+        """How ``settle`` verifies (None: ``--no-verify``)."""
+        if not self.verify:
+            return None
+        from .verify.pool import PoolConfig
+
+        return Checks(PoolConfig(workers=self.jobs, timeout=self.timeout,
+                                 ontology=self.ontology, python=self.python),
+                      Comparison(self.ignore_order, self.ignore_labels))
+
 
 @dataclass
 class RewriteOutcome:
@@ -65,13 +77,9 @@ class RewriteOutcome:
     refused: list[str] = field(default_factory=list)
 
 
-Verifier = Callable[[list[Migrated], RewriteOptions], None]
-
-
 def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
-                verifier: Verifier | None = None,
                 on_written: Callable[[str], None] | None = None) -> RewriteOutcome:
-    """Discover and migrate; verify converted skills; write files whose skills all verified.
+    """Discover; settle the project (migrate, verify); write files whose skills all verified.
 
     Raises ``interrupt.Interrupted`` when a signal stops the run (see the module doc).
     """
@@ -81,11 +89,8 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     notes += _stale_notes(stale, options.writes)
     holdpoint.reach("discovered")
     with Progress.for_stream(len(candidates)) as progress:  # gone before anything is said
-        migrated = migrate_package(candidates, index, options.jobs, progress)
-    holdpoint.reach("migrated")
+        migrated = settle(candidates, index, options.jobs, options.checks, progress)
     outcome = RewriteOutcome(migrated, notes)
-    if options.verify and verifier is not None:
-        verifier([m for m in migrated if m.result.changed], options)
     if not options.writes:
         return outcome
     interrupt.track(outcome.written, [i.candidate.relative for i in migrated

@@ -16,56 +16,41 @@ import tempfile
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .migrate import Settings, migrate
 from .results import FileResult
 
 if TYPE_CHECKING:
     from .options import Options
-    from .session import RewriteOptions
+
+NAME = "stdin_module.py"
+"""What the one file of the project is called on disk while it is migrated and loaded."""
 
 
 def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, verify: bool,
                   ignore_order: bool = False,
                   ignore_labels: bool = False) -> tuple[bytes, FileResult]:
     """Stdin's bytes and their result; ``new_source`` is set only when it verified (or
-    verification is off). The command line prints and exits exactly as for a file."""
-    data = sys.stdin.buffer.read()
-    result = migrate(data, Settings(index=index), "-")
-    if isinstance(result.new_source, bytes) and verify:
-        result.new_source = _verified(data, result, _request(options, ontology, ignore_order,
-                                                             ignore_labels))
-    return data, result
+    verification is off). The command line prints and exits exactly as for a file.
 
-
-def _request(options: Options, ontology: tuple[str, ...], ignore_order: bool,
-             ignore_labels: bool) -> RewriteOptions:
-    """What ``rewrite PATH`` would be asked for this one file: same settings, same checks.
-
+    Stdin is a project of one file: written to a private folder, it is settled like any
+    repository (``project.settle``: migrated, verified, classes that fail held back and
+    the rest migrated again), so its verdicts follow the same rules as ``rewrite PATH``.
     Two loads (before and after) never need more than two workers; ``jobs`` can only lower
-    that (a project that says ``jobs = 1`` has its reasons, memory most often)."""
-    from .session import RewriteOptions
-
-    return RewriteOptions(paths=[], jobs=min(2, options.jobs), timeout=options.timeout,
-                          python=options.python, ontology=ontology,
-                          ignore_order=ignore_order, ignore_labels=ignore_labels)
-
-
-def _verified(data: bytes, result: FileResult, request: RewriteOptions) -> bytes | None:
-    """The migrated bytes if they verify, by the same rules as ``rewrite``; else ``None``."""
+    that (a project that says ``jobs = 1`` has its reasons, memory most often).
+    """
     from .discover import Candidate
-    from .runner import Migrated
-    from .verify.pool import PoolConfig, job_for, run_jobs
-    from .verify.rewrite import apply_verdicts
-    from .writing import digest
+    from .project import Checks, settle
+    from .verify.pool import PoolConfig
+    from .verify.verdicts import Comparison
 
-    assert isinstance(result.new_source, bytes)
+    data = sys.stdin.buffer.read()
+    workers = min(2, options.jobs)
+    checks = Checks(PoolConfig(workers=workers, timeout=options.timeout, ontology=ontology,
+                               python=options.python),
+                    Comparison(ignore_order, ignore_labels)) if verify else None
     with tempfile.TemporaryDirectory(prefix="ezmigrate-stdin-") as folder:
-        path = Path(folder) / "stdin_module.py"
+        path = Path(folder) / NAME
         path.write_bytes(data)
-        before, after = run_jobs([job_for(path, data), job_for(path, result.new_source)],
-                                 PoolConfig(workers=request.jobs, timeout=request.timeout,
-                                            ontology=request.ontology, python=request.python))
-    item = Migrated(Candidate(path, path.parent), data, digest(data), result)
-    apply_verdicts(item, before, after, request)
-    new = item.result.new_source
-    return new if isinstance(new, bytes) else None
+        [item] = settle([Candidate(path, path.parent)], index, 1, checks)
+    result = item.result
+    result.path = "-"
+    return data, result

@@ -11,7 +11,7 @@ from ..results import FileResult, SkillResult, SkillStatus
 from .compare_files import class_sources, compare_outcomes, load_failure
 from .pool import PoolConfig, job_for, run_jobs
 from .protocol import LoadJob, LoadOutcome
-from .rewrite import attach_findings, capture, note_stand_ins, rejections
+from .verdicts import attach_findings, capture, note_stand_ins, rejections
 
 
 @dataclass(frozen=True)

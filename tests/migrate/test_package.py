@@ -7,7 +7,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from ezmigrate.package import dotted, target_module
+from ezmigrate.cross_file import dotted, target_module
 
 BASE = '''\
 from skiros2_common.core.abstract_skill import SkillDescription

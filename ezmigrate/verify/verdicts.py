@@ -1,136 +1,51 @@
-"""Verification inside ``rewrite``: a file is written only if every class in it verified.
+"""The verdicts of verification on one migrated file: which skills are proven, which fail.
 
-Both versions of each changed file are loaded in isolated children (the legacy bytes as
-read, the migrated bytes in its place, same package layout). A converted skill whose model
-differs, or that does not load, fails with the difference; if anything in a file fails,
-the file keeps its old content and its other converted skills are reported as not written.
+Both versions of a changed file are loaded in isolated children (``pool``); this module
+reads the two outcomes into the file's result: a converted skill whose model differs, or
+that does not load, fails with the difference; if anything in a file fails, the file keeps
+its old content and its other converted skills are reported as not written. Which classes
+to hold back and migrate again is the project's decision (``ezmigrate.project``).
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass
 
 from ezskiros_runtime.diagnostics import Finding as RuntimeFinding
 from ezskiros_runtime.dsl.policy import severity_of
 
-from ..results import Finding, SkillResult
-from ..runner import Migrated
-from ..session import RewriteOptions
+from ..results import FileResult, Finding, SkillResult
 from .compare_files import ClassVerdict, compare_outcomes, load_failure
-from .pool import PoolConfig, job_for, run_jobs
 from .protocol import LoadOutcome
 
-MAX_ROUNDS = 3
-"""Rounds of holding refused classes back and verifying the rest of their files again."""
+
+@dataclass(frozen=True)
+class Comparison:
+    """How strictly two models must agree (``--ignore-order``, ``--ignore-labels``)."""
+
+    ignore_order: bool = False
+    ignore_labels: bool = False
 
 
-def verify_migrated(migrated: list[Migrated], options: RewriteOptions) -> None:
-    """Verify every changed file; revert (in memory) what does not verify.
-
-    A class that fails (or that the runtime would refuse to load) is held as it was and its
-    file is migrated again without it, so the classes beside it that verified still land.
-    Files whose descriptions derive from a file migrated again are verified again with it.
-    """
-    if not migrated:
-        return
-    by_relative = {item.candidate.relative: item for item in migrated}
-    config = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=options.ontology,
-                        python=options.python)
-    pending = list(migrated)
-    for _ in range(MAX_ROUNDS):
-        jobs = []
-        for item in pending:
-            assert isinstance(item.result.new_source, bytes)
-            root = item.candidate.root
-            jobs.append(job_for(item.candidate.path, item.original, root))
-            after = job_for(item.candidate.path, item.result.new_source, root)
-            after.overlays = _overlays(item, by_relative)
-            jobs.append(after)
-        outcomes = run_jobs(jobs, config)
-        again = []
-        for index, item in enumerate(pending):
-            culprits = apply_verdicts(item, outcomes[2 * index], outcomes[2 * index + 1],
-                                      options)
-            if culprits and _migrate_holding(item, culprits):
-                again.append(item)
-        redone = {item.candidate.relative for item in again}
-        again += [item for item in migrated if item not in again and item.result.changed
-                  and redone & set(item.result.depends_on)]
-        if not again:
-            break
-        pending = again
-    else:  # still unsettled after the last round: write none of it
-        for item in pending:
-            for skill in item.result.skills:
-                if skill.status == "converted":
-                    _fail(skill, "not verified: its file changed in every verification round")
-            item.result.new_source = None
-    _hold_dependents(migrated, by_relative)
-
-
-def _migrate_holding(item: Migrated, culprits: dict[str, SkillResult]) -> bool:
-    """Migrate ``item`` again leaving ``culprits`` as they are; True when something still
-    changes (and so must be verified again)."""
-    from ..migrate import Settings, migrate
-
-    settings = item.settings or Settings()
-    held = {**settings.held, **{name: skill.reason or "held" for name, skill in culprits.items()}}
-    item.settings = replace(settings, held=held)
-    result = migrate(item.original, item.settings, item.candidate.relative)
-    result.skills = [culprits.get(skill.name, skill) for skill in result.skills]
-    result.notes = item.result.notes + result.notes
-    item.result = result
-    return result.changed
-
-
-def _overlays(item: Migrated, by_relative: dict[str, Migrated]) -> dict[str, bytes]:
-    """Migrated bytes of the files whose descriptions ``item``'s classes derive from."""
-    overlays = {}
-    for relative in item.result.depends_on:
-        base = by_relative.get(relative)
-        if base is not None and isinstance(base.result.new_source, bytes):
-            overlays[str(base.candidate.path.absolute())] = base.result.new_source
-    return overlays
-
-
-def _hold_dependents(migrated: list[Migrated], by_relative: dict[str, Migrated]) -> None:
-    """A file deriving from a base file that will not be written is not written either."""
-    changed = True
-    while changed:
-        changed = False
-        for item in migrated:
-            if item.result.new_source is None:
-                continue
-            held = [r for r in item.result.depends_on
-                    if r in by_relative and by_relative[r].result.new_source is None]
-            if held:
-                for skill in item.result.skills:
-                    if skill.status == "converted":
-                        _fail(skill, f"not written: it derives from a description in {held[0]}, "
-                                     "which is not being written")
-                item.result.new_source = None
-                changed = True
-
-
-def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
-                   options: RewriteOptions) -> dict[str, SkillResult]:
+def apply_verdicts(result: FileResult, before: LoadOutcome, after: LoadOutcome,
+                   comparison: Comparison) -> dict[str, SkillResult]:
     """Mark skills from the two loads; drop the new content unless everything verified.
 
     Returns the converted classes that did not verify when others in the file did: held
     as they were, the file can be migrated again without them.
     """
-    result = item.result
     converted = [s for s in result.skills if s.status == "converted"]
     if not before.loaded or not after.loaded:
         side, outcome = ("legacy", before) if not before.loaded else ("migrated", after)
         for skill in converted:
-            _fail(skill, load_failure(side, outcome))
+            fail(skill, load_failure(side, outcome))
         capture(result.notes, before, after)
         result.new_source = None
         return {}
     note_stand_ins(result.notes, before, after)
     verdicts = {v.name: v for v in compare_outcomes(
-        before, after, ignore_order=options.ignore_order, ignore_labels=options.ignore_labels)}
+        before, after, ignore_order=comparison.ignore_order,
+        ignore_labels=comparison.ignore_labels)}
     by_name = {s.name: s for s in result.skills}
     all_ok = True
     for name, verdict in verdicts.items():
@@ -146,11 +61,11 @@ def apply_verdicts(item: Migrated, before: LoadOutcome, after: LoadOutcome,
                                                             "failed")
         if found is None:
             result.skills.append(skill)
-        _fail(skill, _reason(verdict), verdict)
+        fail(skill, _reason(verdict), verdict)
     for skill in converted:  # converted, yet no class of that name was seen when loading
         if skill.name not in verdicts:
             all_ok = False
-            _fail(skill, "not verified: the class was not found when loading the file "
+            fail(skill, "not verified: the class was not found when loading the file "
                   "(is it defined conditionally?)")
     attach_findings(result.skills, after)
     for skill in converted:
@@ -171,7 +86,7 @@ STATIC_KINDS = frozenset({"unknown-vocabulary", "undeclared-parameter"})
 """Runtime finding kinds the static pass already reports (once per term or key)."""
 
 
-def _fail(skill: SkillResult, reason: str, verdict: ClassVerdict | None = None) -> None:
+def fail(skill: SkillResult, reason: str, verdict: ClassVerdict | None = None) -> None:
     skill.status = "failed"
     skill.reason = reason
     skill.equivalent = False if verdict is not None and verdict.verdict == "different" else None

@@ -18,13 +18,11 @@ from typing import TYPE_CHECKING
 from .core.classes import RUNTIME_ROOT, ezskiros_classes
 from .core.ir import Operation
 from .core.legacy_names import ast_dotted_name
-from .discover import Candidate
 from .migrate import Settings, exported_operations, migrate
-from .progress import Progress
-from .runner import Migrated, migrate_all
+from .runner import Migrated
 
 if TYPE_CHECKING:
-    from ezskiros_runtime.ontology.index import OntologyIndex
+    pass
 
 MAX_ROUNDS = 4
 RUNTIME_MARKER = RUNTIME_ROOT.encode()
@@ -251,19 +249,3 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
         if not changed:
             break
     return redone
-
-
-def migrate_package(candidates: Sequence[Candidate], index: OntologyIndex | None,
-                    jobs: int, progress: Progress | None = None) -> list[Migrated]:
-    """Migrate every candidate in parallel, then resolve bases defined in sibling files and
-    keep the legacy imports that sibling files import from a migrated one."""
-    migrated = migrate_all(candidates, index, jobs, progress)
-    exported = imported_from(migrated)
-    for item in migrated:
-        names = exported.get(item.candidate.relative)
-        if names and item.result.changed:
-            item.settings = Settings(index, exported=names)
-            item.result = migrate(item.original, item.settings, item.candidate.relative)
-    if any(m.result.foreign_bases for m in migrated):
-        resolve_cross_file(migrated, Settings(index=index), exported)
-    return migrated

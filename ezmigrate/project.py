@@ -1,0 +1,162 @@
+"""One owner for a migration: migrate, derive cross-file facts, verify, hold back, repeat.
+
+Every command that migrates goes through ``settle``: ``rewrite PATH`` (then writes what
+settled), ``rewrite -`` (a project of one file), and ``check`` for the legacy files its fast
+reader declines (without verification). A round:
+
+1. migrate every file that needs it, in parallel workers (``runner``);
+2. derive the facts that cross files (``cross_file``): names sibling files import from a
+   migrated one keep their legacy imports, bases defined in sibling files are inlined;
+   files whose facts changed are migrated again, until the facts are stable;
+3. verify the files that changed (both versions loaded in the sandbox, ``verify``);
+4. hold back the classes that did not verify and migrate their files again without them,
+   with every file whose classes derive from one of those; back to 3.
+
+Rounds are bounded: a file still changing after the last one is not written.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
+
+from . import holdpoint
+from .cross_file import imported_from, resolve_cross_file
+from .discover import Candidate
+from .migrate import Settings, migrate
+from .progress import Progress
+from .results import SkillResult
+from .runner import Migrated, migrate_all
+from .verify.verdicts import Comparison, apply_verdicts, fail
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.ontology.index import OntologyIndex
+
+    from .verify.pool import PoolConfig
+
+VERIFY_ROUNDS = 3
+"""Rounds of holding refused classes back and verifying the rest of their files again."""
+
+
+@dataclass(frozen=True)
+class Checks:
+    """How the project verifies what it migrated: the sandbox's settings and how strictly
+    models must agree."""
+
+    pool: PoolConfig
+    comparison: Comparison = field(default_factory=Comparison)
+
+
+def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: int,
+           checks: Checks | None = None, progress: Progress | None = None) -> list[Migrated]:
+    """Every candidate's settled result (see the module doc); ``checks`` None: no
+    verification (``--no-verify``, ``check``)."""
+    migrated = migrate_all(candidates, index, jobs, progress)
+    _settle_cross_file(migrated, index)
+    if progress is not None:
+        progress.close()  # the line is gone before verification says anything
+    holdpoint.reach("migrated")
+    if checks is not None:
+        verify_changed(migrated, checks)
+    return migrated
+
+
+def _settle_cross_file(migrated: list[Migrated], index: OntologyIndex | None) -> None:
+    """Migrate again the files whose cross-file facts are not those they were migrated
+    with: names other files import from them, and bases defined in sibling files."""
+    exported = imported_from(migrated)
+    for item in migrated:
+        names = exported.get(item.candidate.relative)
+        if names and item.result.changed:
+            item.settings = Settings(index, exported=names)
+            item.result = migrate(item.original, item.settings, item.candidate.relative)
+    if any(m.result.foreign_bases for m in migrated):
+        resolve_cross_file(migrated, Settings(index=index), exported)
+
+
+def verify_changed(migrated: list[Migrated], checks: Checks) -> None:
+    """Verify every changed file; revert (in memory) what does not verify.
+
+    A class that fails (or that the runtime would refuse to load) is held as it was and its
+    file is migrated again without it, so the classes beside it that verified still land.
+    Files whose descriptions derive from a file migrated again are verified again with it.
+    """
+    from .verify.pool import job_for, run_jobs
+
+    changed = [item for item in migrated if item.result.changed]
+    if not changed:
+        return
+    by_relative = {item.candidate.relative: item for item in changed}
+    pending = list(changed)
+    for _ in range(VERIFY_ROUNDS):
+        jobs = []
+        for item in pending:
+            assert isinstance(item.result.new_source, bytes)
+            root = item.candidate.root
+            jobs.append(job_for(item.candidate.path, item.original, root))
+            after = job_for(item.candidate.path, item.result.new_source, root)
+            after.overlays = _overlays(item, by_relative)
+            jobs.append(after)
+        outcomes = run_jobs(jobs, checks.pool)
+        again = []
+        for number, item in enumerate(pending):
+            culprits = apply_verdicts(item.result, outcomes[2 * number],
+                                      outcomes[2 * number + 1], checks.comparison)
+            if culprits and _migrate_holding(item, culprits):
+                again.append(item)
+        redone = {item.candidate.relative for item in again}
+        again += [item for item in changed if item not in again and item.result.changed
+                  and redone & set(item.result.depends_on)]
+        if not again:
+            break
+        pending = again
+    else:  # still unsettled after the last round: write none of it
+        for item in pending:
+            for skill in item.result.skills:
+                if skill.status == "converted":
+                    fail(skill, "not verified: its file changed in every verification round")
+            item.result.new_source = None
+    _hold_dependents(changed, by_relative)
+
+
+def _migrate_holding(item: Migrated, culprits: dict[str, SkillResult]) -> bool:
+    """Migrate ``item`` again leaving ``culprits`` as they are; True when something still
+    changes (and so must be verified again)."""
+    settings = item.settings or Settings()
+    held = {**settings.held, **{name: skill.reason or "held" for name, skill in culprits.items()}}
+    item.settings = replace(settings, held=held)
+    result = migrate(item.original, item.settings, item.candidate.relative)
+    result.skills = [culprits.get(skill.name, skill) for skill in result.skills]
+    result.notes = item.result.notes + result.notes
+    item.result = result
+    return result.changed
+
+
+def _overlays(item: Migrated, by_relative: dict[str, Migrated]) -> dict[str, bytes]:
+    """Migrated bytes of the files whose descriptions ``item``'s classes derive from."""
+    overlays = {}
+    for relative in item.result.depends_on:
+        base = by_relative.get(relative)
+        if base is not None and isinstance(base.result.new_source, bytes):
+            overlays[str(base.candidate.path.absolute())] = base.result.new_source
+    return overlays
+
+
+def _hold_dependents(migrated: list[Migrated], by_relative: dict[str, Migrated]) -> None:
+    """A file deriving from a base file that will not be written is not written either."""
+    changed = True
+    while changed:
+        changed = False
+        for item in migrated:
+            if item.result.new_source is None:
+                continue
+            held = [r for r in item.result.depends_on
+                    if r in by_relative and by_relative[r].result.new_source is None]
+            if held:
+                for skill in item.result.skills:
+                    if skill.status == "converted":
+                        fail(skill, f"not written: it derives from a description in {held[0]}, "
+                                    "which is not being written")
+                item.result.new_source = None
+                changed = True
