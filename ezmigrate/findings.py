@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from ezskiros_runtime.model import Condition, SkillModel
 
-from .results import Finding
+from .results import ReviewFinding
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -33,27 +33,27 @@ def _walk(conditions: tuple[Condition, ...]) -> list[Condition]:
 
 
 def skill_findings(model: SkillModel, index: OntologyIndex | None,
-                   lines: Mapping[tuple[str, str], int] | None = None) -> list[Finding]:
+                   lines: Mapping[tuple[str, str], int] | None = None) -> list[ReviewFinding]:
     """Findings from the static model of one skill.
 
     ``lines`` (``ExtractedSkill.source_lines``) gives each finding the line of the
     ``addParam`` or condition that causes it; line 0 stands for the skill as a whole.
     """
     where = lines or {}
-    found: list[Finding] = []
+    found: list[ReviewFinding] = []
     keys = {p.key for p in model.params}
     conditions = [c for which in ("pre", "hold", "post") for c in _walk(model.conditions(which))]
     for cond in conditions:
         for key in (cond.subject, cond.object):
             if key is not None and key not in keys:
-                found.append(Finding("undeclared-key", where.get(("key", key), 0),
+                found.append(ReviewFinding("undeclared-key", where.get(("key", key), 0),
                                      f"a {cond.kind} condition "
                                      f"({cond.label!r}) refers to {key!r}, which no addParam "
                                      "declares (SkiROS2 accepts this silently)"))
     types = [p.element_type for p in model.params if p.element_type is not None]
     for type_string in types:
         if not _CANONICAL.match(type_string) and type_string != UNKNOWN_TYPE:
-            found.append(Finding("element-type-spelling", where.get(("type", type_string), 0),
+            found.append(ReviewFinding("element-type-spelling", where.get(("type", type_string), 0),
                                  f"Element type {type_string!r} is not written as "
                                  "prefix:Name; SkiROS2 stores it verbatim (kept as is)"))
     if index is not None:
@@ -68,7 +68,7 @@ def skill_findings(model: SkillModel, index: OntologyIndex | None,
                 hint = _close(term, index.suggest(
                     term, ("class",) if what == "class" else ("object", "data")))
                 extra = f"; did you mean {', '.join(hint)}?" if hint else ""
-                found.append(Finding("unknown-vocabulary", where.get(source, 0),
+                found.append(ReviewFinding("unknown-vocabulary", where.get(source, 0),
                                      f"{what} {term!r} is not in the loaded ontology{extra}"))
     return _unique(found)
 
@@ -80,7 +80,7 @@ def _close(term: str, suggestions: list[str]) -> list[str]:
             if difflib.SequenceMatcher(None, local, s.rsplit(":", 1)[-1].lower()).ratio() >= 0.8]
 
 
-def _unique(findings: list[Finding]) -> list[Finding]:
+def _unique(findings: list[ReviewFinding]) -> list[ReviewFinding]:
     seen: set[tuple[str, str]] = set()
     out = []
     for f in findings:

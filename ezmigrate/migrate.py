@@ -25,6 +25,7 @@ from ezskiros_runtime.model import SkillModel
 from .core.classes import DescriptionClass, description_classes
 from .core.context import ExtractContext, StatementLines, module_constants, positions_of
 from .core.cst_facts import facts_of
+from .core.emit import DSL_NAMES, EmitContext
 from .core.function import build_description, emitted_params
 from .core.imports import (
     ONTOLOGY,
@@ -53,10 +54,9 @@ from .core.reader import (
 from .core.replay import replay
 from .core.syntax_facts import ClassFacts, FunctionFacts, SyntaxFacts
 from .core.tree_walk import walk
-from .core.writer import DSL_NAMES, EmitContext
 from .findings import skill_findings
 from .lint.facts import static_description
-from .results import FileResult, Finding, SkillResult
+from .results import FileResult, ReviewFinding, SkillResult
 from .rules import RULES
 
 if TYPE_CHECKING:
@@ -356,7 +356,7 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         plan.result.status = "converted"
         plan.result.model = model.to_json()
         plan.result.static = static_description(skill)
-        plan.result.findings = [Finding(k, ln, m) for k, ln, m in skill.findings] + \
+        plan.result.findings = [ReviewFinding(k, ln, m) for k, ln, m in skill.findings] + \
             skill_findings(model, settings.index, skill.source_lines())
         plan.runtime, plan.prefixes = emit.runtime_names, emit.prefixes
     except Unsupported as unsupported:

@@ -20,7 +20,7 @@ SkillStatus = Literal["converted", "skipped", "failed", "unchanged"]
 
 
 @dataclass
-class Finding:
+class ReviewFinding:
     """Something a reviewer should see that migration keeps as it was (a latent bug...)."""
 
     kind: str
@@ -44,7 +44,7 @@ class SkillResult:
     line: int
     status: SkillStatus
     reason: str | None = None
-    findings: list[Finding] = field(default_factory=list)
+    findings: list[ReviewFinding] = field(default_factory=list)
     model: dict[str, Any] | None = None
     equivalent: bool | None = None
     diff: list[dict[str, Any]] | None = None

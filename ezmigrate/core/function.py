@@ -17,6 +17,7 @@ from dataclasses import replace
 
 import libcst as cst
 
+from .emit import EmitContext
 from .ir import (
     AddCondition,
     CommentOnly,
@@ -27,7 +28,6 @@ from .ir import (
     KeptStatement,
     ParamOp,
 )
-from .writer import EmitContext
 
 ALIGN = " " * len("def description(")
 ROBOT = "Robot"

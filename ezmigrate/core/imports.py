@@ -18,9 +18,9 @@ from collections.abc import Collection, Iterable, Sequence
 
 import libcst as cst
 
+from .emit import LINE_LIMIT
 from .legacy_names import dotted_name, is_legacy_module
 from .tree_walk import walk
-from .writer import LINE_LIMIT
 
 RUNTIME = "ezskiros_runtime"
 ONTOLOGY = "ezskiros_runtime.ontology"

@@ -19,8 +19,8 @@ import libcst as cst
 
 if TYPE_CHECKING:
     from .context import ExtractContext
+    from .emit import EmitContext
     from .ir import AddCondition, CondSpec, Operation, ParamOp
-    from .writer import EmitContext
 
 StatementRule = Callable[[cst.BaseSmallStatement, "ExtractContext"],
                          "Sequence[Operation] | None"]

@@ -39,7 +39,7 @@ from ..core.ir import (
 from ..core.legacy_names import LegacyNames, ast_dotted_name, is_legacy_module
 from ..core.syntax_facts import note_binding, note_import
 from ..migrate import checked_model
-from ..results import FileResult, Finding, SkillResult
+from ..results import FileResult, ReviewFinding, SkillResult
 from ..rules.add_param import (
     ARGUMENTS,
     KINDS,
@@ -190,7 +190,7 @@ def _skill(node: ast.ClassDef, names: LegacyNames, constants: _Constants) -> Ski
         raise _Declined from error
     return SkillResult(node.name, node.lineno, "converted", model=model.to_json(),
                        static=static_description(skill),
-                       findings=[Finding(k, ln, m) for k, ln, m in skill.findings])
+                       findings=[ReviewFinding(k, ln, m) for k, ln, m in skill.findings])
 
 
 def _create_description(node: ast.ClassDef) -> ast.FunctionDef:

@@ -14,6 +14,7 @@ from __future__ import annotations
 import libcst as cst
 
 from ..core.context import ExtractContext, bind_arguments
+from ..core.emit import EmitContext, quote
 from ..core.ir import (
     ElementValue,
     ExtractedSkill,
@@ -24,7 +25,6 @@ from ..core.ir import (
     TypeValue,
     Unsupported,
 )
-from ..core.writer import EmitContext, quote
 from .condition_lists import statement_comments
 
 ARGUMENTS = ("key", "value", "param_type", "options", "description")

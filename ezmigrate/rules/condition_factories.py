@@ -22,10 +22,10 @@ import libcst as cst
 from ezskiros_runtime.labels import conventional_label
 
 from ..core.context import ExtractContext, bind_arguments
+from ..core.emit import EmitContext, quote
 from ..core.ir import CondSpec, Literal, Unsupported
 from ..core.registry import condition_emitter, condition_replayer
 from ..core.replay import literal_value as lit
-from ..core.writer import EmitContext, quote
 
 RELATION_ARGS = ("label", "relation", "subject_key", "object_key", "desired_state")
 FACTORIES: dict[str, tuple[str, tuple[str, ...]]] = {

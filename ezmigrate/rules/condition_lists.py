@@ -12,9 +12,9 @@ from __future__ import annotations
 import libcst as cst
 
 from ..core.context import ExtractContext, bind_arguments
+from ..core.emit import LINE_LIMIT, EmitContext
 from ..core.ir import AddCondition, Comments, CondSpec, Unsupported
 from ..core.registry import CONDITION_EMITTERS
-from ..core.writer import LINE_LIMIT, EmitContext
 
 LISTS = {"addPreCondition": "pre", "addHoldCondition": "hold", "addPostCondition": "post"}
 

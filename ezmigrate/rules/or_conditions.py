@@ -17,10 +17,10 @@ from typing import Any
 import libcst as cst
 
 from ..core.context import ExtractContext, bind_arguments
+from ..core.emit import EmitContext
 from ..core.ir import CommentOnly, CondSpec, Literal, Unsupported
 from ..core.registry import condition_emitter, condition_replayer
 from ..core.replay import literal_value, replay_condition
-from ..core.writer import EmitContext
 from .condition_lists import (
     condition_of,
     emit_condition,

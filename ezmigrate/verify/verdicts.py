@@ -11,10 +11,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ezskiros_runtime.diagnostics import Finding as RuntimeFinding
+from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.dsl.policy import severity_of
 
-from ..results import FileResult, Finding, SkillResult
+from ..results import FileResult, ReviewFinding, SkillResult
 from .compare_files import ClassVerdict, compare_outcomes, load_failure
 from .protocol import LoadOutcome
 
@@ -102,7 +102,7 @@ def _reason(verdict: ClassVerdict) -> str:
     return verdict.message
 
 
-def rejects(finding: RuntimeFinding) -> bool:
+def rejects(finding: Finding) -> bool:
     """Whether the EzSkiROS runtime refuses to load a skill with this finding.
 
     The child loads modules under ``collecting()``, which records findings instead of
@@ -155,7 +155,7 @@ def attach_findings(skills: list[SkillResult], after: LoadOutcome,
         if skill is None or kind in skip:
             continue
         if not any(f.message == found.message for f in skill.findings):
-            skill.findings.append(Finding(kind, found.line or 0, found.message))
+            skill.findings.append(ReviewFinding(kind, found.line or 0, found.message))
 
 
 def note_stand_ins(notes: list[str], before: LoadOutcome, after: LoadOutcome) -> None:

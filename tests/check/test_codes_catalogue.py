@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from ezmigrate import rules_doc
-from ezmigrate.results import Finding as ReportFinding
+from ezmigrate.results import ReviewFinding as ReportFinding
 from ezskiros_runtime.codes import (
     BY_CODE,
     CODE_PATTERN,
