@@ -82,7 +82,7 @@ def verify_changed(migrated: list[Migrated], checks: Checks) -> None:
     file is migrated again without it, so the classes beside it that verified still land.
     Files whose descriptions derive from a file migrated again are verified again with it.
     """
-    from .verify.pool import job_for, run_jobs
+    from .verify.pool import BATCH, job_for, run_batched
 
     changed = [item for item in migrated if item.result.changed]
     if not changed:
@@ -98,7 +98,7 @@ def verify_changed(migrated: list[Migrated], checks: Checks) -> None:
             after = job_for(item.candidate.path, item.result.new_source, root)
             after.overlays = _overlays(item, by_relative)
             jobs.append(after)
-        outcomes = run_jobs(jobs, checks.pool)
+        outcomes = run_batched(jobs, checks.pool, BATCH, alone=lambda found: not found.loaded)
         again = []
         for number, item in enumerate(pending):
             culprits = apply_verdicts(item.result, outcomes[2 * number],

@@ -23,7 +23,7 @@ from ezskiros_runtime.model import SkillModel
 
 from ..discover import Candidate
 from ..results import FileResult
-from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
+from ..verify.pool import PoolConfig, Standby, job_for, run_batched
 from ..verify.protocol import LoadOutcome
 from .static import NeedsTrace, class_bases, implementations, read_compounds
 
@@ -90,7 +90,7 @@ def _read(items: Iterable[tuple[Candidate, bytes]], trees: Trees | None = None) 
     return trees
 
 
-BATCH = 32
+TRACE_BATCH = 32
 """Files traced by one child at most: a hang costs one batch's timeout, then each of its
 files is traced alone."""
 
@@ -107,16 +107,8 @@ def _trace(trees: Trees, pool: PoolConfig, standby: Standby | None = None) -> No
     order = list(trees.traced.values())
     jobs = [replace(job_for(c.path, None, c.root, tuple(n.implementation for n in pending)),
                     collect=False) for c, pending in order]
-    size = min(BATCH, max(1, -(-len(jobs) // max(1, pool.workers))))
-    batches = [jobs[i:i + size] for i in range(0, len(jobs), size)]
-    outcomes: list[LoadOutcome | None] = []
-    for batch, first in zip(batches, run_jobs(
-            [replace(b[0], more=b[1:]) for b in batches], pool, standby=standby), strict=True):
-        done = [first, *first.more]
-        outcomes += done if len(done) == len(batch) else [None] * len(batch)
-    again = [i for i, outcome in enumerate(outcomes) if outcome is None]
-    for i, retried in zip(again, run_jobs([jobs[i] for i in again], pool), strict=True):
-        outcomes[i] = retried
+    size = min(TRACE_BATCH, max(1, -(-len(jobs) // max(1, pool.workers))))
+    outcomes = run_batched(jobs, pool, size, standby=standby)
     for (candidate, pending), found in zip(order, outcomes, strict=True):
         assert found is not None
         _record(trees, str(candidate.path), pending, found)

@@ -9,7 +9,7 @@ from ..discover import discover
 from ..prefilter import may_hold_descriptions
 from ..results import FileResult, SkillResult, SkillStatus
 from .compare_files import class_sources, compare_outcomes, load_failure
-from .pool import PoolConfig, job_for, run_jobs
+from .pool import BATCH, PoolConfig, job_for, run_batched
 from .protocol import LoadJob, LoadOutcome
 from .verdicts import attach_findings, capture, note_stand_ins, rejections
 
@@ -101,7 +101,7 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
             else:
                 slots.append(len(jobs))
                 jobs.append(job_for(path, None, root))
-    outcomes = run_jobs(jobs, options.pool)
+    outcomes = run_batched(jobs, options.pool, BATCH, alone=lambda outcome: not outcome.loaded)
     results: list[FileResult] = []
     unloadable = False
     for index, (relative, old, new) in enumerate(pairs):
@@ -146,7 +146,7 @@ def _compare(old_bytes: bytes, new_bytes: bytes, before: LoadOutcome, after: Loa
     will not load on the robot. When the runtime refuses both versions the same way (the
     same EzSkiROS file on both sides), nothing was broken by migrating: a finding only.
     """
-    old_classes, new_classes = class_sources(old_bytes), class_sources(new_bytes)
+    sources: list[tuple[dict[str, str], dict[str, str]]] = []  # read when first needed
     skills = []
     for verdict in compare_outcomes(before, after, ignore_order=options.ignore_order,
                                     ignore_labels=options.ignore_labels):
@@ -159,6 +159,9 @@ def _compare(old_bytes: bytes, new_bytes: bytes, before: LoadOutcome, after: Loa
             status, reason = "failed", ("EzSkiROS rejects the migrated class when it "
                                         "loads: " + "; ".join(rejected))
         if verdict.verdict == "unverified":  # loads in neither version: nothing to compare
+            if not sources:  # rare: parse the two versions only now
+                sources.append((class_sources(old_bytes), class_sources(new_bytes)))
+            old_classes, new_classes = sources[0]
             same = old_classes.get(verdict.name) == new_classes.get(verdict.name) is not None
             status = "unchanged" if same else "failed"
             reason = (f"{verdict.message} (its source is unchanged)" if same

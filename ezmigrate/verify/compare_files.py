@@ -100,5 +100,6 @@ def class_sources(data: bytes) -> dict[str, str]:
         tree = ast.parse(text)
     except (SyntaxError, ValueError):
         return {}
-    return {node.name: ast.get_source_segment(text, node) or "" for node in tree.body
-            if isinstance(node, ast.ClassDef)}
+    lines = text.splitlines(keepends=True)  # once: get_source_segment splits per call
+    return {node.name: "".join(lines[node.lineno - 1:node.end_lineno or node.lineno])
+            for node in tree.body if isinstance(node, ast.ClassDef)}
