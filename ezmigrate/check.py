@@ -17,12 +17,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from . import holdpoint
 from .cross_file import RUNTIME_MARKER
 from .discover import Candidate, discover
 from .lint.diagnostic import Diagnostic, Positions, diagnostic
 from .lint.legacy import legacy_hits
 from .lint.plain_reader import Declined, read_plain
 from .prefilter import may_hold_descriptions
+from .progress import Progress
 from .project import settle
 from .results import FileResult
 from .verify.pool import PoolConfig, Standby, job_for, run_jobs
@@ -161,18 +163,25 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
     results: list[tuple[Candidate, FileResult]] = []
-    for candidate, data, result in read_statically(candidates, pool.workers, index,
-                                                   trees.add if trees else None):
-        path = str(candidate.path)
-        read.append((candidate, data))
-        results.append((candidate, result))
-        outcome.sources[path] = _text(data)
-        outcome.skills += sum(1 for s in result.skills if s.status != "unchanged")
-        if result.error or result.skills:
-            outcome.diagnostics += _legacy(path, result, Positions(outcome.sources[path]),
-                                           index)
-        if RUNTIME_MARKER in data:
-            loadable.append(candidate)
+    line = Progress.for_stream(len(candidates), skills_label="skills found") \
+        if progress is not None else Progress(len(candidates), active=False)
+    with line:  # erased before the next message
+        for candidate, data, result in read_statically(candidates, pool.workers, index,
+                                                       trees.add if trees else None):
+            path = str(candidate.path)
+            read.append((candidate, data))
+            results.append((candidate, result))
+            outcome.sources[path] = _text(data)
+            skills = sum(1 for s in result.skills if s.status != "unchanged")
+            outcome.skills += skills
+            line.advance(1, skills)
+            if line.files == 1:
+                holdpoint.reach("checking")
+            if result.error or result.skills:
+                outcome.diagnostics += _legacy(path, result,
+                                               Positions(outcome.sources[path]), index)
+            if RUNTIME_MARKER in data:
+                loadable.append(candidate)
     if loadable and progress is not None:
         progress(f"loading {len(loadable)} EzSkiROS files")
     outcomes = run_jobs([job_for(c.path, None, c.root) for c in loadable],

@@ -11,7 +11,8 @@ Without both variables (every real run) ``reach`` returns at once. The points, i
 ``discovered``, ``migrating`` (one file submitted, the workers busy with the rest),
 ``migrated``, ``writing:N`` (inside the deferred section of the N-th write, before it
 starts: a signal there is recorded and the write completes) and ``written:N`` (after the
-N-th file was replaced, outside any deferred section).
+N-th file was replaced, outside any deferred section); in ``check``, ``checking`` (the
+first file read, the rest to come).
 """
 
 from __future__ import annotations

@@ -275,3 +275,34 @@ def test_rewrite_writes_no_line_into_a_pipe(tmp_path: Path) -> None:
     _, err = child.communicate(timeout=60)
     assert child.returncode == 0
     assert b"\r" not in err and b"would change" in err
+
+
+@pytest.mark.skipif(not hasattr(os, "openpty"), reason="needs a pseudo-terminal")
+def test_check_shows_the_line_on_a_terminal(tmp_path: Path) -> None:
+    repo = tmp_path / "repo"
+    repo.mkdir()
+    for name in ("conditions.py", "descriptions.py", "inheritance.py"):
+        shutil.copy(LEGACY / name, repo / name)
+    (tmp_path / "hold").mkdir()
+    env = {**child_env(), "EZMIGRATE_HOLD_DIR": str(tmp_path / "hold"),
+           "EZMIGRATE_HOLD_AT": "checking"}
+    master, slave = os.openpty()
+    try:
+        child = subprocess.Popen([sys.executable, "-m", "ezmigrate", "check", str(repo)],
+                                 cwd=REPO, env=env, stdin=subprocess.DEVNULL,
+                                 stdout=subprocess.DEVNULL, stderr=slave)
+    finally:
+        os.close(slave)
+    try:
+        reached = tmp_path / "hold" / "checking.reached"
+        deadline = time.monotonic() + 60
+        while not reached.exists():
+            assert time.monotonic() < deadline, "check never reached the hold point"
+            time.sleep(0.01)
+        time.sleep(1.1)  # held: this only makes sure the run has lasted over a second
+        (tmp_path / "hold" / "checking.go").touch()
+        text = read_until_closed(master).decode()
+    finally:
+        os.close(master)
+        child.wait(timeout=60)
+    assert re.search(r"\rezmigrate: [23]/3 files, \d+ skills found", text), text
