@@ -12,6 +12,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Sequence
+from dataclasses import replace
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING
 
@@ -241,9 +242,9 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
             item.settings = Settings(settings.index, external, exported=(exported or {}).get(
                 item.candidate.relative, frozenset()), migrated_bases=frozenset(migrated_bases),
                 unresolved_bases=unresolved)
-            result = migrate(item.original, item.settings, item.candidate.relative)
-            result.depends_on = sorted(set(sources))
-            item.result = result
+            item.result = replace(migrate(item.original, item.settings,
+                                          item.candidate.relative),
+                                  depends_on=sorted(set(sources)))
             redone += 1
             changed = True
         if not changed:

@@ -14,7 +14,7 @@ import re
 import traceback
 from collections import Counter
 from collections.abc import Collection, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 import libcst as cst
@@ -108,46 +108,42 @@ def migrate(source: bytes | str, settings: Settings | None = None,
             path: str = "<string>") -> FileResult:
     """Migrate one module's text. ``result.new_source`` is set only if something changed."""
     settings = settings or Settings()
-    result = FileResult(path=path)
     try:
         module = cst.parse_module(source)
     except cst.ParserSyntaxError as error:
         message, line, column = syntax_error_location(source, error)
-        result.error = f"cannot parse: {message} (line {line}, column {column})"
-        result.error_line = line
-        return result
+        return FileResult(path, error=f"cannot parse: {message} (line {line}, column "
+                          f"{column})", error_line=line)
     except (UnicodeDecodeError, LookupError, SyntaxError) as error:
-        result.error, result.error_line = decode_error_message(source, error)
-        return result
+        reason, at = decode_error_message(source, error)
+        return FileResult(path, error=reason, error_line=at)
     try:
-        return _migrate_module(module, source, settings, result)
+        return _migrate_module(module, source, settings, path)
     except RecursionError:
         deep = too_deep_line(module)
         where = f" (the statement at line {deep})" if deep is not None else ""
-        result.skills, result.new_source = [], None
-        result.error = (f"nested too deeply to migrate{where}: libcst walks the syntax tree "
-                        "recursively; split that expression into smaller ones, then migrate")
-        result.error_line = deep
-        return result
+        return FileResult(path, error=(
+            f"nested too deeply to migrate{where}: libcst walks the syntax tree recursively; "
+            "split that expression into smaller ones, then migrate"), error_line=deep)
 
 
 def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
-                    result: FileResult) -> FileResult:
+                    path: str) -> FileResult:
     """``migrate`` once the source parsed."""
-    facts = _syntax_facts(module, source, result)
-    if facts is None:
-        return result
+    facts = _syntax_facts(module, source)
+    if isinstance(facts, FileResult):
+        return replace(facts, path=path)
     names = facts.legacy
-    result.foreign_bases = foreign_bases(module, names)
+    found = FileResult(path, foreign_bases=foreign_bases(module, names))
     planned = _plan_module(module, facts, settings)
     if planned is None:
-        return result
+        return found
     plans, _, aliases = planned
     converted = [p for p in plans if p.result.status == "converted"]
-    result.skills = [p.result for p in plans]
-    result.exports = [p.cls.name for p in plans if p.result.status in ("converted", "unchanged")]
+    found = replace(found, skills=[p.result for p in plans], exports=[
+        p.cls.name for p in plans if p.result.status in ("converted", "unchanged")])
     if not converted:
-        return result
+        return found
     used = _used_after(facts, converted)
     legacy = names.local_names_for("SkillDescription")
     still_used = bool(legacy & (used | settings.exported)) or bool(legacy and "*" in
@@ -163,20 +159,18 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
     try:  # the parser that read the original reads the result
         ast.parse(code) if facts.python_parses else cst.parse_module(code)
     except (SyntaxError, ValueError, cst.ParserSyntaxError) as error:  # a bug of ours
-        result.error = f"internal error: migrated code does not parse ({error})"
-        for skill in result.skills:
-            if skill.status == "converted":
-                skill.status, skill.reason = "failed", result.error
-        return result
-    result.new_source = code.encode(new_module.encoding) if isinstance(source, bytes) else code
-    return result
+        message = f"internal error: migrated code does not parse ({error})"
+        return replace(found, error=message, skills=[
+            replace(s, status="failed", reason=message) if s.status == "converted" else s
+            for s in found.skills])
+    return replace(found, new_source=code.encode(new_module.encoding)
+                   if isinstance(source, bytes) else code)
 
 
-def _syntax_facts(module: cst.Module, source: bytes | str,
-                  result: FileResult) -> SyntaxFacts | None:
-    """The module's facts, from ``ast`` unless Python's own parser refuses the file;
-    ``None`` (with ``result.error`` set) for Python 2's ``except X, e:``, which libcst
-    reads as Python 3.14's ``except A, B:``."""
+def _syntax_facts(module: cst.Module, source: bytes | str) -> SyntaxFacts | FileResult:
+    """The module's facts, from ``ast`` unless Python's own parser refuses the file; for
+    Python 2's ``except X, e:`` (which libcst reads as Python 3.14's ``except A, B:``) the
+    result that says so instead."""
     try:
         return SyntaxFacts.of(ast.parse(source))
     except (SyntaxError, ValueError, MemoryError):
@@ -184,10 +178,9 @@ def _syntax_facts(module: cst.Module, source: bytes | str,
         if python2 is None:  # syntax newer than this Python: libcst reads it all the same
             return facts_of(module)
         line, column = python2
-        result.error = (f"cannot parse: Python 2 syntax `except X, e:` (line {line}, column "
-                        f"{column}); port the file to Python 3 (`except X as e:`) first")
-        result.error_line = line
-        return None
+        return FileResult("", error=(
+            f"cannot parse: Python 2 syntax `except X, e:` (line {line}, column {column}); "
+            "port the file to Python 3 (`except X as e:`) first"), error_line=line)
 
 
 def _used_after(facts: SyntaxFacts, converted: list[_Plan]) -> set[str]:
@@ -258,8 +251,9 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
     except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError):
         return {}
     try:
-        facts = _syntax_facts(module, source, FileResult(path=""))
-        planned = _plan_module(module, facts, settings) if facts is not None else None
+        facts = _syntax_facts(module, source)
+        planned = _plan_module(module, facts, settings) \
+            if isinstance(facts, SyntaxFacts) else None
     except (RecursionError, MemoryError):  # its own migration reports the file
         return {}
     if planned is None:
@@ -328,8 +322,8 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         if func is None:
             effective[cls.name] = effective.get(cls.base or "", []) if cls.base else []
             model = replay(cls.name, effective[cls.name])
-            plan.result.model = model.to_json()
-            plan.result.status = "converted" if cls.base is None else "unchanged"
+            plan.result = replace(plan.result, model=model.to_json(),
+                                  status="converted" if cls.base is None else "unchanged")
             return plan
         skill = ExtractedSkill(cls.name, line_no)
         create = plan.create
@@ -353,22 +347,21 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
                                               module.config_for_parsing)
         effective[cls.name] = skill.operations
         plan.operations = skill.operations
-        plan.result.status = "converted"
-        plan.result.model = model.to_json()
-        plan.result.static = static_description(skill)
-        plan.result.findings = [ReviewFinding(k, ln, m) for k, ln, m in skill.findings] + \
-            skill_findings(model, settings.index, skill.source_lines())
+        plan.result = replace(
+            plan.result, status="converted", model=model.to_json(),
+            static=static_description(skill),
+            findings=[ReviewFinding(k, ln, m) for k, ln, m in skill.findings]
+            + skill_findings(model, settings.index, skill.source_lines()))
         plan.runtime, plan.prefixes = emit.runtime_names, emit.prefixes
     except Unsupported as unsupported:
-        plan.result.status = "skipped"
-        plan.result.reason = unsupported.reason
+        plan.result = replace(plan.result, status="skipped", reason=unsupported.reason)
     except RecursionError:  # a problem with the file, not this skill: ``migrate`` says so
         raise
     except Exception as error:  # the legacy backend rejects what SkiROS2 rejects
-        plan.result.status = "skipped"
-        plan.result.reason = f"SkiROS2 would reject this description: {error}"
+        reason = f"SkiROS2 would reject this description: {error}"
         if not isinstance(error, (ValueError, TypeError, KeyError)):
-            plan.result.reason += "\n" + traceback.format_exc(limit=3)
+            reason += "\n" + traceback.format_exc(limit=3)
+        plan.result = replace(plan.result, status="skipped", reason=reason)
     return plan
 
 

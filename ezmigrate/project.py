@@ -26,9 +26,9 @@ from .cross_file import imported_from, resolve_cross_file
 from .discover import Candidate
 from .migrate import Settings, migrate
 from .progress import Progress
-from .results import SkillResult
+from .results import FileResult, SkillResult
 from .runner import Migrated, migrate_all
-from .verify.verdicts import Comparison, apply_verdicts, fail
+from .verify.verdicts import Comparison, apply_verdicts, failed
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -101,8 +101,9 @@ def verify_changed(migrated: list[Migrated], checks: Checks) -> None:
         outcomes = run_batched(jobs, checks.pool, BATCH, alone=lambda found: not found.loaded)
         again = []
         for number, item in enumerate(pending):
-            culprits = apply_verdicts(item.result, outcomes[2 * number],
-                                      outcomes[2 * number + 1], checks.comparison)
+            item.result, culprits = apply_verdicts(item.result, outcomes[2 * number],
+                                                   outcomes[2 * number + 1],
+                                                   checks.comparison)
             if culprits and _migrate_holding(item, culprits):
                 again.append(item)
         redone = {item.candidate.relative for item in again}
@@ -113,10 +114,8 @@ def verify_changed(migrated: list[Migrated], checks: Checks) -> None:
         pending = again
     else:  # still unsettled after the last round: write none of it
         for item in pending:
-            for skill in item.result.skills:
-                if skill.status == "converted":
-                    fail(skill, "not verified: its file changed in every verification round")
-            item.result.new_source = None
+            item.result = _not_written(item.result, "not verified: its file changed in "
+                                       "every verification round")
     _hold_dependents(changed, by_relative)
 
 
@@ -127,9 +126,8 @@ def _migrate_holding(item: Migrated, culprits: dict[str, SkillResult]) -> bool:
     held = {**settings.held, **{name: skill.reason or "held" for name, skill in culprits.items()}}
     item.settings = replace(settings, held=held)
     result = migrate(item.original, item.settings, item.candidate.relative)
-    result.skills = [culprits.get(skill.name, skill) for skill in result.skills]
-    result.notes = item.result.notes + result.notes
-    item.result = result
+    item.result = replace(result, skills=[culprits.get(s.name, s) for s in result.skills],
+                          notes=[*item.result.notes, *result.notes])
     return result.changed
 
 
@@ -154,9 +152,13 @@ def _hold_dependents(migrated: list[Migrated], by_relative: dict[str, Migrated])
             held = [r for r in item.result.depends_on
                     if r in by_relative and by_relative[r].result.new_source is None]
             if held:
-                for skill in item.result.skills:
-                    if skill.status == "converted":
-                        fail(skill, f"not written: it derives from a description in {held[0]}, "
-                                    "which is not being written")
-                item.result.new_source = None
+                item.result = _not_written(item.result, "not written: it derives from a "
+                                           f"description in {held[0]}, which is not being "
+                                           "written")
                 changed = True
+
+
+def _not_written(result: FileResult, reason: str) -> FileResult:
+    """``result`` kept as it was on disk: its converted skills failed for ``reason``."""
+    return replace(result, new_source=None, skills=[
+        failed(s, reason) if s.status == "converted" else s for s in result.skills])

@@ -1,9 +1,11 @@
 """Picklable result types that workers return and reports read.
 
 Like LibCST's codemod results: a file is changed, unchanged, or failed with a message, and
-each skill in it is converted, skipped (with a reason a user can act on), failed (with the
-difference or the error), or unchanged. Plain dataclasses of builtins so that they cross
-process boundaries cheaply and serialize to the JSON report directly.
+each skill in it is converted, skipped (with a reason a user can act on and its finding
+code), failed (with the difference or the error), or unchanged. Frozen dataclasses of
+builtins: they cross process boundaries cheaply and serialize to the JSON report directly,
+and a verdict, once given, is never edited: a later step (verification, a refused write)
+makes a new result with ``dataclasses.replace`` and puts it in the old one's place.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ if TYPE_CHECKING:
 SkillStatus = Literal["converted", "skipped", "failed", "unchanged"]
 
 
-@dataclass
+@dataclass(frozen=True)
 class ReviewFinding:
     """Something a reviewer should see that migration keeps as it was (a latent bug...)."""
 
@@ -36,7 +38,7 @@ class ReviewFinding:
         return {**asdict(self), "code": self.code}
 
 
-@dataclass
+@dataclass(frozen=True)
 class SkillResult:
     """The verdict on one description class."""
 
@@ -57,7 +59,7 @@ class SkillResult:
         return code_for(self.status) if self.status in ("skipped", "failed") else None
 
 
-@dataclass
+@dataclass(frozen=True)
 class FileResult:
     """What happened to one file. ``new_source`` is set only when it should change."""
 

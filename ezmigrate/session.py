@@ -14,7 +14,7 @@ earlier changed nothing.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -184,12 +184,11 @@ def _refuse(item: Migrated, outcome: RewriteOutcome, message: str) -> None:
     and the exit code must say so, not "converted".
     """
     outcome.refused.append(message)
-    item.result.notes.append(message)
-    if item.result.changed:
-        for skill in item.result.skills:
-            if skill.status == "converted":
-                skill.status, skill.reason = "failed", f"not written: {message}"
-    item.result.new_source = None
+    result = item.result
+    skills = [replace(s, status="failed", reason=f"not written: {message}")
+              if result.changed and s.status == "converted" else s for s in result.skills]
+    item.result = replace(result, notes=[*result.notes, message], skills=skills,
+                          new_source=None)
 
 
 def _mode_of(path: Path) -> int | None:

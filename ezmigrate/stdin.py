@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import sys
 import tempfile
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -51,6 +52,4 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, ve
         path = Path(folder) / NAME
         path.write_bytes(data)
         [item] = settle([Candidate(path, path.parent)], index, 1, checks)
-    result = item.result
-    result.path = "-"
-    return data, result
+    return data, replace(item.result, path="-")

@@ -11,7 +11,7 @@ from ..results import FileResult, SkillResult, SkillStatus
 from .compare_files import class_sources, compare_outcomes, load_failure
 from .pool import BATCH, PoolConfig, job_for, run_batched
 from .protocol import LoadJob, LoadOutcome
-from .verdicts import attach_findings, capture, note_stand_ins, rejections
+from .verdicts import capture, note_stand_ins, rejections, with_findings
 
 
 @dataclass(frozen=True)
@@ -105,36 +105,42 @@ def run_verify(options: VerifyOptions) -> tuple[list[FileResult], bool]:
     results: list[FileResult] = []
     unloadable = False
     for index, (relative, old, new) in enumerate(pairs):
-        result = FileResult(path=relative)
-        results.append(result)
         if index in skipped:
-            continue
-        if old is None or new is None:
-            result.error = "missing after migration" if new is None else "only in the new tree"
-            result.skills.append(SkillResult("*", 0, "failed", result.error, equivalent=False))
-            continue
-        before = outcomes[slots[2 * index]]
-        after = outcomes[slots[2 * index + 1]]
-        old_bytes, new_bytes = _read(old), _read(new)
-        if not before.loaded or not after.loaded:
-            capture(result.notes, before, after)
-            if old_bytes is not None and old_bytes == new_bytes:  # not migrated: a note
-                result.notes.insert(0, "unchanged, not loadable: "
-                                    + load_failure("unchanged", before))
-                continue
-            unloadable = True
-            side, outcome = ("legacy", before) if not before.loaded else ("migrated", after)
-            result.error = load_failure(side, outcome)
-            result.error_line = outcome.line
-            continue
-        if old_bytes is None or new_bytes is None:  # vanished since it was loaded
-            unloadable = True
-            result.error = "could not be read again after loading: nothing was compared"
-            continue
-        note_stand_ins(result.notes, before, after)
-        result.skills = _compare(old_bytes, new_bytes, before, after, options)
-        attach_findings(result.skills, after, skip=frozenset())
+            results.append(FileResult(relative))
+        elif old is None or new is None:
+            error = "missing after migration" if new is None else "only in the new tree"
+            results.append(FileResult(relative, error=error, skills=[
+                SkillResult("*", 0, "failed", error, equivalent=False)]))
+        else:
+            result, failed = _pair(relative, _read(old), _read(new),
+                                   outcomes[slots[2 * index]], outcomes[slots[2 * index + 1]],
+                                   options)
+            results.append(result)
+            unloadable = unloadable or failed
     return results, unloadable
+
+
+def _pair(relative: str, old_bytes: bytes | None, new_bytes: bytes | None,
+          before: LoadOutcome, after: LoadOutcome,
+          options: VerifyOptions) -> tuple[FileResult, bool]:
+    """The result of one file present in both trees, and whether a version of it could
+    not be loaded (or read again) at all."""
+    notes: list[str] = []
+    if not before.loaded or not after.loaded:
+        capture(notes, before, after)
+        if old_bytes is not None and old_bytes == new_bytes:  # not migrated: a note
+            note = "unchanged, not loadable: " + load_failure("unchanged", before)
+            return FileResult(relative, notes=[note, *notes]), False
+        side, outcome = ("legacy", before) if not before.loaded else ("migrated", after)
+        return FileResult(relative, error=load_failure(side, outcome),
+                          error_line=outcome.line, notes=notes), True
+    if old_bytes is None or new_bytes is None:  # vanished since it was loaded
+        return FileResult(relative, error="could not be read again after loading: nothing "
+                          "was compared"), True
+    note_stand_ins(notes, before, after)
+    skills = _compare(old_bytes, new_bytes, before, after, options)
+    return FileResult(relative, skills=with_findings(skills, after, skip=frozenset()),
+                      notes=notes), False
 
 
 def _compare(old_bytes: bytes, new_bytes: bytes, before: LoadOutcome, after: LoadOutcome,

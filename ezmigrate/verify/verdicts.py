@@ -9,7 +9,7 @@ to hold back and migrate again is the project's decision (``ezmigrate.project``)
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.dsl.policy import severity_of
@@ -28,70 +28,71 @@ class Comparison:
 
 
 def apply_verdicts(result: FileResult, before: LoadOutcome, after: LoadOutcome,
-                   comparison: Comparison) -> dict[str, SkillResult]:
-    """Mark skills from the two loads; drop the new content unless everything verified.
+                   comparison: Comparison) -> tuple[FileResult, dict[str, SkillResult]]:
+    """The file's result once its two loads are judged: skills marked, the new content
+    dropped unless everything verified.
 
-    Returns the converted classes that did not verify when others in the file did: held
-    as they were, the file can be migrated again without them.
+    Also returns the converted classes that did not verify when others in the file did:
+    held as they were, the file can be migrated again without them.
     """
-    converted = [s for s in result.skills if s.status == "converted"]
+    skills = {s.name: s for s in result.skills}  # in the file's order; failures join last
+    converted = [s.name for s in result.skills if s.status == "converted"]
+    notes = list(result.notes)
     if not before.loaded or not after.loaded:
         side, outcome = ("legacy", before) if not before.loaded else ("migrated", after)
-        for skill in converted:
-            fail(skill, load_failure(side, outcome))
-        capture(result.notes, before, after)
-        result.new_source = None
-        return {}
-    note_stand_ins(result.notes, before, after)
+        for name in converted:
+            skills[name] = failed(skills[name], load_failure(side, outcome))
+        capture(notes, before, after)
+        return replace(result, skills=list(skills.values()), notes=notes, new_source=None), {}
+    note_stand_ins(notes, before, after)
     verdicts = {v.name: v for v in compare_outcomes(
         before, after, ignore_order=comparison.ignore_order,
         ignore_labels=comparison.ignore_labels)}
-    by_name = {s.name: s for s in result.skills}
     all_ok = True
     for name, verdict in verdicts.items():
-        found = by_name.get(name)
+        found = skills.get(name)
         if verdict.equivalent:
             if found is not None and found.status == "converted":
-                found.equivalent = True
+                skills[name] = replace(found, equivalent=True)
             continue
         if verdict.verdict == "unverified" and (found is None or found.status != "converted"):
             continue  # left as it was, and it fails to load as it did before
         all_ok = False
-        skill = found if found is not None else SkillResult(name, verdict.line_before or 0,
-                                                            "failed")
-        if found is None:
-            result.skills.append(skill)
-        fail(skill, _reason(verdict), verdict)
-    for skill in converted:  # converted, yet no class of that name was seen when loading
-        if skill.name not in verdicts:
+        skills[name] = failed(found or SkillResult(name, verdict.line_before or 0, "failed"),
+                              _reason(verdict), verdict)
+    for name in converted:  # converted, yet no class of that name was seen when loading
+        if name not in verdicts:
             all_ok = False
-            fail(skill, "not verified: the class was not found when loading the file "
-                  "(is it defined conditionally?)")
-    attach_findings(result.skills, after)
-    for skill in converted:
-        if skill.status == "converted" and _refuse_rejected(skill, after):
+            skills[name] = failed(skills[name], "not verified: the class was not found when "
+                                  "loading the file (is it defined conditionally?)")
+    skills = {s.name: s for s in with_findings(list(skills.values()), after)}
+    for name in converted:
+        refused = _rejected(skills[name], after) if skills[name].status == "converted" \
+            else None
+        if refused is not None:
             all_ok = False
+            skills[name] = refused
     if all_ok:
-        return {}
-    culprits = {s.name: s for s in converted if s.status != "converted"}
-    verified = [s for s in converted if s.status == "converted"]
-    for skill in verified:
-        skill.status = "skipped"
-        skill.reason = "verified, but not written: another class in this file failed"
-    result.new_source = None
-    return culprits if verified else {}
+        return replace(result, skills=list(skills.values()), notes=notes), {}
+    culprits = {n: skills[n] for n in converted if skills[n].status != "converted"}
+    verified = [n for n in converted if skills[n].status == "converted"]
+    for name in verified:
+        skills[name] = replace(skills[name], status="skipped", reason="verified, but not "
+                               "written: another class in this file failed")
+    return (replace(result, skills=list(skills.values()), notes=notes, new_source=None),
+            culprits if verified else {})
 
 
 STATIC_KINDS = frozenset({"unknown-vocabulary", "undeclared-parameter"})
 """Runtime finding kinds the static pass already reports (once per term or key)."""
 
 
-def fail(skill: SkillResult, reason: str, verdict: ClassVerdict | None = None) -> None:
-    skill.status = "failed"
-    skill.reason = reason
-    skill.equivalent = False if verdict is not None and verdict.verdict == "different" else None
-    if verdict is not None and verdict.diff:
-        skill.diff = verdict.diff
+def failed(skill: SkillResult, reason: str, verdict: ClassVerdict | None = None) -> SkillResult:
+    """``skill`` failed for ``reason`` (with the verdict's difference, when it has one)."""
+    return replace(skill, status="failed", reason=reason,
+                   equivalent=False if verdict is not None and verdict.verdict == "different"
+                   else None,
+                   diff=verdict.diff if verdict is not None and verdict.diff else skill.diff)
 
 
 def _reason(verdict: ClassVerdict) -> str:
@@ -124,38 +125,47 @@ def rejections(skill: str, outcome: LoadOutcome, line: str = "line {}") -> list[
         for found in outcome.findings if found.skill == skill and rejects(found)))
 
 
-def _refuse_rejected(skill: SkillResult, after: LoadOutcome) -> bool:
-    """Skip a skill the EzSkiROS runtime would refuse to load, whatever it means.
+def _rejected(skill: SkillResult, after: LoadOutcome) -> SkillResult | None:
+    """``skill`` skipped when the EzSkiROS runtime would refuse to load it, whatever it
+    means; ``None`` when it loads.
 
     Its lines are those of the migrated version, which is not written: the legacy class it
     stays as is the one that gives the same finding once migrated.
     """
     found = rejections(skill.name, after, "line {} once migrated")
     if not found:
-        return False
-    skill.status = "skipped"
-    skill.equivalent = None
-    skill.reason = ("EzSkiROS rejects this skill when it loads: " + "; ".join(found) + ". "
-                    "The legacy code has the same problem (SkiROS2 accepted it silently); "
-                    "fix the description or the ontology, then migrate")
-    return True
+        return None
+    return replace(skill, status="skipped", equivalent=None, reason=(
+        "EzSkiROS rejects this skill when it loads: " + "; ".join(found) + ". The legacy "
+        "code has the same problem (SkiROS2 accepted it silently); fix the description or "
+        "the ontology, then migrate"))
 
 
-def attach_findings(skills: list[SkillResult], after: LoadOutcome,
-                     skip: frozenset[str] = STATIC_KINDS) -> None:
-    """Runtime check findings (domain/range, datatypes...) of the migrated skills.
+def with_findings(skills: list[SkillResult], after: LoadOutcome,
+                  skip: frozenset[str] = STATIC_KINDS) -> list[SkillResult]:
+    """``skills`` with the runtime check findings (domain/range, datatypes...) of the
+    migrated skills added.
 
     ``skip``: kinds reported elsewhere. ``rewrite``'s static pass already reports
     ``STATIC_KINDS`` once per term; ``verify`` has no static pass and keeps them all.
     """
-    by_name = {s.name: s for s in skills}
+    added: dict[str, list[ReviewFinding]] = {}
+    names = {s.name for s in skills}
     for found in after.findings:
-        skill = by_name.get(found.skill)
         kind = found.kind.replace("_", "-")
-        if skill is None or kind in skip:
+        if found.skill not in names or kind in skip:
             continue
-        if not any(f.message == found.message for f in skill.findings):
-            skill.findings.append(ReviewFinding(kind, found.line or 0, found.message))
+        added.setdefault(found.skill, []).append(
+            ReviewFinding(kind, found.line or 0, found.message))
+    out = []
+    for skill in skills:
+        findings = list(skill.findings)
+        for new in added.get(skill.name, ()):
+            if not any(f.message == new.message for f in findings):
+                findings.append(new)
+        out.append(replace(skill, findings=findings) if len(findings) != len(skill.findings)
+                   else skill)
+    return out
 
 
 def note_stand_ins(notes: list[str], before: LoadOutcome, after: LoadOutcome) -> None:

@@ -28,7 +28,7 @@ import traceback
 from collections import Counter
 from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -225,7 +225,7 @@ class RoundTrip:
                 self._record(failure)
             if isinstance(result.new_source, bytes):
                 if self.alter is not None:
-                    result.new_source = self.alter(result.new_source)
+                    result = replace(result, new_source=self.alter(result.new_source))
                 (before / name).write_bytes(module.text.encode("utf-8"))
                 (after / name).write_bytes(result.new_source)
                 changed.append((name, module, result))
