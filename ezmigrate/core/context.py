@@ -164,6 +164,9 @@ def literal_of(node: cst.BaseExpression, module: cst.Module) -> Literal | None:
             return Literal(_NAMED[code], code)
         if _PLAIN_STRING.fullmatch(code):  # no prefix, no escape: the text between quotes
             return Literal(code[1:-1], code)
+        number = _number(node)
+        if number is not None:
+            return Literal(number, code)
     else:
         code = module.code_for_node(node).strip()
     try:
@@ -171,6 +174,20 @@ def literal_of(node: cst.BaseExpression, module: cst.Module) -> Literal | None:
     except (ValueError, SyntaxError, TypeError, MemoryError, RecursionError):
         return None
     return Literal(value, code)
+
+
+def _number(node: cst.BaseExpression) -> int | float | None:
+    """An integer or float literal's value without compiling it (``int``/``float`` read
+    Python's literal syntax, underscores and prefixes included); ``None``: let
+    ``literal_eval`` decide."""
+    try:
+        if isinstance(node, cst.Integer):
+            return int(node.value, 0)
+        if isinstance(node, cst.Float):
+            return float(node.value)
+    except ValueError:
+        pass
+    return None
 
 
 _NAMED = {"True": True, "False": False, "None": None}

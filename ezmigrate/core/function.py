@@ -9,6 +9,7 @@ parameter in the signature, or onto the ``+=`` line).
 
 from __future__ import annotations
 
+import functools
 import itertools
 import keyword
 import re
@@ -143,6 +144,14 @@ def _line_break(comment: cst.Comment | None,
         empty_lines=lines, indent=True, last_line=cst.SimpleWhitespace(ALIGN))
 
 
+@functools.lru_cache(maxsize=4096)
+def expression(text: str) -> cst.BaseExpression:
+    """``text`` parsed as an expression, once per text: a repository repeats the same few
+    annotations and defaults in every description, and libcst nodes are immutable, so one
+    node can stand in every signature that needs it."""
+    return cst.parse_expression(text)
+
+
 def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[str],
                      ctx: EmitContext) -> tuple[cst.Parameters, cst.Comment | None]:
     """The signature; also returns the last parameter's end-of-line comment (for the header).
@@ -158,9 +167,9 @@ def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[s
         annotation_text, default = ctx.rules.param_annotation(op, name, ctx)
         entries.append((cst.Param(
             name=cst.Name(name),
-            annotation=cst.Annotation(cst.parse_expression(annotation_text)),
+            annotation=cst.Annotation(expression(annotation_text)),
             equal=cst.AssignEqual() if default is not None else cst.MaybeSentinel.DEFAULT,
-            default=cst.parse_expression(default) if default is not None else None),
+            default=expression(default) if default is not None else None),
             op.comments))
     star_at = _keyword_only_from([param for param, _ in entries])
     # the ``def`` line's own comment stays at the end of the ``def`` line: after ``self,``
