@@ -230,12 +230,10 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     compounds: list[str] = []
     if report is not None and report.suffix.lower() == ".md":
         from .compound.analysis import report_section
-        from .verify.pool import PoolConfig
 
         compounds = report_section(
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
-            PoolConfig(workers=options.jobs, timeout=options.timeout,
-                       ontology=ontology_files, python=options.python))
+            options.pool(ontology_files))
     _finish([m.result for m in outcome.migrated], report, request.writes, check,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
                                              compounds=compounds))
@@ -295,13 +293,11 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
            ignore_order: bool, ignore_labels: bool, debug: bool) -> None:
     """Prove AFTER means what BEFORE meant (two files, or two folders by relative path)."""
     from .verify.command import PathsMismatch, VerifyOptions, run_verify
-    from .verify.pool import PoolConfig
 
     options = _options(before, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
                                            python=python))
     _, ontology_files, used = _load_index(ontology, before, [before], options)
-    pool = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=ontology_files,
-                      python=options.python)
+    pool = options.pool(ontology_files)
     try:
         results, unloadable = run_verify(VerifyOptions(
             before, after, pool, ignore_order, ignore_labels, options.exclude))
@@ -369,7 +365,6 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     from .lint.select import Selection, SelectorError, apply, parse_selectors
     from .output_formats import FORMATS
     from .output_formats import statistics as count
-    from .verify.pool import PoolConfig
 
     options = _options(paths[0], CommandLine(
         exclude=exclude, jobs=jobs, timeout=timeout, python=python, select=select or None,
@@ -383,8 +378,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     except SelectorError as error:
         raise click.UsageError(str(error)) from None
     index, ontology_files, _ = _load_index(ontology, paths[0], paths, options)
-    pool = PoolConfig(workers=options.jobs, timeout=options.timeout, ontology=ontology_files,
-                      python=options.python)
+    pool = options.pool(ontology_files)
     progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
         if sys.stderr.isatty() and not quiet else None
     outcome = run_check(list(paths), index, pool, options.exclude, progress,

@@ -23,9 +23,12 @@ from __future__ import annotations
 import shutil
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TypeVar
+from typing import TYPE_CHECKING, TypeVar
 
 from .config import ConfigError, ProjectConfig
+
+if TYPE_CHECKING:
+    from .verify.pool import PoolConfig
 
 DEFAULT_TIMEOUT = 20.0
 """Seconds a file may take to load when verifying, when nobody says otherwise."""
@@ -77,6 +80,14 @@ class Options:
     """Folders of skill libraries compound skills may use (absolute)."""
     project: Path | None = None
     """The folder of the ``pyproject.toml`` in use: project excludes are relative to it."""
+
+    def pool(self, ontology: tuple[str, ...], workers: int | None = None) -> PoolConfig:
+        """The sandbox's settings for these options, loading ``ontology`` (resolved files;
+        empty: the bundled default) with ``workers`` workers (default: ``jobs``)."""
+        from .verify.pool import PoolConfig
+
+        return PoolConfig(workers=self.jobs if workers is None else workers,
+                          timeout=self.timeout, ontology=ontology, python=self.python)
 
     @classmethod
     def resolve(cls, cli: CommandLine, pyproject: ProjectConfig) -> Options:

@@ -40,13 +40,10 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, ve
     """
     from .discover import Candidate
     from .project import Checks, settle
-    from .verify.pool import PoolConfig
     from .verify.verdicts import Comparison
 
     data = sys.stdin.buffer.read()
-    workers = min(2, options.jobs)
-    checks = Checks(PoolConfig(workers=workers, timeout=options.timeout, ontology=ontology,
-                               python=options.python),
+    checks = Checks(options.pool(ontology, workers=min(2, options.jobs)),
                     Comparison(ignore_order, ignore_labels)) if verify else None
     with tempfile.TemporaryDirectory(prefix="ezmigrate-stdin-") as folder:
         path = Path(folder) / NAME

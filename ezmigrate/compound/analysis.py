@@ -110,7 +110,6 @@ def _trace(trees: Trees, pool: PoolConfig, standby: Standby | None = None) -> No
     size = min(TRACE_BATCH, max(1, -(-len(jobs) // max(1, pool.workers))))
     outcomes = run_batched(jobs, pool, size, standby=standby)
     for (candidate, pending), found in zip(order, outcomes, strict=True):
-        assert found is not None
         _record(trees, str(candidate.path), pending, found)
 
 

@@ -9,7 +9,6 @@ slower, and rare.
 
 from __future__ import annotations
 
-from collections import Counter
 from collections.abc import Mapping
 
 import libcst as cst
@@ -17,15 +16,16 @@ import libcst.helpers
 from libcst.metadata import CodeRange
 
 from .context import positions_of
+from .imports import name_counts
 from .legacy_names import LegacyNames
+from .reader import find_create_description
 from .syntax_facts import ClassFacts, FunctionFacts, Span, SyntaxFacts
 
 
 def facts_of(module: cst.Module) -> SyntaxFacts:
     """``SyntaxFacts.of`` for a module only libcst can parse."""
     module, positions = positions_of(module)  # unsafe_skip_copy: the nodes stay the same
-    names: Counter[str] = Counter()
-    module.visit(_Names(names))
+    names = name_counts(module)
     bindings: dict[str, int] = {}
     module.visit(_Bindings(bindings))
     classes = [_class(stmt, positions) for stmt in module.body if isinstance(stmt, cst.ClassDef)]
@@ -35,18 +35,13 @@ def facts_of(module: cst.Module) -> SyntaxFacts:
 
 def _class(node: cst.ClassDef, positions: Mapping[cst.CSTNode, object]) -> ClassFacts:
     def create() -> FunctionFacts | None:
-        func = None
-        for stmt in node.body.body if isinstance(node.body, cst.IndentedBlock) else ():
-            if isinstance(stmt, cst.FunctionDef) and stmt.name.value == "createDescription":
-                func = stmt
+        func = find_create_description(node)
         if func is None:
             return None
-        names: Counter[str] = Counter()
-        func.visit(_Names(names))
         bound: set[str] = set()
         func.body.visit(_Bound(bound))
         return FunctionFacts(_range(func, positions).start.column,
-                             _spans(func.body, positions), names, frozenset(bound))
+                             _spans(func.body, positions), name_counts(func), frozenset(bound))
 
     return ClassFacts(_range(node, positions).start.line, _spans(node.body, positions), create)
 
@@ -67,22 +62,6 @@ def _spans(block: cst.BaseSuite, positions: Mapping[cst.CSTNode, object]) -> lis
             where = _range(part, positions)
             found.append((where.start.line, where.end.line))
     return found
-
-
-class _Names(cst.CSTVisitor):
-    """``SyntaxFacts.names``: identifiers outside imports."""
-
-    def __init__(self, names: Counter[str]) -> None:
-        self.names = names
-
-    def visit_Import(self, node: cst.Import) -> bool:
-        return False
-
-    def visit_ImportFrom(self, node: cst.ImportFrom) -> bool:
-        return False
-
-    def visit_Name(self, node: cst.Name) -> None:
-        self.names[node.value] += 1
 
 
 class _Bindings(cst.CSTVisitor):

@@ -14,6 +14,7 @@ rebind ours, so the new imports then go right after the last top-level star impo
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Collection, Iterable, Sequence
 
 import libcst as cst
@@ -28,11 +29,17 @@ RUNTIME_ORDER = ("SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMEN
                  "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output")
 
 
+def name_counts(node: cst.CSTNode) -> Counter[str]:
+    """How often a subtree mentions each identifier outside imports (a safe
+    over-approximation of its uses). For a whole module, ``SyntaxFacts.names`` gives the
+    same from one ``ast`` walk."""
+    return Counter(found.value for found in walk(node, (cst.Import, cst.ImportFrom))
+                   if type(found) is cst.Name)
+
+
 def used_names(node: cst.CSTNode) -> set[str]:
-    """Every identifier a subtree mentions outside imports (a safe over-approximation). For
-    a whole module, ``SyntaxFacts.names`` gives the same from one ``ast`` walk."""
-    return {found.value for found in walk(node, (cst.Import, cst.ImportFrom))
-            if type(found) is cst.Name}
+    """The identifiers of ``name_counts``."""
+    return set(name_counts(node))
 
 
 def module_bindings(module: cst.Module) -> set[str]:

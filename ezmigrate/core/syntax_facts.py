@@ -110,19 +110,15 @@ def _walk(tree: ast.AST, names: Counter[str], legacy: LegacyNames | None = None,
                 note_binding(node, bindings)
 
 
-def note_import(node: ast.AST, legacy: LegacyNames) -> bool:
+def note_import(node: ast.AST, legacy: LegacyNames) -> None:
     """Record ``node`` in ``legacy`` if it is an import statement (relative ones bind no
-    SkiROS2 name); whether it was one."""
+    SkiROS2 name)."""
     if isinstance(node, ast.Import):
         for alias in node.names:
             legacy.add_import(alias.name, alias.asname)
-        return True
-    if isinstance(node, ast.ImportFrom):
-        if node.module and not node.level:
-            legacy.add_from_import(node.module, None if node.names[0].name == "*" else
-                                   [(a.name, a.asname or a.name) for a in node.names])
-        return True
-    return False
+    elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+        legacy.add_from_import(node.module, None if node.names[0].name == "*" else
+                               [(a.name, a.asname or a.name) for a in node.names])
 
 
 def note_binding(node: ast.AST, bindings: dict[str, int]) -> None:
