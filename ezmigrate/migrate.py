@@ -13,7 +13,7 @@ import ast
 import re
 import traceback
 from collections import Counter
-from collections.abc import Collection, Mapping
+from collections.abc import Collection, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
@@ -27,6 +27,7 @@ from .core.context import ExtractContext, StatementLines, module_constants, posi
 from .core.cst_facts import facts_of
 from .core.emit import DSL_NAMES, EmitContext
 from .core.function import build_description, emitted_params
+from .core.holes import Holes, stand_in
 from .core.imports import (
     ONTOLOGY,
     RUNTIME,
@@ -108,17 +109,32 @@ def migrate(source: bytes | str, settings: Settings | None = None,
             path: str = "<string>") -> FileResult:
     """Migrate one module's text. ``result.new_source`` is set only if something changed."""
     settings = settings or Settings()
+    tree = _python_tree(source)
+    for text, holes in _readings(source, tree):
+        result = _migrate_text(text, source, settings, path, tree, holes)
+        if result is not None:
+            return result
+    raise AssertionError("the whole source is the last reading, and it always gives a result")
+
+
+def _migrate_text(text: bytes | str, source: bytes | str, settings: Settings, path: str,
+                  tree: ast.Module | None, holes: Holes | None) -> FileResult | None:
+    """``migrate`` with libcst reading ``text`` (``source``, or it with ``holes``)."""
     try:
-        module = cst.parse_module(source)
+        module = cst.parse_module(text)
     except cst.ParserSyntaxError as error:
+        if holes is not None:
+            return None
         message, line, column = syntax_error_location(source, error)
         return FileResult(path, error=f"cannot parse: {message} (line {line}, column "
                           f"{column})", error_line=line)
     except (UnicodeDecodeError, LookupError, SyntaxError) as error:
+        if holes is not None:
+            return None
         reason, at = decode_error_message(source, error)
         return FileResult(path, error=reason, error_line=at)
     try:
-        return _migrate_module(module, source, settings, path)
+        return _migrate_module(module, source, settings, path, tree, holes)
     except RecursionError:
         deep = too_deep_line(module)
         where = f" (the statement at line {deep})" if deep is not None else ""
@@ -127,10 +143,34 @@ def migrate(source: bytes | str, settings: Settings | None = None,
             "split that expression into smaller ones, then migrate"), error_line=deep)
 
 
-def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
-                    path: str) -> FileResult:
-    """``migrate`` once the source parsed."""
-    facts = _syntax_facts(module, source)
+def _python_tree(source: bytes | str) -> ast.Module | None:
+    """The module as Python's own parser reads it; ``None`` where it does not (Python 2
+    leftovers, syntax newer than this Python, bad bytes: libcst's reading decides)."""
+    try:
+        return ast.parse(source)
+    except (SyntaxError, ValueError, MemoryError, RecursionError):
+        return None
+
+
+def _readings(source: bytes | str, tree: ast.Module | None) -> Iterator[
+        tuple[bytes | str, Holes | None]]:
+    """What libcst reads, in order: the source with its top-level functions stood in for
+    (``core/holes.py``), if ``ast`` read it; then the whole source, when that fails."""
+    holes = stand_in(_raw(source), tree) if tree is not None else None
+    if holes is not None:
+        yield (holes.text if isinstance(source, bytes)
+               else holes.text.decode("utf-8", "surrogateescape")), holes
+    yield source, None
+
+
+def _raw(source: bytes | str) -> bytes:
+    return source if isinstance(source, bytes) else source.encode("utf-8", "surrogateescape")
+
+
+def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings, path: str,
+                    tree: ast.Module | None, holes: Holes | None) -> FileResult | None:
+    """``migrate`` once the source parsed; ``None`` when ``holes`` do not fill back."""
+    facts = _syntax_facts(module, source, tree)
     if isinstance(facts, FileResult):
         return replace(facts, path=path)
     names = facts.legacy
@@ -155,7 +195,12 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
     new_module = update_imports(_rewrite(module, converted, base_name), runtime_pairs,
                                 {(n, aliases.get(n, n)) for p in converted for n in p.prefixes},
                                 settings.exported, used=used, used_before=set(facts.names))
-    code = new_module.code
+    code: bytes | str = new_module.code
+    if holes is not None:
+        raw = holes.fill(new_module.bytes if isinstance(source, bytes) else _raw(code))
+        if raw is None:
+            return None
+        code = raw if isinstance(source, bytes) else raw.decode("utf-8", "surrogateescape")
     try:  # the parser that read the original reads the result
         ast.parse(code) if facts.python_parses else cst.parse_module(code)
     except (SyntaxError, ValueError, cst.ParserSyntaxError) as error:  # a bug of ours
@@ -163,16 +208,18 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
         return replace(found, error=message, skills=[
             replace(s, status="failed", reason=message) if s.status == "converted" else s
             for s in found.skills])
-    return replace(found, new_source=code.encode(new_module.encoding)
-                   if isinstance(source, bytes) else code)
+    if isinstance(source, bytes) and isinstance(code, str):
+        code = code.encode(new_module.encoding)
+    return replace(found, new_source=code)
 
 
-def _syntax_facts(module: cst.Module, source: bytes | str) -> SyntaxFacts | FileResult:
+def _syntax_facts(module: cst.Module, source: bytes | str,
+                  tree: ast.Module | None) -> SyntaxFacts | FileResult:
     """The module's facts, from ``ast`` unless Python's own parser refuses the file; for
     Python 2's ``except X, e:`` (which libcst reads as Python 3.14's ``except A, B:``) the
     result that says so instead."""
     try:
-        return SyntaxFacts.of(ast.parse(source))
+        return SyntaxFacts.of(tree if tree is not None else ast.parse(source))
     except (SyntaxError, ValueError, MemoryError):
         python2 = _python2_except(module, source)
         if python2 is None:  # syntax newer than this Python: libcst reads it all the same
@@ -246,12 +293,14 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
     Another file deriving from one of them inlines these when it calls the base's
     ``createDescription`` (see ``ezmigrate.cross_file``).
     """
+    tree = _python_tree(source)
+    text, _ = next(_readings(source, tree))  # nothing is printed: no hole to fill
     try:
-        module = cst.parse_module(source)
+        module = cst.parse_module(text)
     except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError):
         return {}
     try:
-        facts = _syntax_facts(module, source)
+        facts = _syntax_facts(module, source, tree)
         planned = _plan_module(module, facts, settings) \
             if isinstance(facts, SyntaxFacts) else None
     except (RecursionError, MemoryError):  # its own migration reports the file

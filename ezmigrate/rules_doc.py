@@ -48,8 +48,16 @@ def render() -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Write the document (to ``argv[0]`` or docs/rules.md); ``-`` prints it."""
+    """Write the document (to ``argv[0]`` or docs/rules.md); ``-`` prints it.
+
+    An argument that looks like an option is refused, not taken for a file name (a
+    ``--help`` once became a file of that name)."""
     args = sys.argv[1:] if argv is None else argv
+    if len(args) > 1 or (args and args[0].startswith("-") and args[0] != "-"):
+        sys.stderr.write("usage: python -m ezmigrate.rules_doc [PATH | -]\n"
+                         f"writes the finding-code catalogue to PATH (default {DOC}); "
+                         "- prints it\n")
+        return 0 if args[0] in ("-h", "--help") else 2
     target = args[0] if args else str(DOC)
     if target == "-":
         sys.stdout.write(render())

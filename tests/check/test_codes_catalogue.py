@@ -99,3 +99,22 @@ def test_committed_rules_doc_is_the_generated_one():
         "run `python -m ezmigrate.rules_doc` and commit docs/rules.md")
     for rule in RULES:
         assert f"| {rule.code} | {rule.name} |" in rules_doc.render()
+
+
+@pytest.mark.parametrize(("argv", "status"), [(["--help"], 0), (["-x"], 2), (["a", "b"], 2)])
+def test_rules_doc_refuses_options_instead_of_writing_a_file_named_after_them(
+        argv: list[str], status: int, tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    monkeypatch.chdir(tmp_path)
+    assert rules_doc.main(argv) == status
+    assert "usage: python -m ezmigrate.rules_doc" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_rules_doc_writes_to_the_path_given_or_prints_with_a_dash(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    target = tmp_path / "rules.md"
+    assert rules_doc.main([str(target)]) == 0
+    assert target.read_text(encoding="utf-8") == rules_doc.render()
+    assert rules_doc.main(["-"]) == 0
+    assert capsys.readouterr().out == rules_doc.render()

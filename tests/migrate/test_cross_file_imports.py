@@ -63,3 +63,41 @@ def test_names_imported_by_siblings_stay_importable(tmp_path: Path, importer: st
          "    pkg.descriptions.Navigate()\n"],
         cwd=tmp_path, capture_output=True, text=True, timeout=120, check=False)
     assert loads.returncode == 0, loads.stderr
+
+
+# -- the import scan: the same words as the pattern over the whole file -------------------
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from ezmigrate.cross_file import _IMPORTS, _WORD, import_words  # noqa: E402
+
+_FRAGMENTS = ["import", "from", " ", "\t", "\n", "\r\n", "(", ")", ",", ".", "..", "#",
+              "x", "pkg", "important", "_import", "reimport", "as", "*", '"', "'", ";", "\\"]
+
+
+def _whole_file(data: bytes) -> set[bytes]:
+    named: set[bytes] = set()
+    for source, names, plain in _IMPORTS.findall(data):
+        named.update(_WORD.findall(source + b" " + names + b" " + plain))
+    return named
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.lists(st.sampled_from(_FRAGMENTS), max_size=60))
+def test_import_words_finds_what_the_pattern_finds_over_the_whole_file(
+        fragments: list[str]) -> None:
+    data = "".join(fragments).encode()
+    assert import_words(data) == _whole_file(data)
+
+
+@pytest.mark.parametrize("text", [
+    "from .base import (\n    Navigate,\n    important,\n)\nimport os\n",
+    "import a; import b\nx = 1  # import c\n",
+    "def f():\n    from pkg.sub import m as n\n",
+    "s = 'important'\nfrom x import y\r\nimport z\n",
+])
+def test_import_words_on_real_shapes(text: str) -> None:
+    data = text.encode()
+    assert import_words(data) == _whole_file(data)
+    assert import_words(data)  # each shape imports something

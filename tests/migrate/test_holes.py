@@ -1,0 +1,144 @@
+"""Top-level functions stood in for while libcst reads a module (``core/holes.py``).
+
+The speed-up must be invisible: every file migrates to the same bytes, with the same
+verdicts, line numbers and reasons, as when libcst reads the whole file. Checked on every
+fixture file (as bytes and as text) and on the shapes that could tell the two apart.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import libcst as cst
+import pytest
+
+import ezmigrate.migrate as core
+from ezmigrate.core.holes import MARK, stand_in
+from ezmigrate.migrate import Settings, migrate
+from ezmigrate.results import FileResult
+from ezskiros_runtime.ontology.index import load_index
+
+FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
+SETTINGS = Settings(index=load_index())
+
+LEGACY = ("from skiros2_common.core.abstract_skill import SkillDescription\n"
+          "from skiros2_common.core.params import ParamTypes\n"
+          "from skiros2_common.core.world_element import Element\n")
+SKILL = ('class Pick(SkillDescription):\n'
+         '    def createDescription(self):\n'
+         '        self.addParam("Object", Element("skiros:Product"), ParamTypes.Required)\n')
+
+
+def _whole(source: bytes | str, monkeypatch: pytest.MonkeyPatch) -> FileResult:
+    """What ``migrate`` gives when libcst reads the whole file."""
+    with monkeypatch.context() as patch:
+        patch.setattr(core, "stand_in", lambda *_: None)
+        return migrate(source, SETTINGS, "m.py")
+
+
+def _same_both_ways(source: bytes | str, monkeypatch: pytest.MonkeyPatch) -> FileResult:
+    stood_in = migrate(source, SETTINGS, "m.py")
+    assert stood_in == _whole(source, monkeypatch)
+    return stood_in
+
+
+def _fixture_files() -> list[Path]:
+    return sorted(FIXTURES.rglob("*.py"))
+
+
+@pytest.mark.parametrize("path", _fixture_files(), ids=lambda p: str(p.relative_to(FIXTURES)))
+def test_every_fixture_file_migrates_the_same_with_and_without_holes(
+        path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    data = path.read_bytes()
+    _same_both_ways(data, monkeypatch)
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        return  # only bytes can hold it
+    _same_both_ways(text, monkeypatch)
+
+
+SHAPES = {
+    "helpers around the skill": "import os\n\n\ndef helper(a):\n    return a\n\n\n" + LEGACY
+    + "\n\n" + SKILL + "\n\ndef main():\n    print(helper(1))\n",
+    "decorated and async": LEGACY + "import functools\n\n\n@functools.lru_cache()\n"
+    "@functools.wraps(print)\ndef cached(x):\n    return x\n\n\nasync def run():\n"
+    "    await cached(1)\n\n\n" + SKILL,
+    "one-line def and trailing comment": LEGACY + "def f(): return 1  # keep me\n\n\n" + SKILL,
+    "crlf": (LEGACY + "\n\ndef helper():\n    return 2\n\n\n" + SKILL).replace("\n", "\r\n"),
+    "comment indented after a function, then a legacy import dropped":
+        "def helper():\n    return 1\n    # the end of helper\n" + LEGACY + "\n\n" + SKILL,
+    "function first, no docstring": "def first():\n    pass\n\n\n" + LEGACY + "\n\n" + SKILL,
+    "two-space functions before four-space classes":
+        "def helper():\n  if True:\n    return 1\n\n\n" + LEGACY + "\n\n" + SKILL,
+    "a function named like an ontology prefix": LEGACY + "\n\ndef skiros():\n    pass\n\n\n"
+    + SKILL,
+    "a function that uses a legacy name": LEGACY + "\n\ndef make():\n    return Element('x')\n"
+    "\n\n" + SKILL,
+    "no trailing newline": LEGACY + "\n\n" + SKILL + "\n\ndef last():\n    return 0",
+    "a lone carriage return": LEGACY + "x = 1\ry = 2\n\ndef f():\n    pass\n\n\n" + SKILL,
+    "non-ASCII function name": "# -*- coding: utf-8 -*-\n" + LEGACY + "\n\ndef größe():\n"
+    "    return 1\n\n\n" + SKILL,
+    "nested function and class inside": LEGACY + "\n\ndef outer():\n    def inner():\n"
+    "        class Local(SkillDescription):\n            pass\n    return inner\n\n\n"
+    + SKILL,
+}
+
+
+@pytest.mark.parametrize("text", SHAPES.values(), ids=SHAPES.keys())
+def test_shapes_migrate_the_same_with_and_without_holes(
+        text: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    for source in (text, text.encode("utf-8")):
+        result = _same_both_ways(source, monkeypatch)
+        assert result.new_source is not None, result
+        assert [s.status for s in result.skills] == ["converted"]
+        migrated = result.new_source
+        ast.parse(migrated)
+        assert (MARK.decode() if isinstance(migrated, str) else MARK) not in migrated
+
+
+def test_a_latin_1_file_keeps_its_bytes_outside_the_skill(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    source = ("# -*- coding: latin-1 -*-\n" + LEGACY + "\n\ndef label():\n"
+              "    return 'Großteil'\n\n\n" + SKILL).encode("latin-1")
+    result = _same_both_ways(source, monkeypatch)
+    assert isinstance(result.new_source, bytes)
+    assert b"    return 'Gro\xdfteil'\n" in result.new_source
+
+
+def test_holes_keep_every_line_and_fill_back_to_the_original() -> None:
+    source = SHAPES["decorated and async"].encode()
+    holes = stand_in(source, ast.parse(source))
+    assert holes is not None
+    assert [original.split(b"\n")[0] for _, original in holes.filled] == [
+        b"@functools.lru_cache()", b"async def run():"]
+    assert holes.text.count(b"\n") == source.count(b"\n")
+    kept = [line for line in holes.text.split(b"\n") if MARK not in line and line != b"'''"]
+    assert all(line in source.split(b"\n") for line in kept)
+    assert b"await" not in holes.text and b"return x" not in holes.text
+    assert holes.fill(cst.parse_module(holes.text).bytes) == source
+
+
+def test_nothing_is_stood_in_for_where_lines_could_be_counted_differently() -> None:
+    for source in (SHAPES["a lone carriage return"].encode(),
+                   SHAPES["helpers around the skill"].encode() + b"# " + MARK + b"\n",
+                   (LEGACY + SKILL).encode()):  # no function at all
+        assert stand_in(source, ast.parse(source)) is None
+
+
+def test_a_placeholder_that_does_not_come_back_makes_fill_refuse() -> None:
+    source = SHAPES["helpers around the skill"].encode()
+    holes = stand_in(source, ast.parse(source))
+    assert holes is not None
+    first, _ = holes.filled[0]
+    assert holes.fill(holes.text.replace(first, b"pass")) is None
+    assert holes.fill(holes.text + first) is None  # printed twice
+
+
+def test_when_holes_do_not_fill_the_whole_file_is_read(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    source = SHAPES["helpers around the skill"].encode()
+    expected = _whole(source, monkeypatch)
+    monkeypatch.setattr(core.Holes, "fill", lambda self, code: None)
+    assert migrate(source, SETTINGS, "m.py") == expected
