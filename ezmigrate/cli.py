@@ -222,9 +222,10 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     outcome = run_rewrite(request, index)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
-    for item in outcome.migrated:
-        _print_result(str(item.candidate.path), item.candidate.relative, item.original,
-                      item.result, dry_run, check, color, debug)
+    for item in outcome.migrated:  # the bytes of a file that does not change stay on disk
+        _print_result(str(item.candidate.path), item.candidate.relative,
+                      item.original if item.result.changed else b"", item.result, dry_run,
+                      check, color, debug)
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
     compounds: list[str] = []

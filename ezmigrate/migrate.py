@@ -22,7 +22,7 @@ import libcst as cst
 from ezskiros_runtime.compare import compare
 from ezskiros_runtime.model import SkillModel
 
-from .core.classes import DescriptionClass, description_classes
+from .core.classes import DescriptionClass, description_classes, inert_classes
 from .core.context import ExtractContext, StatementLines, module_constants, positions_of
 from .core.cst_facts import facts_of
 from .core.emit import DSL_NAMES, EmitContext
@@ -110,15 +110,16 @@ def migrate(source: bytes | str, settings: Settings | None = None,
     """Migrate one module's text. ``result.new_source`` is set only if something changed."""
     settings = settings or Settings()
     tree = _python_tree(source)
-    for text, holes in _readings(source, tree):
-        result = _migrate_text(text, source, settings, path, tree, holes)
+    facts = SyntaxFacts.of(tree) if tree is not None else None
+    for text, holes in _readings(source, tree, facts, settings):
+        result = _migrate_text(text, source, settings, path, facts, holes)
         if result is not None:
             return result
     raise AssertionError("the whole source is the last reading, and it always gives a result")
 
 
 def _migrate_text(text: bytes | str, source: bytes | str, settings: Settings, path: str,
-                  tree: ast.Module | None, holes: Holes | None) -> FileResult | None:
+                  facts: SyntaxFacts | None, holes: Holes | None) -> FileResult | None:
     """``migrate`` with libcst reading ``text`` (``source``, or it with ``holes``)."""
     try:
         module = cst.parse_module(text)
@@ -134,7 +135,7 @@ def _migrate_text(text: bytes | str, source: bytes | str, settings: Settings, pa
         reason, at = decode_error_message(source, error)
         return FileResult(path, error=reason, error_line=at)
     try:
-        return _migrate_module(module, source, settings, path, tree, holes)
+        return _migrate_module(module, source, settings, path, facts, holes)
     except RecursionError:
         deep = too_deep_line(module)
         where = f" (the statement at line {deep})" if deep is not None else ""
@@ -152,11 +153,16 @@ def _python_tree(source: bytes | str) -> ast.Module | None:
         return None
 
 
-def _readings(source: bytes | str, tree: ast.Module | None) -> Iterator[
-        tuple[bytes | str, Holes | None]]:
-    """What libcst reads, in order: the source with its top-level functions stood in for
-    (``core/holes.py``), if ``ast`` read it; then the whole source, when that fails."""
-    holes = stand_in(_raw(source), tree) if tree is not None else None
+def _readings(source: bytes | str, tree: ast.Module | None, facts: SyntaxFacts | None,
+              settings: Settings) -> Iterator[tuple[bytes | str, Holes | None]]:
+    """What libcst reads, in order: the source with the code the migration never reads
+    stood in for (``core/holes.py``), if ``ast`` read it; then the whole source, when
+    that fails."""
+    holes = None
+    if tree is not None and facts is not None:
+        inert = inert_classes(tree, facts.legacy, {
+            *settings.external, *settings.migrated_bases, *settings.unresolved_bases})
+        holes = stand_in(_raw(source), tree, inert)
     if holes is not None:
         yield (holes.text if isinstance(source, bytes)
                else holes.text.decode("utf-8", "surrogateescape")), holes
@@ -168,9 +174,10 @@ def _raw(source: bytes | str) -> bytes:
 
 
 def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings, path: str,
-                    tree: ast.Module | None, holes: Holes | None) -> FileResult | None:
-    """``migrate`` once the source parsed; ``None`` when ``holes`` do not fill back."""
-    facts = _syntax_facts(module, source, tree)
+                    known: SyntaxFacts | None, holes: Holes | None) -> FileResult | None:
+    """``migrate`` once the source parsed; ``None`` when ``holes`` do not fill back.
+    ``known``: the module's facts, when ``ast`` read it."""
+    facts = known if known is not None else _syntax_facts(module, source)
     if isinstance(facts, FileResult):
         return replace(facts, path=path)
     names = facts.legacy
@@ -213,13 +220,12 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
     return replace(found, new_source=code)
 
 
-def _syntax_facts(module: cst.Module, source: bytes | str,
-                  tree: ast.Module | None) -> SyntaxFacts | FileResult:
+def _syntax_facts(module: cst.Module, source: bytes | str) -> SyntaxFacts | FileResult:
     """The module's facts, from ``ast`` unless Python's own parser refuses the file; for
     Python 2's ``except X, e:`` (which libcst reads as Python 3.14's ``except A, B:``) the
     result that says so instead."""
     try:
-        return SyntaxFacts.of(tree if tree is not None else ast.parse(source))
+        return SyntaxFacts.of(ast.parse(source))
     except (SyntaxError, ValueError, MemoryError):
         python2 = _python2_except(module, source)
         if python2 is None:  # syntax newer than this Python: libcst reads it all the same
@@ -294,13 +300,14 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
     ``createDescription`` (see ``ezmigrate.cross_file``).
     """
     tree = _python_tree(source)
-    text, _ = next(_readings(source, tree))  # nothing is printed: no hole to fill
+    known = SyntaxFacts.of(tree) if tree is not None else None
+    text, _ = next(_readings(source, tree, known, settings))  # nothing printed: no hole to fill
     try:
         module = cst.parse_module(text)
     except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError):
         return {}
     try:
-        facts = _syntax_facts(module, source, tree)
+        facts = known if known is not None else _syntax_facts(module, source)
         planned = _plan_module(module, facts, settings) \
             if isinstance(facts, SyntaxFacts) else None
     except (RecursionError, MemoryError):  # its own migration reports the file

@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 
 from . import holdpoint
 from .discover import Candidate
+from .import_scan import import_words
 from .prefilter import may_hold_descriptions
 from .progress import Progress
 from .results import FileResult
@@ -44,13 +45,15 @@ class Migrated:
     place) they are not kept: the first access reads the file again, as it is then.
     """
 
-    __slots__ = ("_digest", "_original", "candidate", "result", "settings")
+    __slots__ = ("_digest", "_imports", "_original", "candidate", "result", "settings")
 
     def __init__(self, candidate: Candidate, original: bytes | None, digest: str | None,
-                 result: FileResult, settings: Settings | None = None) -> None:
+                 result: FileResult, settings: Settings | None = None,
+                 imports: frozenset[bytes] | None = None) -> None:
         self.candidate = candidate
         self._original = original
         self._digest = digest
+        self._imports = imports
         self.result = result
         self.settings = settings
         """What the core migrated this file with (to migrate it again, holding classes)."""
@@ -63,6 +66,14 @@ class Migrated:
             except OSError:
                 return b""
         return self._original
+
+    @property
+    def imports(self) -> frozenset[bytes]:
+        """The words of the file's import statements (``import_scan``): taken at the read
+        for a file the prefilter ruled out, so that no later pass reads it again."""
+        if self._imports is None:
+            self._imports = frozenset(import_words(self.original))
+        return self._imports
 
     @property
     def digest(self) -> str:
@@ -211,7 +222,8 @@ def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                 if workers.pool is not None:  # forked workers are busy with the others
                     holdpoint.reach("migrating")
             else:
-                done.append(Migrated(candidate, None, None, FileResult(candidate.relative)))
+                done.append(Migrated(candidate, None, None, FileResult(candidate.relative),
+                                     imports=frozenset(import_words(data))))
                 workers.finished()
         workers.finish()
     finally:

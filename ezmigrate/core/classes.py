@@ -14,12 +14,13 @@ run would vanish from later runs and from ``check`` once its base was converted.
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 
 import libcst as cst
 
-from .legacy_names import LegacyNames, dotted_name
+from .legacy_names import LegacyNames, ast_dotted_name, dotted_name
 from .reader import class_bindings
 
 RUNTIME_ROOT = "ezskiros_runtime"
@@ -100,6 +101,46 @@ def _classify(module: cst.Module, names: LegacyNames, external: Collection[str],
                 found[stmt.name.value] = described
             break
     return list(found.values()), ezskiros - set(migrated)
+
+
+def inert_classes(tree: ast.Module, names: LegacyNames,
+                  known: Collection[str]) -> set[int]:
+    """``id``s of the top-level classes ``_classify`` leaves out whatever their bodies hold.
+
+    ``_classify`` reads a class body only for a base in its third branch, and takes a
+    class only through a base in one of its three: the legacy ``SkillDescription``, a
+    description of the module or of ``external``, or an EzSkiROS description of the
+    module, of ``migrated``, of ``unresolved`` or of ``ezskiros_runtime``. A class none of
+    whose positional bases is the first, nor a class of the module, nor a name in
+    ``known`` (the settings' ``external``, ``migrated`` and ``unresolved``), nor a name an
+    ``ezskiros_runtime`` import binds, is certainly no description, and its body is never
+    read: ``core/holes.py`` stands in for it. Implementation classes (``PrimitiveBase``,
+    ``SkillBase``) and plain helpers are such classes.
+    """
+    classes = [node for node in tree.body if isinstance(node, ast.ClassDef)]
+    taken = {node.name for node in classes} | set(known) | _runtime_bound(tree)
+    found = set()
+    for node in classes:
+        spelled = [ast_dotted_name(base) for base in node.bases]
+        if all(names.symbol_named(name) != "SkillDescription" and (
+                name is None or (name not in taken and name.split(".")[0] not in taken))
+               for name in spelled):
+            found.add(id(node))
+    return found
+
+
+def _runtime_bound(tree: ast.Module) -> set[str]:
+    """Local names the top-level imports from ``ezskiros_runtime`` bind (a superset of
+    ``_runtime_base_names``'s roots)."""
+    bound: set[str] = set()
+    for node in tree.body:
+        if isinstance(node, ast.ImportFrom) and not node.level \
+                and (node.module or "").split(".")[0] == RUNTIME_ROOT:
+            bound.update(alias.asname or alias.name for alias in node.names)
+        elif isinstance(node, ast.Import):
+            bound.update((alias.asname or alias.name).split(".")[0] for alias in node.names
+                         if alias.name.split(".")[0] == RUNTIME_ROOT)
+    return bound
 
 
 def _runtime_base_names(module: cst.Module) -> set[str]:

@@ -1,46 +1,51 @@
-"""Top-level functions stood in for while libcst reads a module: it parses what it rewrites.
+"""Code the migration never reads, stood in for while libcst parses a module.
 
 A skill file is mostly code the migration never reads: helper functions, callbacks,
-``main``. libcst parses and prints every byte at Python speed (about 13 ms for a 300-line
-file), while ``ast`` has already told where each top-level ``def`` starts and ends. So
-before libcst parses the module, each such function is replaced by a placeholder of the
-same lines: ``def name(): '''<mark>`` with the function's line endings inside one string
-token, closed where its last line ends. The placeholder binds the same name with the same
-kind of statement, so every whole-module reading (bindings, imports, classes, where new
-imports go) sees what it would see in the original, and every line keeps its number. After
-the rewrite each placeholder, found verbatim in the printed code, gets its original text
-back: the bytes of those functions are never parsed, printed or touched.
+implementation classes (``PrimitiveBase``, ``SkillBase``). libcst parses and prints every
+byte at Python speed (about 13 ms for a 300-line file), while ``ast`` has already told
+where each top-level statement starts and ends. So before libcst parses the module, each
+top-level function, and the body of each class that cannot be a description
+(``classes.inert_classes``), is replaced by a placeholder of the same lines: one string
+token holding the original's line endings and a mark, ``def name(): '''<mark>...'''`` for
+a function, ``'''<mark>...'''`` at the body's indentation for a class body (its header
+stays, bases and all). The placeholder binds the same name with the same kind of
+statement, so every whole-module reading (bindings, imports, classes and their bases,
+where new imports go) sees what it would see in the original, and every line keeps its
+number. After the rewrite each placeholder, found verbatim in the printed code, gets its
+original text back: those bytes are never parsed, printed or touched.
 
-A function stays in place when its first line is not plainly ``def``/``async``/``@`` at
-column 0, or follows a backslash. Nothing is stood in for in a file with a lone carriage
+A statement stays whole when its first line does not plainly start it (a backslash, a form
+feed, a body on the header's line). Nothing is stood in for in a file with a lone carriage
 return (Python and a line split could count its lines differently) or one that already
 holds the mark. New imports only ever go after imports or the docstring, never between a
-function and the comments that follow it, so where libcst files those comments does not
-change the output.
+stood-in statement and the comments that follow it, so where libcst files those comments
+does not change the output.
 """
 
 from __future__ import annotations
 
 import ast
 import re
+from collections.abc import Collection
 from dataclasses import dataclass
 
 MARK = b"__ezmigrate_stood_in_"
 _LINE = re.compile(rb"[^\r\n]*(?:\r\n|\n|\r)?")
 _LONE_CR = re.compile(rb"\r(?!\n)")
+_BLANK = b" \t"
 
 
 @dataclass(frozen=True)
 class Holes:
-    """A module's bytes with its top-level functions stood in for, and how to undo it."""
+    """A module's bytes with some statements stood in for, and how to undo it."""
 
     text: bytes
-    """What libcst parses: the original with each function replaced by its placeholder."""
+    """What libcst parses: the original with each stood-in part replaced by its placeholder."""
     filled: tuple[tuple[bytes, bytes], ...]
-    """``(placeholder, original text)`` per function, in file order."""
+    """``(placeholder, original text)`` per stood-in part, in file order."""
 
     def fill(self, code: bytes) -> bytes | None:
-        """``code`` (printed from the module parsed from ``text``) with every function back;
+        """``code`` (printed from the module parsed from ``text``) with every part back;
         ``None`` if a placeholder is not where it must be (the caller then migrates the
         original without holes)."""
         parts: list[bytes] = []
@@ -57,28 +62,58 @@ class Holes:
         return b"".join(parts)
 
 
-def stand_in(source: bytes, tree: ast.Module) -> Holes | None:
-    """``source`` with its top-level functions stood in for (see the module docstring);
-    ``None`` when there is none, or the file is one this must leave whole."""
-    functions = [node for node in tree.body
-                 if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))]
-    if not functions or MARK in source or _LONE_CR.search(source):
+def stand_in(source: bytes, tree: ast.Module, inert: Collection[int] = ()) -> Holes | None:
+    """``source`` with its top-level functions, and the bodies of the classes whose ``id``
+    is in ``inert``, stood in for (see the module docstring); ``None`` when there is
+    nothing to stand in for, or the file is one this must leave whole."""
+    parts = [node for node in tree.body if isinstance(node, (ast.FunctionDef,
+                                                              ast.AsyncFunctionDef))
+             or (isinstance(node, ast.ClassDef) and id(node) in inert and node.body)]
+    if not parts or MARK in source or _LONE_CR.search(source):
         return None
     lines = _LINE.findall(source)
-    filled = []
-    for number, node in enumerate(functions):
-        first = min([node.lineno, *(d.lineno for d in node.decorator_list)]) - 1
+    filled: list[tuple[bytes, bytes]] = []
+    for node in parts:
+        number = len(filled)
         last = (node.end_lineno or node.lineno) - 1
-        if not node.name.isascii() or not lines[first].startswith((b"def ", b"async ", b"@")) \
-                or (first and lines[first - 1].rstrip().endswith(b"\\")):
+        if isinstance(node, ast.ClassDef):
+            first = _first_line(node.body[0])
+            head = lines[first].lstrip(_BLANK)
+            indent = lines[first][:len(lines[first]) - len(head)]
+            if first <= node.lineno - 1 or not indent \
+                    or not _starts(head, len(indent), node.body[0]):
+                continue
+            opening = b"%s'''%s%d_" % (indent, MARK, number)
+        else:
+            first = _first_line(node)
+            if not node.name.isascii() or not _starts(lines[first], 0, node):
+                continue
+            opening = b"def %s(): '''%s%d_" % (node.name.encode(), MARK, number)
+        if first and lines[first - 1].rstrip().endswith(b"\\"):
             continue
         ends = [line[len(line.rstrip(b"\r\n")):] for line in lines[first:last + 1]]
         original = b"".join(lines[first:last + 1])[:-len(ends[-1]) or None]
-        placeholder = b"def %s(): '''%s%d_%s'''" % (
-            node.name.encode(), MARK, number, b"".join(ends[:-1]))
+        placeholder = opening + b"".join(ends[:-1]) + b"'''"
         lines[first] = placeholder + ends[-1]
         lines[first + 1:last + 1] = [b""] * (last - first)
         filled.append((placeholder, original))
     if not filled:
         return None
     return Holes(b"".join(lines), tuple(filled))
+
+
+def _first_line(node: ast.stmt) -> int:
+    """0-based first line of a statement, its decorators included."""
+    decorators = getattr(node, "decorator_list", [])
+    return min([node.lineno, *(d.lineno for d in decorators)]) - 1
+
+
+def _starts(line: bytes, column: int, node: ast.stmt) -> bool:
+    """Whether ``line`` (its ``column`` bytes of indentation removed) plainly begins the
+    statement ``node``."""
+    if getattr(node, "decorator_list", None):
+        return line.startswith(b"@")
+    if node.col_offset != column:
+        return False
+    return not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) \
+        or line.startswith((b"def ", b"async "))

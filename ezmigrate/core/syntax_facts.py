@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import ast
 from collections import Counter
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
@@ -93,7 +93,7 @@ def _walk(tree: ast.AST, names: Counter[str], legacy: LegacyNames | None = None,
     """One walk that counts names (and, when given, notes imports and bindings). Dispatch
     is on the exact type: a file has thousands of nodes and a chain of ``isinstance``
     tests was half the walk."""
-    for node in ast.walk(tree):
+    for node in nodes(tree):
         kind = type(node)
         if kind is ast.Name:
             names[node.id] += 1  # type: ignore[attr-defined]
@@ -108,6 +108,31 @@ def _walk(tree: ast.AST, names: Counter[str], legacy: LegacyNames | None = None,
                 names.update(name for name in identifiers(node) if name is not None)
             if bindings is not None and kind in _BINDERS:
                 note_binding(node, bindings)
+
+
+def nodes(tree: ast.AST) -> Iterator[ast.AST]:
+    """Every node under ``tree`` (``tree`` too), in no particular order: ``ast.walk``
+    without its generator of generators, and without the shared ``Load``/``Store``
+    context nodes no reader here asks for (a third of a module's nodes)."""
+    todo = [tree]
+    pop, push, extend = todo.pop, todo.append, todo.extend
+    fields = _NODE_FIELDS
+    while todo:
+        node = pop()
+        yield node
+        kind = type(node)
+        names = fields.get(kind)
+        if names is None:
+            names = fields[kind] = tuple(f for f in kind._fields if f != "ctx")
+        for name in names:
+            value = getattr(node, name, None)
+            if type(value) is list:
+                extend([item for item in value if isinstance(item, ast.AST)])
+            elif isinstance(value, ast.AST):
+                push(value)
+
+
+_NODE_FIELDS: dict[type, tuple[str, ...]] = {}
 
 
 def note_import(node: ast.AST, legacy: LegacyNames) -> None:
@@ -183,7 +208,7 @@ def _spans(body: list[ast.stmt]) -> list[Span]:
 def bound_names(func: ast.FunctionDef | ast.AsyncFunctionDef) -> frozenset[str]:
     """Every name ``func``'s body binds (assignments, walrus, loops, imports, ``as``)."""
     found: set[str] = set()
-    for node in (n for stmt in func.body for n in ast.walk(stmt)):
+    for node in (n for stmt in func.body for n in nodes(stmt)):
         if isinstance(node, ast.Assign):
             found.update(n for t in node.targets for n in target_names(t))
         elif isinstance(node, (ast.AugAssign, ast.AnnAssign, ast.NamedExpr, ast.For,

@@ -70,7 +70,7 @@ def test_names_imported_by_siblings_stay_importable(tmp_path: Path, importer: st
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from ezmigrate.cross_file import _IMPORTS, _WORD, import_words  # noqa: E402
+from ezmigrate.import_scan import _IMPORTS, _WORD, import_words  # noqa: E402
 
 _FRAGMENTS = ["import", "from", " ", "\t", "\n", "\r\n", "(", ")", ",", ".", "..", "#",
               "x", "pkg", "important", "_import", "reimport", "as", "*", '"', "'", ";", "\\"]

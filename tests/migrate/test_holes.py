@@ -14,6 +14,7 @@ import libcst as cst
 import pytest
 
 import ezmigrate.migrate as core
+from ezmigrate.core.classes import ezskiros_classes
 from ezmigrate.core.holes import MARK, stand_in
 from ezmigrate.migrate import Settings, migrate
 from ezmigrate.results import FileResult
@@ -142,3 +143,110 @@ def test_when_holes_do_not_fill_the_whole_file_is_read(
     expected = _whole(source, monkeypatch)
     monkeypatch.setattr(core.Holes, "fill", lambda self, code: None)
     assert migrate(source, SETTINGS, "m.py") == expected
+
+
+# -- class bodies: only of classes that cannot be descriptions ----------------------------
+
+IMPLEMENTATION = ("from skiros2_common.core.primitive import PrimitiveBase\n"
+                  "from skiros2_skill.core.skill import SkillBase, Sequential\n")
+PRIMITIVE = ("class pick(PrimitiveBase):\n"
+             "    # the robot side\n"
+             "    def createDescription(self):\n"
+             "        self.setDescription(Pick(), self.__class__.__name__)\n\n"
+             "    @staticmethod\n"
+             "    def helper():\n"
+             "        return Element('x')\n\n"
+             "    def execute(self):\n"
+             "        return self.success('done')\n"
+             "        # the end of execute\n")
+
+CLASS_SHAPES = {
+    "primitive and compound": LEGACY + IMPLEMENTATION + "\n\n" + SKILL + "\n\n" + PRIMITIVE
+    + "\n\nclass pick_all(SkillBase):\n    def expand(self, skill):\n"
+    "        skill.setProcessor(Sequential())\n",
+    "plain classes": LEGACY + "\n\nclass Config:\n    speed = 1\n\n\n"
+    "class Error(Exception, metaclass=type):\n    '''doc'''\n\n\n" + SKILL,
+    "decorated first method, comment before it": LEGACY + IMPLEMENTATION + "\n\n"
+    "class tool(PrimitiveBase):\n\n    # helpers\n    @property\n    def name(self):\n"
+    "        return 1\n\n\n" + SKILL,
+    "body on the header line": LEGACY + "\n\nclass Empty(Exception): pass\n\n\n" + SKILL,
+    "a child of a description of the module": LEGACY + "\n\n" + SKILL
+    + "\n\nclass PickFast(Pick):\n    def createDescription(self):\n"
+    "        Pick.createDescription(self)\n"
+    "        self.addParam('Speed', 1.0, ParamTypes.Optional)\n",
+    "a child without createDescription": LEGACY + "\n\n" + SKILL
+    + "\n\nclass PickAgain(Pick):\n    pass\n",
+    "multi-line header": LEGACY + IMPLEMENTATION + "\n\nclass tool(\n    PrimitiveBase,\n):\n"
+    "    def execute(self):\n        return 1\n\n\n" + SKILL,
+    "a legacy base imported as a module": LEGACY + "import skiros2_common.core.primitive as prim"
+    "\n\n\nclass tool(prim.PrimitiveBase):\n    def execute(self):\n        return 1\n\n\n"
+    + SKILL,
+    "the ezskiros_runtime base under a legacy-looking name": LEGACY
+    + "from ezskiros_runtime import SkillDescription as PrimitiveBase\n\n\n"
+    "class Other(PrimitiveBase):\n    def createDescription(self):\n        pass\n\n\n"
+    + SKILL,
+}
+
+
+def _stood_in_classes(source: bytes, settings: Settings = SETTINGS) -> list[str]:
+    tree = ast.parse(source)
+    facts = core.SyntaxFacts.of(tree)
+    inert = core.inert_classes(tree, facts.legacy, {
+        *settings.external, *settings.migrated_bases, *settings.unresolved_bases})
+    holes = stand_in(source, tree, inert)
+    text = holes.text if holes is not None else source
+    return [node.name for node in ast.parse(text).body if isinstance(node, ast.ClassDef)
+            and any(MARK in ast.get_source_segment(text.decode(), stmt).encode()
+                    for stmt in node.body)]
+
+
+@pytest.mark.parametrize("text", CLASS_SHAPES.values(), ids=CLASS_SHAPES.keys())
+def test_class_shapes_migrate_the_same_with_and_without_holes(
+        text: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    for source in (text, text.encode("utf-8")):
+        result = _same_both_ways(source, monkeypatch)
+        assert result.new_source is not None, result
+        assert "converted" in [s.status for s in result.skills]
+        ast.parse(result.new_source)
+
+
+@pytest.mark.parametrize(("shape", "stood_in"), [
+    ("primitive and compound", ["pick", "pick_all"]),
+    ("plain classes", ["Config", "Error"]),
+    ("decorated first method, comment before it", ["tool"]),
+    ("body on the header line", []),
+    ("a child of a description of the module", []),
+    ("a child without createDescription", []),
+    ("multi-line header", ["tool"]),
+    ("a legacy base imported as a module", ["tool"]),
+    ("the ezskiros_runtime base under a legacy-looking name", []),
+])
+def test_only_classes_that_cannot_be_descriptions_lose_their_body(
+        shape: str, stood_in: list[str]) -> None:
+    assert _stood_in_classes(CLASS_SHAPES[shape].encode()) == stood_in
+
+
+def test_bases_the_settings_name_keep_their_class_whole() -> None:
+    source = (LEGACY + "from .base import Navigate, Helper\n\n\nclass Go(Navigate):\n"
+              "    def createDescription(self):\n        pass\n\n\nclass Tool(Helper):\n"
+              "    x = 1\n\n\n" + SKILL).encode()
+    assert _stood_in_classes(source) == ["Go", "Tool"]
+    for settings in (Settings(external={"Navigate": []}),
+                     Settings(migrated_bases=frozenset({"Navigate"})),
+                     Settings(unresolved_bases={"Navigate": "not given"})):
+        assert _stood_in_classes(source, settings) == ["Tool"]
+
+
+@pytest.mark.parametrize("path", _fixture_files(), ids=lambda p: str(p.relative_to(FIXTURES)))
+def test_classes_stood_in_for_are_never_descriptions(path: Path) -> None:
+    data = path.read_bytes()
+    try:
+        tree = ast.parse(data)
+        module = cst.parse_module(data)
+    except (SyntaxError, ValueError, cst.ParserSyntaxError):
+        return
+    facts = core.SyntaxFacts.of(tree)
+    inert = core.inert_classes(tree, facts.legacy, ())
+    names = {node.name for node in tree.body if id(node) in inert}
+    described = {c.name for c in core.description_classes(module, facts.legacy)}
+    assert not names & (described | ezskiros_classes(module))
