@@ -19,6 +19,7 @@ import os
 import traceback
 from collections.abc import Iterator, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
 from typing import TYPE_CHECKING
 
 from . import holdpoint
@@ -168,8 +169,12 @@ class _Workers:
 
     def _submit(self, item: Migrated, data: bytes) -> None:
         assert self.pool is not None
-        self.futures.append((item, self.pool.submit(_migrate_one, item.candidate.relative,
-                                                    data)))
+        try:
+            future = self.pool.submit(_migrate_one, item.candidate.relative, data)
+        except BrokenProcessPool as error:  # a worker died while files were still read:
+            future = Future()  # this file gets the verdict the files in flight get
+            future.set_exception(error)
+        self.futures.append((item, future))
 
     def finish(self) -> None:
         if self.first is not None:  # only one file needed the core: no pool for it

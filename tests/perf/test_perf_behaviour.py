@@ -17,6 +17,8 @@ import os
 import subprocess
 import sys
 import textwrap
+from concurrent.futures import wait
+from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
 
 import pytest
@@ -216,6 +218,31 @@ def test_a_dying_worker_costs_an_error_result_not_the_run(tmp_path, monkeypatch)
     items = {m.candidate.relative: m for m in migrate_all(_candidates(tmp_path), None, 2)}
     assert "worker died" in (items["boom.py"].result.error or "")
     assert all(m.result.changed or m.result.error for m in items.values())
+
+
+def test_a_file_read_after_a_worker_died_gets_an_error_result_too(tmp_path, monkeypatch):
+    """The pool breaks while the main process still reads files: the next submit must not
+    raise (it did: the whole run stopped). Held by construction: the third file is added
+    only once the dying file's future has failed, which the executor does after marking
+    itself broken."""
+    monkeypatch.setattr(runner, "_migrate_one", _dies_on_boom)
+    workers = runner._Workers(None, 2)
+    items = []
+    for name in ("a.py", "boom.py", "c.py"):
+        path = tmp_path / name
+        path.write_text(HOLDING["plain"])
+        item = Migrated(Candidate(path, tmp_path), path.read_bytes(), None,
+                        runner.FileResult(name))
+        if name == "c.py":
+            died = next(future for done, future in workers.futures if done.candidate.relative
+                        == "boom.py")
+            wait([died])
+            assert isinstance(died.exception(), BrokenProcessPool)
+        workers.add(item, item.original)
+        items.append(item)
+    workers.finish()
+    assert all("worker died" in (m.result.error or "") or m.result.changed for m in items)
+    assert "worker died" in (items[2].result.error or "")
 
 
 def test_no_libcst_import_when_nothing_needs_parsing(tmp_path):
