@@ -109,8 +109,7 @@ def migrate(source: bytes | str, settings: Settings | None = None,
             path: str = "<string>") -> FileResult:
     """Migrate one module's text. ``result.new_source`` is set only if something changed."""
     settings = settings or Settings()
-    tree = _python_tree(source)
-    facts = SyntaxFacts.of(tree) if tree is not None else None
+    tree, facts = _python_reading(source)
     for text, holes in _readings(source, tree, facts, settings):
         result = _migrate_text(text, source, settings, path, facts, holes)
         if result is not None:
@@ -144,13 +143,15 @@ def _migrate_text(text: bytes | str, source: bytes | str, settings: Settings, pa
             "split that expression into smaller ones, then migrate"), error_line=deep)
 
 
-def _python_tree(source: bytes | str) -> ast.Module | None:
-    """The module as Python's own parser reads it; ``None`` where it does not (Python 2
-    leftovers, syntax newer than this Python, bad bytes: libcst's reading decides)."""
+def _python_reading(source: bytes | str) -> tuple[ast.Module | None, SyntaxFacts | None]:
+    """The module as Python's own parser reads it, and its facts; ``None`` where it does
+    not (Python 2 leftovers, syntax newer than this Python, bad bytes: libcst's reading
+    decides)."""
     try:
-        return ast.parse(source)
+        tree = ast.parse(source)
     except (SyntaxError, ValueError, MemoryError, RecursionError):
-        return None
+        return None, None
+    return tree, SyntaxFacts.of(tree)
 
 
 def _readings(source: bytes | str, tree: ast.Module | None, facts: SyntaxFacts | None,
@@ -164,13 +165,19 @@ def _readings(source: bytes | str, tree: ast.Module | None, facts: SyntaxFacts |
             *settings.external, *settings.migrated_bases, *settings.unresolved_bases})
         holes = stand_in(_raw(source), tree, inert)
     if holes is not None:
-        yield (holes.text if isinstance(source, bytes)
-               else holes.text.decode("utf-8", "surrogateescape")), holes
+        yield _like(source, holes.text), holes
     yield source, None
 
 
 def _raw(source: bytes | str) -> bytes:
+    """The bytes of a source given as text (a lone surrogate kept as the byte it stood
+    for), or the source itself."""
     return source if isinstance(source, bytes) else source.encode("utf-8", "surrogateescape")
+
+
+def _like(source: bytes | str, raw: bytes) -> bytes | str:
+    """``raw`` in the type ``source`` came in: ``_raw`` undone for a text source."""
+    return raw if isinstance(source, bytes) else raw.decode("utf-8", "surrogateescape")
 
 
 def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings, path: str,
@@ -207,7 +214,7 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
         raw = holes.fill(new_module.bytes if isinstance(source, bytes) else _raw(code))
         if raw is None:
             return None
-        code = raw if isinstance(source, bytes) else raw.decode("utf-8", "surrogateescape")
+        code = _like(source, raw)
     try:  # the parser that read the original reads the result
         ast.parse(code) if facts.python_parses else cst.parse_module(code)
     except (SyntaxError, ValueError, cst.ParserSyntaxError) as error:  # a bug of ours
@@ -299,8 +306,7 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
     Another file deriving from one of them inlines these when it calls the base's
     ``createDescription`` (see ``ezmigrate.cross_file``).
     """
-    tree = _python_tree(source)
-    known = SyntaxFacts.of(tree) if tree is not None else None
+    tree, known = _python_reading(source)
     text, _ = next(_readings(source, tree, known, settings))  # nothing printed: no hole to fill
     try:
         module = cst.parse_module(text)
@@ -525,7 +531,7 @@ def syntax_error_location(source: bytes | str, error: cst.ParserSyntaxError) -> 
     libcst's native parser reports the token after the error (often on the next line);
     ``ast.parse`` (parsing only, nothing runs) points where a user looks.
     """
-    raw = source.encode("utf-8", "surrogateescape") if isinstance(source, str) else source
+    raw = _raw(source)
     if b"\0" in raw:
         at = raw.index(b"\0")
         return ("a NUL byte (binary data, not Python source)", raw.count(b"\n", 0, at) + 1,
@@ -545,7 +551,7 @@ def syntax_error_location(source: bytes | str, error: cst.ParserSyntaxError) -> 
 
 def decode_error_message(source: bytes | str, error: Exception) -> tuple[str, int | None]:
     """What to tell about a file that is not valid in its declared encoding, and the line."""
-    raw = source.encode("utf-8", "surrogateescape") if isinstance(source, str) else source
+    raw = _raw(source)
     head = raw.removeprefix(b"\xef\xbb\xbf").split(b"\n", 2)[:2]
     cookie = next((n for n, text in enumerate(head, 1) if _COOKIE.match(text)), None)
     if isinstance(error, UnicodeDecodeError):
@@ -585,7 +591,7 @@ def _python2_except(module: cst.Module, source: bytes | str) -> tuple[int, int] 
     libcst reads it as PEP 758's unparenthesised ``except A, B:`` (Python 3.14); in a
     SkiROS2 module it is Python 2 code that no supported Python can import.
     """
-    raw = source.encode("utf-8", "surrogateescape") if isinstance(source, str) else source
+    raw = _raw(source)
     if not _EXCEPT_COMMA.search(raw) or _python_parses(raw):
         return None  # the common case: ``except (A, B):``, which Python itself accepts
     found: list[cst.ExceptHandler] = []
