@@ -16,7 +16,7 @@ _IMPORTS = re.compile(
 _WORD = re.compile(rb"\w+")
 
 
-def import_words(data: bytes) -> set[bytes]:
+def import_words(data: bytes) -> frozenset[bytes]:
     """The words of a file's import statements (modules, names, aliases), as ``_IMPORTS``
     finds them.
 
@@ -37,4 +37,4 @@ def import_words(data: bytes) -> set[bytes]:
                 source, names, plain = match.groups(b"")
                 named.update(_WORD.findall(source + b" " + names + b" " + plain))
         at = data.find(b"import", at + 6)
-    return named
+    return frozenset(named)

@@ -73,7 +73,7 @@ class Migrated:
         """The words of the file's import statements (``import_scan``): taken at the read
         for a file the prefilter ruled out, so that no later pass reads it again."""
         if self._imports is None:
-            self._imports = frozenset(import_words(self.original))
+            self._imports = import_words(self.original)
         return self._imports
 
     @property
@@ -228,7 +228,7 @@ def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                     holdpoint.reach("migrating")
             else:
                 done.append(Migrated(candidate, None, None, FileResult(candidate.relative),
-                                     imports=frozenset(import_words(data))))
+                                     imports=import_words(data)))
                 workers.finished()
         workers.finish()
     finally:
