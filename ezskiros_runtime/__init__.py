@@ -29,6 +29,7 @@ if TYPE_CHECKING:
         ELEMENT,
         INFERRED,
         KEY,
+        LIST,
         OPTIONAL,
         REQUIRED,
         Consume,
@@ -42,7 +43,7 @@ if TYPE_CHECKING:
 
 _EXPORTS: dict[str, str] = {
     "SkillDescription": "dsl.skill",
-    **dict.fromkeys(("INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "Lock",
+    **dict.fromkeys(("INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "LIST", "Lock",
                      "Consume",
                      "Unspecify", "RespectType", "Output"), "dsl.markers"),
     "abstract": "dsl.conditions",
@@ -77,6 +78,7 @@ __all__ = [
     "ELEMENT",
     "INFERRED",
     "KEY",
+    "LIST",
     "OPTIONAL",
     "REQUIRED",
     "CompoundSkillError",

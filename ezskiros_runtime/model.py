@@ -17,9 +17,9 @@ import json
 import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any, Literal, TypeAlias, get_args
+from typing import Any, Literal, Tuple, get_args
 
-Typed: TypeAlias = tuple[str, Any]
+Typed = Tuple[str, Any]
 """A type-exact value: ``("float", 0.5)``, ``("list", (("float", 2.0), ...))``."""
 
 ParamKind = Literal["Required", "Optional", "Inferred"]

@@ -15,7 +15,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from .library import ROBOT, DescriptionInfo, SkillIndex
+from .library import ROBOT, DescriptionInfo, SkillIndex, type_name
 from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
 from .trace import Unanalysable
 
@@ -103,7 +103,7 @@ class _Checker:
     def _skill(self, node: SkillNode, others: list[Node | CallProblem]) -> None:
         matches, literal = self.index.resolve(node.type)
         if not matches:
-            name = node.type.removeprefix("skiros:")
+            name = type_name(node.type)
             close = difflib.get_close_matches(name, list(self.index.names()), 1, 0.6)
             hint = f"Did you mean {close[0]!r}?" if close else None
             why = (f" ({name} is a base other descriptions derive from; the skill manager "

@@ -16,6 +16,13 @@ from dataclasses import dataclass, field
 
 from .model import CompoundModel
 
+SKIROS_PREFIX = "skiros:"
+
+
+def type_name(stype: str) -> str:
+    """A child type as SkiROS2 matches it: without the ``skiros:`` prefix it adds itself."""
+    return stype[len(SKIROS_PREFIX):] if stype.startswith(SKIROS_PREFIX) else stype
+
 ROBOT = "Robot"
 ROBOT_TYPE = "sumo:Agent"
 """SkiROS2 gives every description an inferred ``Robot`` parameter (legacy-skiros2-api §8.1)."""
@@ -101,7 +108,7 @@ class SkillIndex:
         SkiROS2 adds a ``skiros:`` prefix and matches the rest as a regular expression
         anchored at both ends; a type that is no valid expression matches nothing.
         """
-        name = stype.removeprefix("skiros:")
+        name = type_name(stype)
         if name in self.descriptions and name not in self.bases:
             return [self.descriptions[name]], True
         try:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import Any, Literal, Union
 
 Obtained = Literal["static", "traced"]
 
@@ -71,7 +71,7 @@ class ProcessorNode:
         return data
 
 
-Node = SkillNode | ProcessorNode
+Node = Union[SkillNode, ProcessorNode]
 
 
 @dataclass(frozen=True)
@@ -89,7 +89,7 @@ class CallProblem:
         return data
 
 
-Child = SkillNode | ProcessorNode | CallProblem
+Child = Union[SkillNode, ProcessorNode, CallProblem]
 
 
 @dataclass(frozen=True)

@@ -122,7 +122,7 @@ def node_of(recorded: Any) -> Node | CallProblem:
     if not isinstance(recorded, Recorded):
         return CallProblem(f"{recorded!r} is added as a child, but it is not a node made "
                            "by self.skill(...)")
-    bound = dict(zip(ARGUMENTS, recorded.args, strict=False))
+    bound = dict(zip(ARGUMENTS, recorded.args))
     bound.update(recorded.kwargs)
     first = bound.get("stype")
     children = tuple(node_of(c) for c in recorded.children)

@@ -8,7 +8,7 @@ module has no dependency on a backend or an ontology.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, List
 
 from ..diagnostics import DescriptionError
 
@@ -143,6 +143,11 @@ INFERRED = Kind("INFERRED", "Inferred")
 OPTIONAL = Kind("OPTIONAL", "Optional")
 REQUIRED = Kind("REQUIRED", "Required")
 
+LIST = List
+"""``LIST[float]``: a list-valued parameter, the spelling that runs on every Python the robot
+has. ``list[float]`` raises ``TypeError`` when the class is defined under ROS Noetic's Python
+3.8; ``LIST`` is ``typing.List``, so both spellings mean the same from 3.9 on."""
+
 
 def parse_annotation(annotation: Any) -> ParamAnnotation:
     """Any annotation as a ``ParamAnnotation``: a bare type is ``REQUIRED[type]``, a bare
@@ -164,6 +169,7 @@ __all__ = [
     "ELEMENT",
     "INFERRED",
     "KEY",
+    "LIST",
     "OPTIONAL",
     "OPTION_NAMES",
     "REQUIRED",

@@ -12,7 +12,7 @@ import inspect
 import types
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, get_origin
 
 from ..diagnostics import DescriptionError
 from .markers import ElementType, ParamAnnotation, parse_annotation
@@ -56,14 +56,22 @@ def _element_type(tp: Any) -> tuple[bool, str | None]:
     return False, None
 
 
+def _generic_origin(tp: Any) -> Any:
+    """``list`` for ``list[float]``, ``typing.List[float]`` and the DSL's ``LIST[float]``;
+    None for anything that is not a subscripted generic. ``typing.get_origin`` reads all
+    three alike, where ``types.GenericAlias`` exists only from Python 3.9 (the robot's ROS
+    Noetic runs 3.8, where ``typing.List[float]`` is the only spelling that runs)."""
+    return get_origin(tp) if getattr(tp, "__args__", None) else None
+
+
 def _type_name(tp: Any) -> str:
     return getattr(tp, "__name__", None) or repr(tp)
 
 
 def _default_mismatch(tp: Any, default: Any) -> str | None:
     """Why ``default`` does not fit the annotated type (docs/dsl.md rules), or None."""
-    if isinstance(tp, types.GenericAlias) and tp.__origin__ is list:
-        (item,) = tp.__args__ or (object,)
+    if _generic_origin(tp) is list:
+        (item,) = getattr(tp, "__args__", None) or (object,)
         if type(default) is not list or not default:
             return f"list[{_type_name(item)}] needs a non-empty list default, got {default!r}"
         wrong = [x for x in default if type(x) is not item]
@@ -99,8 +107,8 @@ def _value(name: str, ann: ParamAnnotation, default: Any
         mismatch = None if default is _EMPTY else (
             f"an Element parameter takes no default, got {default!r}")
         return "element", None, type_string, mismatch
-    if isinstance(ann.type, types.GenericAlias):
-        if ann.type.__origin__ is not list:
+    if _generic_origin(ann.type) is not None:
+        if _generic_origin(ann.type) is not list:
             raise DescriptionError(f"parameter {name}: only list[T] is supported as a generic "
                                    f"type, got {ann.type!r}")
         if default is _EMPTY:

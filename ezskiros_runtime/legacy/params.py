@@ -15,7 +15,8 @@ legacy-skiros2-api.md §3 and §8.4 exactly:
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+import typing
+from collections.abc import Iterator
 from enum import Enum
 from typing import Any
 
@@ -120,7 +121,7 @@ class Param:
         )
 
 
-class ParamHandler(Mapping[str, Param]):
+class ParamHandler(typing.Mapping[str, Param]):
     """The ordered parameters of a description, key -> ``Param``.
 
     Declaring a key twice replaces the parameter but keeps the first position (§8.3): exactly

@@ -15,16 +15,16 @@ the parameter cannot be read, the bundled core is used and one log line says so.
 from __future__ import annotations
 
 import logging
-from collections.abc import Callable
 from pathlib import Path
+from typing import Callable, Optional
 
 PACKAGE = "skiros2"
 WORKSPACE_PARAMETERS = ("/wm/workspace_dir", "workspace_dir")
 """Where the world model server's ``workspace_dir`` is looked for (its private parameter
 under the usual node name ``wm``, then a global one)."""
 
-PackageLocator = Callable[[str], "Path | None"]
-ParameterSource = Callable[[str], "str | None"]
+PackageLocator = Callable[[str], Optional[Path]]
+ParameterSource = Callable[[str], Optional[str]]
 
 log = logging.getLogger("ezskiros_runtime")
 

@@ -9,6 +9,7 @@ same skill are renamed ``Row`` so their SkiROS2 types (``skiros:Row``) agree.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable
 from typing import Any
 
@@ -20,6 +21,7 @@ from ezskiros_runtime import (
     ELEMENT,
     INFERRED,
     KEY,
+    LIST,
     OPTIONAL,
     REQUIRED,
     Lock,
@@ -167,6 +169,11 @@ class VariantIntDefault(SkillDescription):
 
 @named("Row")
 class EzListDefault(SkillDescription):
+    def description(self, S: LIST[float] = [2.0, 8.0]): ...  # noqa: B006
+
+
+@named("Row")
+class EzBuiltinListDefault(SkillDescription):
     def description(self, S: list[float] = [2.0, 8.0]): ...  # noqa: B006
 
 
@@ -178,7 +185,7 @@ class LegacyListDefault(LegacyDescription):
 
 @named("Row")
 class VariantListDefault(SkillDescription):
-    def description(self, S: list[float] = [2.0]): ...  # noqa: B006
+    def description(self, S: LIST[float] = [2.0]): ...  # noqa: B006
 
 
 @named("Row")
@@ -298,7 +305,10 @@ PARAMETER_ROWS = [
                  id="S: OPTIONAL[float] = 0.5"),
     pytest.param(EzIntDefault, LegacyIntDefault, VariantIntDefault, id="S: int = 0"),
     pytest.param(EzListDefault, LegacyListDefault, VariantListDefault,
-                 id="S: list[float] = [2.0, 8.0]"),
+                 id="S: LIST[float] = [2.0, 8.0]"),
+    pytest.param(EzBuiltinListDefault, LegacyListDefault, VariantListDefault,
+                 id="S: list[float] = [2.0, 8.0]", marks=pytest.mark.skipif(
+                     sys.version_info < (3, 9), reason="list[float] runs from Python 3.9")),
     pytest.param(EzBareMarker, LegacyBareMarker, VariantBareMarker,
                  id="S: OPTIONAL = CONSTANT"),
     pytest.param(EzLock, LegacyLock, VariantLock, id="C: REQUIRED[C, Lock]"),
@@ -481,7 +491,8 @@ def test_form_loads_equal_to_its_legacy_counterpart_and_the_variant_does_not(
     assert compare(expected, changed) != []
 
 
-@pytest.mark.parametrize("ez_class", [row.values[0] for row in PARAMETER_ROWS + CONDITION_ROWS])
+@pytest.mark.parametrize("ez_class", [pytest.param(row.values[0], marks=row.marks)
+                                      for row in PARAMETER_ROWS + CONDITION_ROWS])
 def test_every_form_passes_the_type_checks(ez_class):
     assert [f for f in check(ez_class) if f.severity == "error"] == []
 

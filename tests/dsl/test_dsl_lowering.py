@@ -17,6 +17,7 @@ from ezskiros_runtime import (
     ELEMENT,
     INFERRED,
     KEY,
+    LIST,
     OPTIONAL,
     REQUIRED,
     Consume,
@@ -178,7 +179,7 @@ def test_bare_kind_markers_pass_constants_as_is():
 
 
 class Lists(SkillDescription):
-    def description(self, Sizes: list[float] = [2.0, 8.0], Names: list = ["a"]):  # noqa: B006
+    def description(self, Sizes: LIST[float] = [2.0, 8.0], Names: list = ["a"]):  # noqa: B006
         pass
 
 
@@ -272,7 +273,7 @@ def test_conditions_on_undeclared_keys_are_kept_and_reported():
 ])
 def test_bad_list_defaults_are_type_errors(default, reason):
     class Bad(SkillDescription):
-        def description(self, Sizes: list[float] = default):
+        def description(self, Sizes: LIST[float] = default):
             pass
 
     with pytest.raises(SkillTypeError, match=reason):

@@ -34,7 +34,7 @@ def public() -> rdflib.Graph:
     assert SKIROS2.is_dir(), f"the shared SkiROS2 ontology is missing at {SKIROS2}"
     graph = rdflib.Graph()
     for path in sorted(SKIROS2.rglob("*.owl")):
-        graph.parse(path, format="xml")
+        graph.parse(str(path), format="xml")
     return graph
 
 

@@ -25,12 +25,12 @@ def _real() -> Graph:
         pytest.skip(f"the real SkiROS2 core files are not at {REAL_CORE}")
     graph = Graph()
     for path in sorted(REAL_CORE.rglob("*.owl")):
-        graph.parse(path, format="xml")
+        graph.parse(str(path), format="xml")
     return graph
 
 
 def _bundled() -> Graph:
-    return Graph().parse(bundled_ontology_path(), format="turtle")
+    return Graph().parse(str(bundled_ontology_path()), format="turtle")
 
 
 def _classes(graph: Graph) -> set[URIRef]:

@@ -36,7 +36,7 @@ def real() -> OntologyIndex:
 def raw_graph() -> rdflib.Graph:
     graph = rdflib.Graph()
     for path in sorted(SKIROS2.rglob("*.owl")):
-        graph.parse(path, format="xml")
+        graph.parse(str(path), format="xml")
     return graph
 
 
