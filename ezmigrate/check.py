@@ -58,7 +58,7 @@ def _legacy(path: str, result: FileResult, positions: Positions,
             index: OntologyIndex | None) -> list[Diagnostic]:
     found: list[Diagnostic] = []
     if result.error:
-        found.append(diagnostic(path, positions, "unreadable", result.error_line or 0,
+        found.append(diagnostic(path, positions, result.error_kind, result.error_line or 0,
                                 result.error.splitlines()[0]))
     for skill in result.skills:
         if skill.status == "converted":

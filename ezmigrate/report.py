@@ -7,8 +7,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from ezskiros_runtime.codes import code_for
-
 from .results import FileResult, SkillResult
 
 SCHEMA_VERSION = 1
@@ -98,7 +96,7 @@ def json_report(results: Sequence[FileResult], extra: dict[str, Any] | None = No
                     "failed": summary.failed},
         "skills": [_skill_json(f, s) for f in results for s in f.skills],
         "files": [{"file": f.path, "changed": f.changed, "error": f.error,
-                   "code": code_for("unreadable") if f.error else None,
+                   "code": f.error_code,
                    "error_line": f.error_line, "notes": f.notes}
                   for f in results if f.error or f.notes or f.changed],
         **(extra or {}),
@@ -141,7 +139,7 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
             continue
         out += [f"## `{file.path}`", ""]
         if file.error:
-            out += [f"**Could not be processed ({code_for('unreadable')}):** {file.error}", ""]
+            out += [f"**Could not be processed ({file.error_code}):** {file.error}", ""]
         for note in file.notes:
             head, _, body = note.partition("\n")
             out += [f"- {head}"] + (["", "```text", body, "```", ""] if body else [])

@@ -68,6 +68,9 @@ class FileResult:
     new_source: bytes | str | None = None
     error: str | None = None
     error_line: int | None = None
+    error_kind: str = "unreadable"
+    """The catalogue kind of ``error``: ``unreadable`` (EZ905), or ``lossy-rewrite`` (EZ906)
+    for a file the line guard (``core/guard.py``) kept from being written."""
     notes: list[str] = field(default_factory=list)
     exports: list[str] = field(default_factory=list)
     """Description classes that convert (or inherit a conversion): bases for other files."""
@@ -75,6 +78,11 @@ class FileResult:
     """``(base, module)`` of class bases imported from user modules (maybe descriptions)."""
     depends_on: list[str] = field(default_factory=list)
     """Files whose migrated descriptions this file's migrated classes derive from."""
+
+    @property
+    def error_code(self) -> str | None:
+        """The catalogue code of ``error``, if any."""
+        return code_for(self.error_kind) if self.error else None
 
     @property
     def changed(self) -> bool:

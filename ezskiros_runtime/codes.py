@@ -7,7 +7,8 @@ the same problem found by two passes (the runtime's ``undeclared_parameter`` and
 codemod's ``undeclared-key``); a kind never has two codes.
 
 Groups, by the hundreds digit: EZ1xx the description itself, EZ2xx vocabulary and ontology,
-EZ3xx compound skills, EZ9xx migration state.
+EZ3xx compound skills, EZ4xx the world model (scenes, and what conditions do to it), EZ9xx
+migration state.
 
 Like ``diagnostics``, this module imports nothing from the rest of the runtime.
 """
@@ -22,6 +23,7 @@ GROUPS: dict[str, str] = {
     "EZ1": "description",
     "EZ2": "vocabulary and ontology",
     "EZ3": "compound skills",
+    "EZ4": "world model",
     "EZ9": "migration state",
 }
 
@@ -219,6 +221,58 @@ RULES: tuple[Rule, ...] = (
          "model, a branch on a value): it is not checked, not clean.",
          "Nothing to fix; simplify expand if you want it checked.",
          ("compound-unanalysable",)),
+    # EZ4xx: the world model (scenes, and what post-conditions leave in it)
+    Rule("EZ401", "double-place", "warning",
+         "The pre-conditions require a single-valued relation (a spatial parent, skiros:at) "
+         "to one element, the post-conditions assert it to another and never retract the "
+         "first: SkiROS2's planner takes post-conditions as effects and then believes both "
+         "(an object in the container and in the gripper).",
+         "Add the retraction the message suggests (`~ Container.contain(Object)` or "
+         "getRelationCond(..., False)); not applied automatically, it changes what the "
+         "planner believes. [tool.ezmigrate] single-valued sets the relations.",
+         ("double-place",)),
+    Rule("EZ402", "scene-syntax", "error",
+         "A world-model scene that is not valid Turtle: the world model cannot load it.",
+         "Fix the Turtle at the line named.",
+         ("scene-syntax",)),
+    Rule("EZ403", "scene-two-parents", "error",
+         "An element with two spatial parents (sub-properties of skiros:spatiallyRelated: "
+         "contain, hasA); SkiROS2 reads the scene as a tree, one parent per element.",
+         "Keep one of the two relations.",
+         ("scene-two-parents",)),
+    Rule("EZ404", "scene-dangling", "warning",
+         "A relation whose object is defined nowhere in the scene: the world model holds a "
+         "reference to nothing.",
+         "Define the element in the scene, or fix the name.",
+         ("scene-dangling",)),
+    Rule("EZ405", "scene-domain-range", "error",
+         "A relation between elements whose classes lie outside its domain or range (with "
+         "the subclass closure, as in the description checks).",
+         "Relate elements of the right classes, or fix an element's type.",
+         ("scene-domain", "scene-range")),
+    Rule("EZ406", "scene-datatype", "error",
+         "A data-property value that does not fit the property's datatype (a float written "
+         "as text, a boolean as a number).",
+         "Write the value with the property's datatype (\"0.5\"^^xsd:float).",
+         ("scene-datatype",)),
+    Rule("EZ407", "scene-unknown-type", "info",
+         "An individual of a class the loaded ontology does not define; the scene may be "
+         "its only declaration.",
+         "Load the ontology that defines the class, or fix the name.",
+         ("scene-unknown-type",)),
+    Rule("EZ408", "scene-unattached", "info",
+         "An element outside the scene's spatial tree (no contain/hasA chain from the "
+         "scene): SkiROS2's GUI, which reads the scene as a tree, does not show it. What "
+         "SkiROS2 saves about itself (skills, parameters, conditions) is not counted.",
+         "Relate it to a parent in the tree.",
+         ("scene-unattached",)),
+    Rule("EZ409", "cannot-start", "info",
+         "With --scene, a skill that cannot be grounded in the scene the way the skill "
+         "manager grounds it: no choice of elements satisfies the pre-condition named. Not "
+         "a bug in itself: skills often run after others changed the world.",
+         "Nothing to fix if the skill runs later; else add the elements or relations the "
+         "pre-condition needs to the scene.",
+         ("cannot-start",)),
     # EZ9xx: migration state
     Rule("EZ901", "not-migrated", "error",
          "A legacy description that `ezmigrate rewrite` would convert is still in the "
@@ -245,6 +299,14 @@ RULES: tuple[Rule, ...] = (
          "The file could not be parsed or decoded, so nothing in it was checked.",
          "Fix the syntax or encoding error.",
          ("unreadable", "syntax-error")),
+    Rule("EZ906", "lossy-rewrite", "error",
+         "The migrated text would have changed or lost a line outside the migrated code (a "
+         "comment, a blank line, a helper), so the file was not written: outside the "
+         "converted methods, their class headers and import statements every byte must "
+         "stay as it was.",
+         "A bug of ezmigrate: report it with the file. Meanwhile migrate that file by hand, "
+         "or move the line named out of the way and run again.",
+         ("lossy-rewrite",)),
 )
 
 BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}
