@@ -27,6 +27,7 @@ from .core.context import ExtractContext, StatementLines, module_constants, posi
 from .core.cst_facts import facts_of
 from .core.emit import DSL_NAMES, EmitContext
 from .core.function import build_description, emitted_params
+from .core.guard import encoding_of, lost_line, refuse
 from .core.holes import Holes, stand_in
 from .core.imports import (
     ONTOLOGY,
@@ -108,13 +109,29 @@ class _Plan:
 def migrate(source: bytes | str, settings: Settings | None = None,
             path: str = "<string>") -> FileResult:
     """Migrate one module's text. ``result.new_source`` is set only if something changed."""
-    settings = settings or Settings()
-    tree, facts = _python_reading(source)
-    for text, holes in _readings(source, tree, facts, settings):
-        result = _migrate_text(text, source, settings, path, facts, holes)
-        if result is not None:
+    refused: FileResult | None = None
+    for result, lost in guarded_readings(source, settings or Settings(), path):
+        if lost is None:
             return result
-    raise AssertionError("the whole source is the last reading, and it always gives a result")
+        refused = refused or refuse(result, lost)  # the first reading's line is named
+    assert refused is not None, "the whole source is the last reading; it gives a result"
+    return refused
+
+
+def guarded_readings(source: bytes | str, settings: Settings,
+                     path: str = "<string>") -> Iterator[tuple[FileResult, int | None]]:
+    """The migration of each reading (``_readings``) that gives a result, with the first
+    line outside the migrated code it would change (``core/guard.py``; ``None``: none).
+    ``migrate`` takes the first result the guard passes; ``bench/guard_triggers.py``
+    counts the others."""
+    tree, facts = _python_reading(source)
+    for text, holes, origin in _readings(source, tree, facts, settings):
+        result = _migrate_text(text, origin, settings, path, facts, holes)
+        if result is not None:
+            if isinstance(source, bytes) and isinstance(result.new_source, str):
+                result = replace(result, new_source=result.new_source.encode(
+                    encoding_of(source)))
+            yield result, lost_line(source, result, tree)
 
 
 def _migrate_text(text: bytes | str, source: bytes | str, settings: Settings, path: str,
@@ -155,18 +172,34 @@ def _python_reading(source: bytes | str) -> tuple[ast.Module | None, SyntaxFacts
 
 
 def _readings(source: bytes | str, tree: ast.Module | None, facts: SyntaxFacts | None,
-              settings: Settings) -> Iterator[tuple[bytes | str, Holes | None]]:
-    """What libcst reads, in order: the source with the code the migration never reads
-    stood in for (``core/holes.py``), if ``ast`` read it; then the whole source, when
-    that fails."""
+              settings: Settings) -> Iterator[tuple[bytes | str, Holes | None, bytes | str]]:
+    """What libcst reads, in order, and the source that reading stands for: the source
+    with the code the migration never reads stood in for (``core/holes.py``), if ``ast``
+    read it; then the whole source, when that fails. A file in an encoding other than
+    UTF-8 is stood in for in its decoded text, whose lines are the lines ``ast`` counts
+    (a utf-7 ``+AAo-`` is a newline); its result is encoded back by the caller."""
     holes = None
-    if tree is not None and facts is not None:
+    origin = _by_lines(source)
+    if tree is not None and facts is not None and origin is not None:
         inert = inert_classes(tree, facts.legacy, {
             *settings.external, *settings.migrated_bases, *settings.unresolved_bases})
-        holes = stand_in(_raw(source), tree, inert)
-    if holes is not None:
-        yield _like(source, holes.text), holes
-    yield source, None
+        holes = stand_in(_raw(origin), tree, inert)
+    if holes is not None and origin is not None:
+        yield _like(origin, holes.text), holes, origin
+    yield source, None, source
+
+
+def _by_lines(source: bytes | str) -> bytes | str | None:
+    """``source`` as text whose line breaks are Python's: itself, unless its coding
+    cookie names an encoding other than UTF-8 (then its decoded text; ``None`` if it does
+    not decode)."""
+    encoding = encoding_of(source)
+    if not isinstance(source, bytes) or encoding in ("utf-8", "utf-8-sig"):
+        return source
+    try:
+        return source.decode(encoding)
+    except (LookupError, UnicodeDecodeError):
+        return None
 
 
 def _raw(source: bytes | str) -> bytes:
@@ -307,22 +340,23 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
     ``createDescription`` (see ``ezmigrate.cross_file``).
     """
     tree, known = _python_reading(source)
-    text, _ = next(_readings(source, tree, known, settings))  # nothing printed: no hole to fill
-    try:
-        module = cst.parse_module(text)
-    except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError):
-        return {}
-    try:
-        facts = known if known is not None else _syntax_facts(module, source)
-        planned = _plan_module(module, facts, settings) \
-            if isinstance(facts, SyntaxFacts) else None
-    except (RecursionError, MemoryError):  # its own migration reports the file
-        return {}
-    if planned is None:
-        return {}
-    plans, effective, _ = planned
-    ok = {p.cls.name for p in plans if p.result.status in ("converted", "unchanged")}
-    return {name: effective[name] for name in wanted if name in ok and name in effective}
+    for text, _, origin in _readings(source, tree, known, settings):  # nothing to fill back
+        try:
+            module = cst.parse_module(text)
+        except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError):
+            continue  # as ``migrate``: the next reading, the whole file, if any is left
+        try:
+            facts = known if known is not None else _syntax_facts(module, origin)
+            planned = _plan_module(module, facts, settings) \
+                if isinstance(facts, SyntaxFacts) else None
+        except (RecursionError, MemoryError):  # its own migration reports the file
+            return {}
+        if planned is None:
+            return {}
+        plans, effective, _ = planned
+        ok = {p.cls.name for p in plans if p.result.status in ("converted", "unchanged")}
+        return {name: effective[name] for name in wanted if name in ok and name in effective}
+    return {}
 
 
 def foreign_bases(module: cst.Module, names: LegacyNames) -> list[tuple[str, str]]:

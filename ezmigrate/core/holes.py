@@ -14,6 +14,14 @@ where new imports go) sees what it would see in the original, and every line kee
 number. After the rewrite each placeholder, found verbatim in the printed code, gets its
 original text back: those bytes are never parsed, printed or touched.
 
+The last statement of a file, when stood in for, takes the blank lines, comments and form
+feeds after it to the end of the file: libcst would otherwise file them after a one-line
+placeholder, in a footer it does not print back whole.
+
+``source`` must count its lines as Python does: a file whose coding cookie can make a
+newline out of other bytes (utf-7, raw-unicode-escape) is stood in for in its decoded text
+(``migrate._readings``), or the placeholders of ``ast``'s lines would swallow statements.
+
 A statement stays whole when its first line does not plainly start it (a backslash, a form
 feed, a body on the header's line). Nothing is stood in for in a file with a lone carriage
 return (Python and a line split could count its lines differently) or one that already
@@ -72,10 +80,11 @@ def stand_in(source: bytes, tree: ast.Module, inert: Collection[int] = ()) -> Ho
     if not parts or MARK in source or _LONE_CR.search(source):
         return None
     lines = _LINE.findall(source)
+    end = len(lines) - 2  # the last line (``findall`` ends with an empty match)
     filled: list[tuple[bytes, bytes]] = []
     for node in parts:
         number = len(filled)
-        last = (node.end_lineno or node.lineno) - 1
+        last = end if node is tree.body[-1] else (node.end_lineno or node.lineno) - 1
         if isinstance(node, ast.ClassDef):
             first = _first_line(node.body[0])
             head = lines[first].lstrip(_BLANK)
