@@ -54,6 +54,10 @@ def description_classes(module: cst.Module, names: LegacyNames,
     part of the run to the reason a class deriving from them is kept. Only classes that
     define ``createDescription`` count as descriptions through those two: an EzSkiROS
     child, or any class deriving from an unknown base, is not evidence of one.
+
+    Two top-level classes of one name are two descriptions, each converted in the same
+    run (the second still shadows the first when the module loads): keyed by name, the
+    first would wait for a second run.
     """
     return _classify(module, names, external, migrated, unresolved or {})[0]
 
@@ -68,21 +72,20 @@ def _classify(module: cst.Module, names: LegacyNames, external: Collection[str],
               migrated: Collection[str], unresolved: Mapping[str, str]) -> tuple[
                   list[DescriptionClass], set[str]]:
     """Legacy description classes and names of EzSkiROS ones (see ``description_classes``)."""
-    found: dict[str, DescriptionClass] = {}
+    found: list[DescriptionClass] = []
+    named: set[str] = set()  # a second class of one name is a description of its own too
     ezskiros = set(migrated)
     runtime_bases = _runtime_base_names(module)
     for stmt in module.body:
         if not isinstance(stmt, cst.ClassDef):
             continue
-        for arg in stmt.bases:
-            if arg.keyword is not None:
-                continue
+        for arg in positional_bases(stmt):
             base = dotted_name(arg.value)
             described: DescriptionClass | None = None
             if names.symbol(arg.value) == "SkillDescription":
                 described = DescriptionClass(stmt, stmt.name.value, None, arg,
                                              len(stmt.bases) - 1)
-            elif base is not None and (base in found or base in external):
+            elif base is not None and (base in named or base in external):
                 described = DescriptionClass(stmt, stmt.name.value, base, arg,
                                              len(stmt.bases) - 1)
             elif base is not None and (base in ezskiros or base in runtime_bases
@@ -98,9 +101,10 @@ def _classify(module: cst.Module, names: LegacyNames, external: Collection[str],
             else:
                 continue
             if described is not None:
-                found[stmt.name.value] = described
+                found.append(described)
+                named.add(described.name)
             break
-    return list(found.values()), ezskiros - set(migrated)
+    return found, ezskiros - set(migrated)
 
 
 def inert_classes(tree: ast.Module, names: LegacyNames,
@@ -121,12 +125,26 @@ def inert_classes(tree: ast.Module, names: LegacyNames,
     taken = {node.name for node in classes} | set(known) | _runtime_bound(tree)
     found = set()
     for node in classes:
-        spelled = [ast_dotted_name(base) for base in node.bases]
+        spelled = [ast_dotted_name(base) for base in ast_positional_bases(node)]
         if all(names.symbol_named(name) != "SkillDescription" and (
                 name is None or (name not in taken and name.split(".")[0] not in taken))
                for name in spelled):
             found.add(id(node))
     return found
+
+
+def positional_bases(stmt: cst.ClassDef) -> list[cst.Arg]:
+    """The arguments of a class statement that can make it a description: neither a
+    keyword (``metaclass=``) nor starred. ``class X(*Base)`` unpacks ``Base``, which a
+    class never allows (Python raises when the module loads), so it is no description;
+    ``ast_positional_bases`` says the same, so that the stand-in reading and libcst
+    classify every class alike."""
+    return [arg for arg in stmt.bases if arg.keyword is None and not arg.star]
+
+
+def ast_positional_bases(node: ast.ClassDef) -> list[ast.expr]:
+    """``positional_bases`` as ``ast`` reads the class (keywords are apart already)."""
+    return [base for base in node.bases if not isinstance(base, ast.Starred)]
 
 
 def _runtime_bound(tree: ast.Module) -> set[str]:
