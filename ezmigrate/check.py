@@ -17,12 +17,15 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ezskiros_runtime.model import SkillModel
+
 from . import holdpoint
 from .cross_file import RUNTIME_MARKER
 from .discover import Candidate, discover
 from .lint.diagnostic import Diagnostic, Positions, diagnostic
 from .lint.legacy import legacy_hits
 from .lint.plain_reader import Declined, read_plain
+from .lint.world_model import SCENE_SUFFIX, WorldRun, scene_files, world_diagnostics
 from .prefilter import may_hold_descriptions
 from .progress import Progress
 from .project import settle
@@ -133,11 +136,15 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               exclude: tuple[str, ...] = (),
               progress: Callable[[str], None] | None = None,
-              skill_libraries: tuple[Path, ...] = (), compounds: bool = True) -> CheckOutcome:
+              skill_libraries: tuple[Path, ...] = (), compounds: bool = True,
+              world: WorldRun | None = None) -> CheckOutcome:
     """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
     the compound skills' trees against every description found (unless ``compounds`` is
-    False: no EZ3 code is selected, so their reading and tracing would be thrown away)."""
-    candidates, _ = discover(paths, exclude)
+    False: no EZ3 code is selected, so their reading and tracing would be thrown away),
+    then the world model (EZ4xx: ``world``, or the defaults and the scenes under ``paths``;
+    scenes named in ``paths`` are scenes, not Python files)."""
+    world = world or WorldRun(scenes=tuple(scene_files(paths, exclude)))
+    candidates, _ = discover([p for p in paths if p.suffix != SCENE_SUFFIX], exclude)
     outcome = CheckOutcome(files=len(candidates))
     if progress is not None:
         progress(f"checking {len(candidates)} files")
@@ -148,8 +155,10 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 
         trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, pool.workers)))
     try:
-        return _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
-                    standby)
+        outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
+                       standby, world)
+        outcome.files += len(world.scenes)
+        return outcome
     finally:
         for workers in standby:
             workers.close()
@@ -158,7 +167,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyIndex | None,
          pool: PoolConfig, progress: Callable[[str], None] | None,
          skill_libraries: tuple[Path, ...], trees: Trees | None,
-         standby: list[Standby]) -> CheckOutcome:
+         standby: list[Standby], world: WorldRun) -> CheckOutcome:
     """``run_check`` once its compound pass (``trees``) is set up."""
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
@@ -205,6 +214,11 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
             outcome.diagnostics.append(diagnostic(
                 path, where, found.kind, found.line or 0, found.message, found.skill,
                 f"Did you mean {found.suggestions[0]}?" if found.suggestions else None))
+    outcome.diagnostics += world_diagnostics(
+        world, [(str(c.path), r) for c, r in results],
+        [(str(c.path), [SkillModel.from_json(m) for m in o.models])
+         for c, o in zip(loadable, outcomes, strict=True) if o.loaded], index,
+        outcome.sources)
     outcome.diagnostics.sort(key=lambda d: (d.path, d.line, d.column, d.code))
     return outcome
 

@@ -1,0 +1,221 @@
+"""``check``'s world-model pass (EZ4xx): post-conditions that leave two parents or two
+places, the scenes of the repository, and (``--scene``) which skills cannot start there.
+
+The checks themselves are the runtime's (``ezskiros_runtime.world``), so a lab's test and
+the linter judge alike; this module finds the scenes, gives each finding its source line
+and its fix in the file's own form, and makes diagnostics of them.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from ezskiros_runtime.model import SkillModel
+from ezskiros_runtime.world.findings import WorldFinding, finding
+from ezskiros_runtime.world.grounding import can_start
+from ezskiros_runtime.world.postconditions import (
+    RelationUse,
+    double_places,
+    uses_of,
+)
+from ezskiros_runtime.world.scene import Scene, SceneError, read_scene
+from ezskiros_runtime.world.scene_checks import check_scene
+from ezskiros_runtime.world.vocabulary import single_valued
+
+from ..discover import ALWAYS_EXCLUDED, excluded_under
+from ..results import FileResult
+from .diagnostic import Diagnostic, Positions, diagnostic
+from .facts import StaticDescription
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.ontology.index import OntologyIndex
+
+SCENE_SUFFIX = ".turtle"
+
+
+def scene_files(paths: Sequence[Path], exclude: Sequence[str] = ()) -> list[Path]:
+    """The scenes a run checks: ``*.turtle`` files named on the command line, and those in
+    an ``owl`` folder (at any depth) under the folders named, less ``exclude``."""
+    found: dict[str, Path] = {}
+    for given in paths:
+        if given.is_file():
+            if given.suffix == SCENE_SUFFIX:
+                found.setdefault(str(given.resolve()), given)
+            continue
+        if not given.is_dir():
+            continue
+        skip = excluded_under(given, exclude)
+        for path in sorted(given.rglob(f"*{SCENE_SUFFIX}")):
+            parts = path.relative_to(given).parts[:-1]
+            if any(p in ALWAYS_EXCLUDED or p.startswith(".") for p in parts) or skip(path):
+                continue
+            if "owl" in parts or given.name == "owl":
+                found.setdefault(str(path.resolve()), path)
+    return list(found.values())
+
+
+@dataclass
+class SceneRead:
+    """A scene file as the run read it: its text, the scene (None when it does not parse)
+    and its findings."""
+
+    path: Path
+    text: str
+    scene: Scene | None
+    findings: list[WorldFinding]
+
+
+def read_scenes(paths: Iterable[Path], index: OntologyIndex | None) -> list[SceneRead]:
+    """Each scene read and checked; one that cannot be read is one finding."""
+    out = []
+    for path in paths:
+        try:
+            text = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeError) as error:
+            out.append(SceneRead(path, "", None, [finding(
+                "scene-syntax", str(path), 0, f"scene {path.name} cannot be read: {error}")]))
+            continue
+        try:
+            scene = read_scene(path, text)
+        except SceneError as error:
+            out.append(SceneRead(path, text, None, [finding(
+                "scene-syntax", str(path), error.line,
+                f"scene {path.name} cannot be loaded: {error.reason}")]))
+            continue
+        out.append(SceneRead(path, text, scene, check_scene(scene, index)))
+    return out
+
+
+def diagnostics_of(found: Iterable[WorldFinding], text: str, skill: str = ""
+                   ) -> list[Diagnostic]:
+    """World findings of one file as diagnostics (columns from ``text``)."""
+    where = Positions(text)
+    return [diagnostic(f.path, where, f.kind, f.line, f.message, skill, f.fix) for f in found]
+
+
+def legacy_double_places(path: str, skill: str, facts: StaticDescription,
+                         index: OntologyIndex | None, names: Sequence[str] | None
+                         ) -> list[WorldFinding]:
+    """EZ401 for a legacy description read statically (lines from the source)."""
+    uses = [RelationUse(which, c.vocabulary, c.subject, c.object, bool(c.desired), c.line,
+                        str(c.label or ""))
+            for which, c in facts.conditions
+            if c.kind == "relation" and c.vocabulary and c.subject and c.object]
+    return [finding("double-place", path, d.second.line, d.message(), skill, d.fix("legacy"))
+            for d in double_places(uses, single_valued(index, names), index)]
+
+
+def ezskiros_double_places(path: str, source: str, models: Iterable[SkillModel],
+                           index: OntologyIndex | None, names: Sequence[str] | None
+                           ) -> list[WorldFinding]:
+    """EZ401 for loaded EzSkiROS descriptions; the line is that of the post-condition's
+    ``+=`` in the class, found in the source."""
+    lines = _post_lines(source)
+    found = []
+    for model in models:
+        for d in double_places(uses_of(model), single_valued(index, names), index):
+            line = _line_of(lines.get(model.name, []), d.second) or model.line or 0
+            found.append(finding("double-place", path, line, d.message(), model.name,
+                                 d.fix("ezskiros")))
+    return found
+
+
+def _post_lines(source: str) -> dict[str, list[tuple[int, str]]]:
+    """``{class: [(line, text of the added condition)]}`` for every
+    ``self.post_conditions += ...`` in a module."""
+    try:
+        tree = ast.parse(source)
+    except (SyntaxError, ValueError):
+        return {}
+    found: dict[str, list[tuple[int, str]]] = {}
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.ClassDef):
+            continue
+        for stmt in ast.walk(node):
+            if isinstance(stmt, ast.AugAssign) and isinstance(stmt.target, ast.Attribute) \
+                    and stmt.target.attr == "post_conditions":
+                text = ast.get_source_segment(source, stmt.value) or ""
+                found.setdefault(node.name, []).append((stmt.lineno, text))
+    return found
+
+
+def _line_of(lines: list[tuple[int, str]], use: RelationUse) -> int:
+    """The line of the ``+=`` adding ``use``: it names the relation and both ends."""
+    local = use.relation.rpartition(":")[2]
+    for line, text in lines:
+        if local in text and use.object in text and use.subject in text \
+                and not text.lstrip().startswith("~"):
+            return line
+    return 0
+
+
+def cannot_start(path: str, skill: str, line: int, model: SkillModel, scene: Scene,
+                 index: OntologyIndex) -> WorldFinding | None:
+    """EZ409 when the skill cannot be grounded in ``scene``."""
+    grounded = can_start(model, scene, index)
+    if grounded.ok:
+        return None
+    return finding("cannot-start", path, line,
+                   f"cannot start from scene {Path(scene.path).name}: {grounded.reason}",
+                   skill)
+
+
+
+
+@dataclass
+class WorldRun:
+    """What ``check``'s world-model pass needs besides the files: the single-valued
+    relations (None: the default list), the scene files, and ``--scene`` (or None)."""
+
+    single_valued: tuple[str, ...] | None = None
+    scenes: tuple[Path, ...] = ()
+    start_scene: Path | None = None
+
+
+def world_diagnostics(run: WorldRun, legacy: Iterable[tuple[str, FileResult]],
+                      loaded: Iterable[tuple[str, list[SkillModel]]],
+                      index: OntologyIndex | None, sources: dict[str, str]
+                      ) -> list[Diagnostic]:
+    """Every EZ4xx diagnostic of a run; the scenes' texts are added to ``sources`` (so that
+    ``# ezskiros: ignore[EZ403]`` works in a scene too)."""
+    out: list[Diagnostic] = []
+    names = run.single_valued
+    models: list[tuple[str, str, int, SkillModel]] = []
+    for path, result in legacy:
+        for skill in result.skills:
+            if skill.static is not None and skill.status == "converted":
+                out += diagnostics_of(legacy_double_places(path, skill.name, skill.static,
+                                                           index, names),
+                                      sources.get(path, ""), skill.name)
+            if skill.model is not None:
+                models.append((path, skill.name, skill.line, SkillModel.from_json(skill.model)))
+    for path, found in loaded:
+        for f in ezskiros_double_places(path, sources.get(path, ""), found, index, names):
+            out += diagnostics_of([f], sources.get(path, ""), f.subject)
+        models += [(path, m.name, m.line or 0, m) for m in found]
+    for read in read_scenes(run.scenes, index):
+        sources[str(read.path)] = read.text
+        out += diagnostics_of(read.findings, read.text)
+    if run.start_scene is not None and index is not None:
+        out += _start_diagnostics(run.start_scene, models, index, sources)
+    return out
+
+
+def _start_diagnostics(path: Path, models: list[tuple[str, str, int, SkillModel]],
+                       index: OntologyIndex, sources: dict[str, str]) -> list[Diagnostic]:
+    """EZ409 for every skill that cannot start from the ``--scene`` (which must parse)."""
+    scene = read_scene(path)
+    out = []
+    for file, name, line, model in models:
+        found = cannot_start(file, name, line, model, scene, index)
+        if found is not None:
+            out += diagnostics_of([found], sources.get(file, ""), name)
+    return out
+
+
+__all__ = ["SceneRead", "WorldRun", "cannot_start", "diagnostics_of", "ezskiros_double_places",
+           "legacy_double_places", "read_scenes", "scene_files", "world_diagnostics"]

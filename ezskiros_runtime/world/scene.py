@@ -1,0 +1,281 @@
+"""A world-model scene (``*.turtle``) read into plain data: elements, their types,
+relations and data properties, each with the line of the Turtle file it is written on.
+
+SkiROS2's world model loads a scene with rdflib and keeps it as a graph; the checks and the
+grounding here only need who is what, who relates to whom and which values an element has,
+so the graph is read once into ``Scene`` and rdflib is not needed afterwards. rdflib gives no
+positions, so lines are found in the text: each subject's block (a statement starting at
+column 0) is located, and a triple's line is the first line of that block naming its object
+(or property); a finding then points where a person would look.
+
+Runs on the robot's Python 3.8 with rdflib 4.2.2 as well as on rdflib 7.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import logging
+import re
+import warnings
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Iterator
+
+RDF_TYPE = "http://www.w3.org/1999/02/22-rdf-syntax-ns#type"
+OWL = "http://www.w3.org/2002/07/owl#"
+XSD = "http://www.w3.org/2001/XMLSchema#"
+NOT_CLASSES = frozenset({OWL + "NamedIndividual", OWL + "Thing"})
+"""Types every saved individual carries that say nothing about what it is."""
+
+_PREFIX = re.compile(r"^\s*(?:@prefix|PREFIX)\s+([\w.-]*):\s*<([^>]*)>", re.IGNORECASE)
+_QUOTED = re.compile(r'"((?:[^"\\]|\\.)*)"')
+_TERM = re.compile(r"<[^>]*>|[\w.-]*:[\w.-]*")
+
+
+class SceneError(ValueError):
+    """A scene that cannot be read: ``path`` and ``line`` (0 when unknown) say where."""
+
+    def __init__(self, path: str, line: int, message: str) -> None:
+        super().__init__(f"{path}:{line}: {message}" if line else f"{path}: {message}")
+        self.path = path
+        self.line = line
+        self.reason = message
+
+
+@dataclass(frozen=True)
+class Relation:
+    """``subject property object`` between two IRIs, at ``line`` of the file."""
+
+    subject: str
+    property: str
+    object: str
+    line: int
+
+
+@dataclass(frozen=True)
+class Value:
+    """A data property's value: the lexical form, its declared datatype IRI (None when
+    plain), the Python value rdflib reads (None when the lexical form does not fit)."""
+
+    subject: str
+    property: str
+    lexical: str
+    datatype: str | None
+    value: object
+    line: int
+
+
+@dataclass
+class SceneElement:
+    """One individual of the scene: its IRI, its classes (owl:NamedIndividual left out),
+    its label and the line its block starts on."""
+
+    iri: str
+    line: int
+    types: list[str] = field(default_factory=list)
+    label: str = ""
+
+
+@dataclass
+class Scene:
+    """A scene file: elements by IRI, every relation and value, the file's own prefixes."""
+
+    path: str
+    elements: dict[str, SceneElement] = field(default_factory=dict)
+    relations: list[Relation] = field(default_factory=list)
+    values: list[Value] = field(default_factory=list)
+    prefixes: dict[str, str] = field(default_factory=dict)
+
+    def compact(self, iri: str) -> str:
+        """``skiros:Location-1`` for an IRI in one of the file's namespaces (the longest
+        wins), else the IRI itself: names as the file writes them."""
+        best, found = "", iri
+        for prefix, namespace in self.prefixes.items():
+            if iri.startswith(namespace) and len(namespace) > len(best) \
+                    and len(iri) > len(namespace):
+                best = namespace
+                found = f"{prefix}:{iri[len(namespace):]}"
+        return found
+
+    def values_of(self, subject: str, prop: str) -> list[Value]:
+        """The values ``subject`` has for data property ``prop``."""
+        return [v for v in self.values if v.subject == subject and v.property == prop]
+
+
+def read_scene(path: str | Path, text: str | None = None) -> Scene:
+    """Parse a Turtle scene (``text`` if given, else the file). Raises ``SceneError`` with
+    the file and line when rdflib cannot read it."""
+    from rdflib import BNode, Graph, Literal, URIRef
+
+    where = str(path)
+    if text is None:
+        try:
+            text = Path(path).read_text(encoding="utf-8")
+        except (OSError, UnicodeError) as error:
+            raise SceneError(where, 0, f"cannot be read: {error}") from error
+    graph = Graph()
+    try:
+        with _quiet_rdflib():
+            graph.parse(data=text, format="turtle")
+    except Exception as error:  # rdflib's BadSyntax and friends: say where, as rdflib does
+        line = getattr(error, "lines", None)
+        reason = str(error).splitlines()
+        message = next((r for r in reason if "Bad syntax" in r), reason[0] if reason else "")
+        message = message.split(" at ^ in:")[0]
+        raise SceneError(where, line + 1 if isinstance(line, int) else 0,
+                         f"not valid Turtle: {message.strip() or type(error).__name__}"
+                         ) from error
+    scene = Scene(where, prefixes=_prefixes(text))
+    blocks = _Blocks(text, scene.prefixes)
+    triples = sorted(graph.triples((None, None, None)), key=lambda t: (str(t[0]), str(t[1]),
+                                                                         str(t[2])))
+    for s, p, o in triples:
+        if isinstance(s, BNode) or not isinstance(s, URIRef):
+            continue
+        subject = str(s)
+        element = scene.elements.get(subject)
+        if element is None:
+            element = scene.elements[subject] = SceneElement(subject, blocks.start(subject))
+        prop = str(p)
+        if prop == RDF_TYPE and isinstance(o, URIRef):
+            if str(o) not in NOT_CLASSES and str(o) not in element.types:
+                element.types.append(str(o))
+        elif isinstance(o, URIRef):
+            scene.relations.append(Relation(subject, prop, str(o),
+                                            blocks.line(subject, str(o), prop)))
+        elif isinstance(o, Literal):
+            if prop.endswith("#label"):
+                element.label = str(o)
+                continue
+            datatype = str(o.datatype) if o.datatype is not None else None
+            line = blocks.line(subject, None, prop)
+            with _quiet_rdflib():
+                value = _python(o)
+            scene.values.append(Value(subject, prop, blocks.written(line, str(o)), datatype,
+                                      value, line))
+    return scene
+
+
+@contextlib.contextmanager
+def _quiet_rdflib() -> Iterator[None]:
+    """rdflib 7 logs a traceback and warns for each value that does not fit its datatype;
+    those values are findings here, not noise on stderr."""
+    logger = logging.getLogger("rdflib.term")
+    level = logger.level
+    logger.setLevel(logging.CRITICAL)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            yield
+    finally:
+        logger.setLevel(level)
+
+
+def _python(literal: object) -> object:
+    """rdflib's Python value, or None when the lexical form does not fit its datatype
+    (rdflib then hands back the Literal itself, or the lexical string)."""
+    from rdflib import Literal
+
+    assert isinstance(literal, Literal)
+    value = literal.toPython()
+    return None if isinstance(value, Literal) else value
+
+
+def _prefixes(text: str) -> dict[str, str]:
+    found: dict[str, str] = {}
+    for line in text.splitlines():
+        match = _PREFIX.match(line)
+        if match:
+            found[match.group(1)] = match.group(2)
+    return found
+
+
+class _Blocks:
+    """Where each subject's statements are in the text: ``{iri: (first line, last line)}``."""
+
+    def __init__(self, text: str, prefixes: dict[str, str]) -> None:
+        self.prefixes = prefixes
+        self.lines = text.splitlines()
+        self.blocks: dict[str, tuple[int, int]] = {}
+        starts: list[tuple[int, str]] = []
+        for number, line in enumerate(self.lines, 1):
+            if not line or line[0] in " \t#@" or line.upper().startswith(("PREFIX", "BASE")):
+                continue
+            match = _TERM.match(line)
+            iri = self.expand(match.group(0)) if match else None
+            if iri is not None:
+                starts.append((number, iri))
+        for i, (number, iri) in enumerate(starts):
+            end = starts[i + 1][0] - 1 if i + 1 < len(starts) else len(self.lines)
+            self.blocks.setdefault(iri, (number, end))
+
+    def expand(self, term: str) -> str | None:
+        if term.startswith("<"):
+            return term[1:-1]
+        prefix, _, local = term.rstrip(".").partition(":")
+        namespace = self.prefixes.get(prefix)
+        return namespace + local if namespace is not None else None
+
+    def written(self, line: int, parsed: str) -> str:
+        """A value as the file writes it (rdflib 7 rewrites a boolean ``"yes"`` as
+        ``"false"``): the quoted text on its line when there is exactly one."""
+        if not 1 <= line <= len(self.lines):
+            return parsed
+        quoted = _QUOTED.findall(self.lines[line - 1])
+        return quoted[0] if len(quoted) == 1 else parsed
+
+    def start(self, subject: str) -> int:
+        return self.blocks.get(subject, (0, 0))[0]
+
+    def line(self, subject: str, obj: str | None, prop: str) -> int:
+        """The first line of ``subject``'s block naming ``obj`` (else ``prop``)."""
+        first, last = self.blocks.get(subject, (0, -1))
+        for wanted in (obj, prop):
+            if wanted is None:
+                continue
+            for number in range(first, last + 1):
+                if any(self.expand(t) == wanted for t in _TERM.findall(self.lines[number - 1])):
+                    return number
+        return first
+
+
+
+
+def ontology_individuals(paths: list[str]) -> dict[str, list[str]]:
+    """``{iri: [classes]}`` of the individuals the ontology files declare (a robot
+    description in ``owl/robot.owl``): the world model loads them with the ontology, so a
+    scene may relate to them without defining them. Files that cannot be read add nothing
+    (loading the ontology already reported them)."""
+    from rdflib import URIRef
+
+    from ..ontology.errors import OntologyError
+    from ..ontology.loading import (
+        collect_ontology_files,
+        parse_ontology_file,
+        read_ontology_files,
+    )
+
+    found: dict[str, list[str]] = {}
+    try:
+        files = read_ontology_files(collect_ontology_files([Path(p) for p in paths]))
+    except OntologyError:
+        return found
+    for entry in files:
+        try:
+            graph = parse_ontology_file(entry)
+        except OntologyError:
+            continue
+        for s, _, o in graph.triples((None, URIRef(RDF_TYPE), None)):
+            iri, cls = str(s), str(o)
+            if cls.startswith(OWL) and cls != OWL + "NamedIndividual":
+                continue  # a class, a property, the ontology itself
+            if cls.startswith("http://www.w3.org/"):
+                continue
+            types = found.setdefault(iri, [])
+            if cls not in NOT_CLASSES and cls not in types:
+                types.append(cls)
+    return found
+
+
+__all__ = ["Relation", "Scene", "SceneElement", "SceneError", "Value", "ontology_individuals",
+           "read_scene"]
