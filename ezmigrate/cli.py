@@ -229,15 +229,25 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
     compounds: list[str] = []
+    scenes: list[str] = []
     if report is not None and report.suffix.lower() == ".md":
         from .compound.analysis import report_section
 
         compounds = report_section(
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
             options.pool(ontology_files))
+        scenes = _scene_section(paths, options.exclude, index)
     _finish([m.result for m in outcome.migrated], report, request.writes, check,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
-                                             compounds=compounds))
+                                             compounds=compounds, scenes=scenes))
+
+
+def _scene_section(paths: tuple[Path, ...], exclude: tuple[str, ...], index: Any) -> list[str]:
+    """The Markdown report's "Scenes": each scene under ``paths`` checked and drawn."""
+    from .lint.world_model import scene_files
+    from .scene_diagram import markdown_section
+
+    return markdown_section(scene_files(list(paths), exclude), index)
 
 
 def _print_result(shown: str, relative: str, original: bytes, result: FileResult,
@@ -352,11 +362,15 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
                    "for syntax newer than it the newest python3.X on PATH that compiles it).")
 @click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
 @click.option("--quiet", "-q", is_flag=True, help="Only errors; no summary.")
+@click.option("--scene", type=click.Path(path_type=Path, exists=True, dir_okay=False),
+              help="A world-model scene (*.turtle): say which skills cannot start from it "
+                   "(EZ409, info).")
 @click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
 def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str, ...],
           ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
           statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
-          python: str | None, exclude: tuple[str, ...], quiet: bool, debug: bool) -> None:
+          python: str | None, exclude: tuple[str, ...], quiet: bool, scene: Path | None,
+          debug: bool) -> None:
     """Lint SkiROS2 and EzSkiROS descriptions under PATHS (codes: docs/rules.md).
 
     Suppress a finding on its line with `# ezskiros: ignore[EZ209]` (or `ignore[EZ209,EZ201]`).
@@ -384,7 +398,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
         if sys.stderr.isatty() and not quiet else None
     outcome = run_check(list(paths), index, pool, options.exclude, progress,
                         options.skill_libraries,
-                        compounds=any(c.startswith("EZ3") for c in selection.codes()))
+                        compounds=any(c.startswith("EZ3") for c in selection.codes()),
+                        world=_world_run(paths, options.exclude, scene))
     found = apply(outcome.diagnostics, outcome.sources, selection)
     shown = [d for d in found if d.severity == "error"] if quiet else found
     click.echo(count(shown) if statistics else FORMATS[output_format](shown), nl=False)
@@ -393,3 +408,51 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
         click.echo(f"ezmigrate: {outcome.files} files checked, {outcome.skills} skills, "
                    f"{errors} errors, {len(found) - errors} other findings", err=True)
     sys.exit(EXIT_OK if exit_zero or not errors else EXIT_ATTENTION)
+
+def _world_run(paths: tuple[Path, ...], exclude: tuple[str, ...], scene: Path | None) -> Any:
+    """``check``'s world-model settings: the project's ``single-valued``, the scenes under
+    ``paths``, and the ``--scene`` skills must start from (which must parse: exit 2)."""
+    from ezskiros_runtime.world.scene import SceneError, read_scene
+
+    from .lint.world_model import WorldRun, scene_files
+
+    if scene is not None:
+        try:
+            read_scene(scene)
+        except SceneError as error:
+            raise click.BadParameter(str(error), param_hint="'--scene'") from None
+    return WorldRun(single_valued=load_project_config(paths[0]).single_valued,
+                    scenes=tuple(scene_files(list(paths), exclude)), start_scene=scene)
+
+
+@main.command()
+@click.argument("file", type=click.Path(path_type=Path, exists=True, dir_okay=False))
+@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
+              help="Ontology file or folder (repeatable).")
+@click.option("--markdown", is_flag=True,
+              help="Print the Markdown section (findings and a fenced diagram) instead.")
+@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+def scene(file: Path, ontology: tuple[Path, ...], markdown: bool, debug: bool) -> None:
+    """Draw the spatial tree of the world-model scene FILE as a Mermaid flowchart.
+
+    Elements with their class, contain/hasA edges, and the elements a finding (EZ4xx) is
+    about highlighted. Exit 0 when the scene has no finding at error severity, 1 when it
+    has, 2 when it cannot be parsed.
+    """
+    from .lint.world_model import read_scenes
+    from .scene_diagram import markdown_section, mermaid
+
+    options = _options(file, CommandLine())
+    index, _, _ = _load_index(ontology, file, [file], options)
+    read = read_scenes([file], index)[0]
+    if read.scene is None:
+        for f in read.findings:
+            click.echo(f"{f.path}:{f.line}: {f.code} {f.message}", err=True)
+        sys.exit(EXIT_ERROR)
+    if markdown:
+        click.echo("\n".join(markdown_section([file], index)), nl=False)
+    else:
+        click.echo(mermaid(read.scene, read.findings, index), nl=False)
+        for f in read.findings:
+            click.echo(f"{f.path}:{f.line}: {f.code} {f.message}", err=True)
+    sys.exit(EXIT_ATTENTION if any(f.severity == "error" for f in read.findings) else EXIT_OK)

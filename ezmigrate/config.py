@@ -4,7 +4,8 @@ Keys: ``exclude`` (list of globs), ``jobs`` (int), ``timeout`` (seconds), ``pyth
 interpreter that loads files when verifying, relative to the project when it is a path),
 ``select``, ``ignore`` and ``extend-select`` (finding codes for ``check``),
 ``skill-libraries`` (folders of skill libraries a compound skill may use, relative to the
-project), and ``ontology`` (read by ``ezskiros_runtime.ontology.config``). Command-line
+project), ``single-valued`` (the relations EZ401 keeps to one parent or one place), and
+``ontology`` (read by ``ezskiros_runtime.ontology.config``). Command-line
 options win over these (``ezmigrate.options`` merges them).
 
 The file is found and read by ``ezskiros_runtime.pyproject``, the one reader the runtime's
@@ -16,7 +17,7 @@ TOML, unreadable, ``[tool.ezmigrate]`` not a table) is a ``ConfigError``, never 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -33,6 +34,8 @@ class ProjectConfig:
     jobs: int | None = None
     timeout: float | None = None
     python: str | None = None
+    single_valued: tuple[str, ...] | None = None
+    """``single-valued = ["skiros:spatiallyRelated", "skiros:at"]``; None: that default."""
     source: Path | None = None
     select: tuple[str, ...] | None = None
     ignore: tuple[str, ...] = ()
@@ -52,7 +55,20 @@ def load_project_config(start: Path) -> ProjectConfig:
     if found is None:
         return ProjectConfig()
     path, section = found
-    return _project_config(path, section)
+    return replace(_project_config(path, section),
+                   single_valued=_single_valued(section, path))
+
+
+def _single_valued(section: dict[str, Any], path: Path) -> tuple[str, ...] | None:
+    """The relations the world model keeps single-valued (``prefix:name`` each)."""
+    value = section.get("single-valued")
+    if value is None:
+        return None
+    if not (isinstance(value, list) and all(isinstance(v, str) and ":" in v and v.strip()
+                                            for v in value)):
+        raise ConfigError(f"{path}: [tool.ezmigrate] single-valued must be a list of "
+                          f"relations written prefix:name (\"skiros:at\"), not {value!r}")
+    return tuple(v.strip() for v in value)
 
 
 def _project_config(path: Path, section: dict[str, Any]) -> ProjectConfig:

@@ -64,6 +64,8 @@ class MarkdownOptions:
     """Which ontology files were used and why (``OntologySource.describe``)."""
     compounds: list[str] = field(default_factory=list)
     """The "Compound skills" section (``compound.diagram.markdown_section``), Markdown only."""
+    scenes: list[str] = field(default_factory=list)
+    """The "Scenes" section (``scene_diagram.markdown_section``), Markdown only."""
 
 
 def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
@@ -161,4 +163,5 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
     if findings:
         out += ["## Findings (kept as they were; not equivalence problems)", "", *findings, ""]
     out += options.compounds
+    out += options.scenes
     return "\n".join(out).rstrip() + "\n"
