@@ -53,7 +53,7 @@ def scene_files(paths: Sequence[Path], exclude: Sequence[str] = ()) -> list[Path
             parts = path.relative_to(given).parts[:-1]
             if any(p in ALWAYS_EXCLUDED or p.startswith(".") for p in parts) or skip(path):
                 continue
-            if "owl" in parts or given.name == "owl":
+            if "owl" in parts or "owl" in given.parts:
                 found.setdefault(str(path.resolve()), path)
     return list(found.values())
 
