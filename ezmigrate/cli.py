@@ -14,6 +14,7 @@ import sys
 import threading
 import traceback
 from collections.abc import Sequence
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -26,6 +27,7 @@ from .discover import excluded_under
 from .options import CommandLine, Options
 from .report import MarkdownOptions, Summary, json_report, markdown_report, relaxed
 from .results import FileResult
+from .target import robot_python, target_for, verified_with
 
 EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
 EXIT_BROKEN_PIPE = 128 + 13  # as a shell reports a process ended by SIGPIPE
@@ -111,15 +113,16 @@ def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
     Says once on stderr which files are used and why (the report header says it again):
     with nothing configured, the owl/ folders of the repository of ``roots`` count (less
     what ``options.exclude`` names, relative to the project)."""
-    from ezskiros_runtime.ontology.config import resolve_ontology_paths
+    from ezskiros_runtime.ontology.config import load_source, resolve_ontology_paths
     from ezskiros_runtime.ontology.errors import OntologyError
-    from ezskiros_runtime.ontology.index import load_index
 
     try:
         skip = excluded_under(options.project or Path.cwd(), options.exclude)
         source = resolve_ontology_paths(list(ontology) or None, start=start, roots=roots,
                                         skip=skip)
-        index = load_index(list(source.paths) or None)
+        index, source = load_source(source)
+        for warning in source.warnings():
+            click.echo(f"ezmigrate: {warning}", err=True)
         click.echo(f"ezmigrate: {source.describe()}", err=True)
         return index, tuple(str(p) for p in source.paths), source.describe()
     except OntologyError as error:
@@ -185,11 +188,15 @@ def main() -> None:
 @click.option("--ignore-order", is_flag=True, help="Verification ignores declaration order.")
 @click.option("--ignore-labels", is_flag=True, help="Verification ignores condition labels.")
 @click.option("--color/--no-color", default=None, help="Colour diffs (default: on a terminal).")
+@click.option("--package-xml/--no-package-xml", default=True, show_default=True,
+              help="Declare the runtime (<exec_depend>) in the package.xml of each ROS "
+                   "package whose files were migrated.")
 @click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
 def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | None,
             exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
             output_dir: Path | None, verify: bool, timeout: float | None, python: str | None,
-            ignore_order: bool, ignore_labels: bool, color: bool | None, debug: bool) -> None:
+            ignore_order: bool, ignore_labels: bool, color: bool | None, package_xml: bool,
+            debug: bool) -> None:
     """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin).
 
     Temporary files (.NAME.XXXXXXXX.ezmigrate) that a killed run left beside PATHS are
@@ -214,11 +221,16 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     from .session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
 
     index, ontology_files, used = _load_index(ontology, start, paths, options)
+    robot = target_for(paths, options.target_version, f"{options.source}: target-version")
+    python = robot_python(robot, options.python, verify)
+    verifier = verified_with(python, robot) if verify else ""
+    if verifier:
+        click.echo(f"ezmigrate: {verifier}", err=True)
     request = RewriteOptions(
         paths=list(paths), dry_run=dry_run, check=check, exclude=options.exclude,
         jobs=options.jobs, output_dir=output_dir, verify=verify, timeout=options.timeout,
-        python=options.python, ignore_order=ignore_order, ignore_labels=ignore_labels,
-        ontology=ontology_files, project=options.project)
+        python=python, ignore_order=ignore_order, ignore_labels=ignore_labels,
+        ontology=ontology_files, project=options.project, target=robot.version)
     outcome = run_rewrite(request, index)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
@@ -228,6 +240,8 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
                       check, color, debug)
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
+    declared = _declare_runtime(outcome, request, color) if package_xml and not output_dir \
+        else []
     compounds: list[str] = []
     scenes: list[str] = []
     if report is not None and report.suffix.lower() == ".md":
@@ -239,7 +253,8 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         scenes = _scene_section(paths, options.exclude, index)
     _finish([m.result for m in outcome.migrated], report, request.writes, check,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
-                                             compounds=compounds, scenes=scenes))
+                                             compounds=compounds, verifier=verifier,
+                                             scenes=scenes, notes=declared))
 
 
 def _scene_section(paths: tuple[Path, ...], exclude: tuple[str, ...], index: Any) -> list[str]:
@@ -248,6 +263,42 @@ def _scene_section(paths: tuple[Path, ...], exclude: tuple[str, ...], index: Any
     from .scene_diagram import markdown_section
 
     return markdown_section(scene_files(list(paths), exclude), index)
+
+
+def _declare_runtime(outcome: Any, request: Any, color: bool | None) -> list[str]:
+    """Add the runtime's ``<exec_depend>`` to the package.xml of each ROS package whose
+    files were written (or, with --dry-run/--check, would be): shown as a diff or a
+    ``would rewrite`` line like any file; one line each for the report."""
+    from .package_xml import ROSDEP_KEY, packages_of, with_exec_depend
+    from .writing import WriteRefused, atomic_write, digest
+
+    written = set(outcome.written)
+    files = [item.candidate.path for item in outcome.migrated if item.result.changed
+             and (not request.writes or item.candidate.relative in written)]
+    lines = []
+    for xml in packages_of(files):
+        old = xml.read_bytes()
+        new = with_exec_depend(old)
+        if new is None:
+            continue
+        shown = os.path.relpath(xml)
+        if request.dry_run:
+            diff = unified_diff(shown, old, new)
+            use_colour = sys.stdout.isatty() if color is None else color
+            click.echo(colour(diff) if use_colour else diff, nl=False)
+        elif request.check:
+            click.echo(f"would rewrite {shown}")
+        else:
+            try:
+                atomic_write(xml, new, digest(old), roots=[xml.parent])
+            except (WriteRefused, OSError) as error:
+                click.echo(f"ezmigrate: {xml}: not written ({error})", err=True)
+                continue
+        lines.append(f"`{shown}`: declares the runtime, `<exec_depend>{ROSDEP_KEY}"
+                     "</exec_depend>`" + ("" if request.writes else " (would)"))
+        click.echo(f"ezmigrate: {shown}: <exec_depend>{ROSDEP_KEY}</exec_depend> "
+                   + ("added" if request.writes else "would be added"), err=True)
+    return lines
 
 
 def _print_result(shown: str, relative: str, original: bytes, result: FileResult,
@@ -308,7 +359,11 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
     options = _options(before, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
                                            python=python))
     _, ontology_files, used = _load_index(ontology, before, [before], options)
-    pool = options.pool(ontology_files)
+    robot = target_for([after], options.target_version, f"{options.source}: target-version")
+    python = robot_python(robot, options.python, True)
+    verifier = verified_with(python, robot)
+    click.echo(f"ezmigrate: {verifier}", err=True)
+    pool = replace(options.pool(ontology_files), python=python)
     try:
         results, unloadable = run_verify(VerifyOptions(
             before, after, pool, ignore_order, ignore_labels, options.exclude))
@@ -331,7 +386,8 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
                         click.echo(f"      + {d['after']}", err=True)
     if report is not None:
         _write_report(report, results,
-                      MarkdownOptions(True, ignore_order, ignore_labels, ontology=used))
+                      MarkdownOptions(True, ignore_order, ignore_labels, ontology=used,
+                                      verifier=verifier))
     total = sum(len(r.skills) for r in results)
     bad = sum(1 for r in results for s in r.skills if s.status == "failed")
     click.echo(f"ezmigrate: {len(results)} files compared, {total} classes, "
@@ -408,6 +464,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
         click.echo(f"ezmigrate: {outcome.files} files checked, {outcome.skills} skills, "
                    f"{errors} errors, {len(found) - errors} other findings", err=True)
     sys.exit(EXIT_OK if exit_zero or not errors else EXIT_ATTENTION)
+
 
 def _world_run(paths: tuple[Path, ...], exclude: tuple[str, ...], scene: Path | None) -> Any:
     """``check``'s world-model settings: the project's ``single-valued``, the scenes under

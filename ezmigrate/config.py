@@ -23,6 +23,8 @@ from typing import Any
 
 from ezskiros_runtime.pyproject import PyprojectError, find_pyproject, find_tool_table
 
+from .target import parse_target
+
 __all__ = ["ConfigError", "ProjectConfig", "find_pyproject", "load_project_config"]
 
 
@@ -41,6 +43,8 @@ class ProjectConfig:
     ignore: tuple[str, ...] = ()
     extend_select: tuple[str, ...] = ()
     skill_libraries: tuple[Path, ...] = ()
+    target_version: tuple[int, int] | None = None
+    """``target-version = "py38"``: the Python migrated code must run on (``target``)."""
 
 
 def load_project_config(start: Path) -> ProjectConfig:
@@ -96,7 +100,12 @@ def _project_config(path: Path, section: dict[str, Any]) -> ProjectConfig:
     if not (isinstance(libraries, list) and all(isinstance(e, str) for e in libraries)):
         raise ConfigError(f"{path}: [tool.ezmigrate] skill-libraries must be a list of "
                           f"folders, not {libraries!r}")
-    return ProjectConfig(exclude=tuple(exclude), jobs=jobs,
+    target = section.get("target-version")
+    target_version = None if target is None else parse_target(target)
+    if target is not None and target_version is None:
+        raise ConfigError(f"{path}: [tool.ezmigrate] target-version must be a Python version "
+                          f"as ruff spells it, py38 or newer (\"py38\"), not {target!r}")
+    return ProjectConfig(exclude=tuple(exclude), jobs=jobs, target_version=target_version,
                          skill_libraries=tuple(path.parent / e for e in libraries),
                          timeout=float(timeout) if timeout is not None else None,
                          python=python, source=path,

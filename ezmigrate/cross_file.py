@@ -231,7 +231,7 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
             if not (external or migrated_bases or unresolved) or key in done:
                 continue
             done.add(key)
-            item.settings = Settings(settings.index, external, exported=(exported or {}).get(
+            item.settings = replace(settings, external=external, exported=(exported or {}).get(
                 item.candidate.relative, frozenset()), migrated_bases=frozenset(migrated_bases),
                 unresolved_bases=unresolved)
             item.result = replace(migrate(item.original, item.settings,

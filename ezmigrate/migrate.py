@@ -25,7 +25,7 @@ from ezskiros_runtime.model import SkillModel
 from .core.classes import DescriptionClass, description_classes, inert_classes
 from .core.context import ExtractContext, StatementLines, module_constants, positions_of
 from .core.cst_facts import facts_of
-from .core.emit import DSL_NAMES, EmitContext
+from .core.emit import DEFAULT_TARGET, DSL_NAMES, EmitContext
 from .core.function import build_description, emitted_params
 from .core.guard import encoding_of, lost_line, refuse
 from .core.holes import Holes, stand_in
@@ -86,6 +86,9 @@ class Settings:
     migrated_bases: frozenset[str] = frozenset()
     """Imported bases that a sibling file defines as EzSkiROS descriptions (an earlier run
     migrated them): a class here deriving from one with a ``createDescription`` is legacy."""
+    target: tuple[int, int] = DEFAULT_TARGET
+    """The oldest Python the migrated code must run on (``target-version``; a ROS 1
+    package means ROS Noetic's 3.8): the emitter writes only what it runs."""
     unresolved_bases: Mapping[str, str] = field(default_factory=dict)
     """Imported bases whose file is not part of the run -> why a class deriving from one with
     a ``createDescription`` is kept (its base's declarations cannot be read)."""
@@ -438,7 +441,7 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         emit = EmitContext(index=settings.index, rules=RULES, self_name=ctx.self_name,
                            aliases=aliases,
                            reserved=_reserved(skill, settings.index, ctx.self_name),
-                           column=create.column + 4)
+                           column=create.column + 4, target=settings.target)
         plan.new_function = build_description(func, skill, params, emit,
                                               module.config_for_parsing)
         effective[cls.name] = skill.operations

@@ -80,6 +80,10 @@ class Options:
     """Folders of skill libraries compound skills may use (absolute)."""
     project: Path | None = None
     """The folder of the ``pyproject.toml`` in use: project excludes are relative to it."""
+    target_version: tuple[int, int] | None = None
+    """The project's ``target-version``; None: decided from the repository (``target``)."""
+    source: str = "[tool.ezmigrate]"
+    """The pyproject.toml the settings came from, for messages."""
 
     def pool(self, ontology: tuple[str, ...], workers: int | None = None) -> PoolConfig:
         """The sandbox's settings for these options, loading ``ontology`` (resolved files;
@@ -110,6 +114,7 @@ class Options:
                            else (*pyproject.extend_select, *cli.extend_select)),
             skill_libraries=pyproject.skill_libraries,
             project=pyproject.source.parent if pyproject.source else None,
+            target_version=pyproject.target_version, source=where,
         )
 
 

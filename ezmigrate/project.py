@@ -49,11 +49,14 @@ class Checks:
 
 
 def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: int,
-           checks: Checks | None = None, progress: Progress | None = None) -> list[Migrated]:
+           checks: Checks | None = None, progress: Progress | None = None,
+           target: tuple[int, int] | None = None) -> list[Migrated]:
     """Every candidate's settled result (see the module doc); ``checks`` None: no
-    verification (``--no-verify``, ``check``)."""
-    migrated = migrate_all(candidates, index, jobs, progress)
-    _settle_cross_file(migrated, index)
+    verification (``--no-verify``, ``check``); ``target``: the Python the migrated code
+    must run on (None: the default, ``Settings.target``)."""
+    migrated = migrate_all(candidates, index, jobs, progress, target)
+    base = Settings(index=index) if target is None else Settings(index=index, target=target)
+    _settle_cross_file(migrated, base)
     if progress is not None:
         progress.close()  # the line is gone before verification says anything
     holdpoint.reach("migrated")
@@ -62,17 +65,17 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
     return migrated
 
 
-def _settle_cross_file(migrated: list[Migrated], index: OntologyIndex | None) -> None:
+def _settle_cross_file(migrated: list[Migrated], base: Settings) -> None:
     """Migrate again the files whose cross-file facts are not those they were migrated
     with: names other files import from them, and bases defined in sibling files."""
     exported = imported_from(migrated)
     for item in migrated:
         names = exported.get(item.candidate.relative)
         if names and item.result.changed:
-            item.settings = Settings(index, exported=names)
+            item.settings = replace(base, exported=names)
             item.result = migrate(item.original, item.settings, item.candidate.relative)
     if any(m.result.foreign_bases for m in migrated):
-        resolve_cross_file(migrated, Settings(index=index), exported)
+        resolve_cross_file(migrated, base, exported)
 
 
 def verify_changed(migrated: list[Migrated], checks: Checks) -> None:

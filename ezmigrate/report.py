@@ -66,6 +66,8 @@ class MarkdownOptions:
     """The "Compound skills" section (``compound.diagram.markdown_section``), Markdown only."""
     scenes: list[str] = field(default_factory=list)
     """The "Scenes" section (``scene_diagram.markdown_section``), Markdown only."""
+    verifier: str = ""
+    """Which Python verified and which rdflib read the ontology (``target.verified_with``)."""
 
 
 def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
@@ -93,6 +95,7 @@ def json_report(results: Sequence[FileResult], extra: dict[str, Any] | None = No
         **({"options": {"verified": options.verified, "ignore_order": options.ignore_order,
                         "ignore_labels": options.ignore_labels}} if options else {}),
         **({"ontology": options.ontology} if options and options.ontology else {}),
+        **({"verified_with": options.verifier} if options and options.verifier else {}),
         "summary": {"files": summary.files, "skills": summary.skills,
                     "converted": summary.converted, "skipped": summary.skipped,
                     "failed": summary.failed},
@@ -130,6 +133,8 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
     out.append(f"Equivalence: {how}" + (f"; {relax}" if relax else "") + ".")
     if options.ontology:  # "ontology from X: files" or "ontology: the core plus ..."
         out += ["", options.ontology[0].upper() + options.ontology[1:] + "."]
+    if options.verifier:  # "verified under Python 3.8.18 (...), ontology read with ..."
+        out += ["", options.verifier[0].upper() + options.verifier[1:] + "."]
     out += ["", "| files | skills | converted | skipped | failed | unchanged |",
             "|---:|---:|---:|---:|---:|---:|",
             f"| {s.files} | {s.skills} | {s.converted} | {s.skipped} | {s.failed} | "

@@ -127,8 +127,10 @@ class _Workers:
     """Migrates the files it is given: here for the first, in forked workers from the second."""
 
     def __init__(self, index: OntologyIndex | None, jobs: int,
-                 progress: Progress | None = None) -> None:
+                 progress: Progress | None = None,
+                 target: tuple[int, int] | None = None) -> None:
         self.index = index
+        self.target = target
         self.jobs = jobs
         self.progress = progress
         self._settings: Settings | None = None
@@ -141,7 +143,8 @@ class _Workers:
         if self._settings is None:  # imports the core, and with it libcst
             from .migrate import Settings
 
-            self._settings = Settings(index=self.index)
+            self._settings = (Settings(index=self.index) if self.target is None
+                              else Settings(index=self.index, target=self.target))
         return self._settings
 
     def add(self, item: Migrated, data: bytes) -> None:
@@ -209,9 +212,11 @@ class _Workers:
 
 
 def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
-                jobs: int, progress: Progress | None = None) -> list[Migrated]:
-    """Migrate every candidate; files the prefilter rules out get an empty result."""
-    workers = _Workers(index, jobs, progress)
+                jobs: int, progress: Progress | None = None,
+                target: tuple[int, int] | None = None) -> list[Migrated]:
+    """Migrate every candidate; files the prefilter rules out get an empty result.
+    ``target``: the Python the migrated code must run on (None: the default)."""
+    workers = _Workers(index, jobs, progress, target)
     done: list[Migrated] = []
     try:
         for candidate, data, error in read_candidates(candidates):

@@ -50,6 +50,8 @@ class RewriteOptions:
     """Resolved ontology files for verification workers (empty: the bundled default)."""
     project: Path | None = None
     """The folder of the ``pyproject.toml`` in use: excludes also match relative to it."""
+    target: tuple[int, int] | None = None
+    """The Python the migrated code must run on (``ezmigrate.target``; None: the default)."""
 
     @property
     def writes(self) -> bool:
@@ -89,7 +91,8 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     notes += _stale_notes(stale, options.writes)
     holdpoint.reach("discovered")
     with Progress.for_stream(len(candidates)) as progress:  # gone before anything is said
-        migrated = settle(candidates, index, options.jobs, options.checks, progress)
+        migrated = settle(candidates, index, options.jobs, options.checks, progress,
+                          options.target)
     outcome = RewriteOutcome(migrated, notes)
     if not options.writes:
         return outcome

@@ -32,8 +32,12 @@ SYMBOL_METHODS = frozenset(
 """Methods of a symbolic parameter: never usable as a short relation/property name."""
 
 DSL_NAMES = frozenset({
-    "SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "abstract",
-    "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output"})
+    "SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "LIST",
+    "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output"})
+
+DEFAULT_TARGET = (3, 10)
+"""The Python migrated code must run on when nothing says otherwise: the oldest that ROS 2
+(Humble) runs. A ROS 1 package means Noetic's 3.8 (``ezmigrate.target``)."""
 
 LINE_LIMIT = 99
 """Longest line the emitter writes when it has a choice (ruff's and black's spirit)."""
@@ -60,11 +64,19 @@ class EmitContext:
     aliases: dict[str, str] = field(default_factory=dict)
     column: int = 8
     """Width of the body's indentation, for wrapping long lines."""
+    target: tuple[int, int] = DEFAULT_TARGET
+    """The oldest Python the written code must run on (see ``list_type``)."""
 
     def use(self, name: str) -> str:
         """Note that ``name`` must be imported from ``ezskiros_runtime``; its local name."""
         self.runtime_names.add(name)
         return self.aliases.get(name, name)
+
+    def list_type(self, item: str) -> str:
+        """The annotation of a list of ``item``: ``list[float]`` where the target Python
+        runs it (3.9 and newer), else the DSL's ``LIST[float]`` (``typing.List``), since
+        ``list[float]`` raises ``TypeError`` when the class is defined under Python 3.8."""
+        return f"list[{item}]" if self.target >= (3, 9) else f"{self.use('LIST')}[{item}]"
 
     def namespace(self, prefix: str) -> str:
         """Note that the namespace ``prefix`` must be imported; its local name."""

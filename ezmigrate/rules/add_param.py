@@ -11,6 +11,8 @@ Legacy (legacy-skiros2-api.md §3, §8)           EzSkiROS (docs/dsl.md)
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import libcst as cst
 
 from ..core.context import ExtractContext, bind_arguments
@@ -196,12 +198,14 @@ def _type_and_default(op: ParamOp, ctx: EmitContext) -> tuple[str, str | None]:
         return value.name, None
     if isinstance(value, OpaqueValue):
         assert value.known is not None
-        return literal_type(value.known, op), value.code
-    return literal_type(value, op), value.code
+        return literal_type(value.known, op, ctx.list_type), value.code
+    return literal_type(value, op, ctx.list_type), value.code
 
 
-def literal_type(value: Literal, op: ParamOp) -> str:
-    """The annotation of a literal default, or ``Unsupported`` when SkiROS2 rejects it."""
+def literal_type(value: Literal, op: ParamOp,
+                 list_type: Callable[[str], str] = "list[{}]".format) -> str:
+    """The annotation of a literal default, or ``Unsupported`` when SkiROS2 rejects it;
+    ``list_type`` spells a list of an item type (``EmitContext.list_type``)."""
     items = value.value
     if isinstance(items, list):
         if not items:
@@ -211,7 +215,7 @@ def literal_type(value: Literal, op: ParamOp) -> str:
         if first not in DEFAULT_TYPES or any(type(x) is not first for x in items):
             raise Unsupported(f"parameter {op.key!r} at line {op.line} has a list default of "
                               "mixed or unsupported types, which SkiROS2 rejects")
-        return f"list[{first.__name__}]"
+        return list_type(first.__name__)
     if type(items) not in DEFAULT_TYPES:
         raise Unsupported(f"parameter {op.key!r} at line {op.line} has a default of type "
                           f"{type(items).__name__}, which SkiROS2 parameters do not support")

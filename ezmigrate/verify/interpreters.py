@@ -59,6 +59,46 @@ def worker_command(python: str, module: str) -> tuple[list[str], dict[str, str]]
     return [python, "-B", "-m", module], env
 
 
+def find_python(version: str) -> str | None:
+    """``python3.X`` for ``version`` ("3.8"): on PATH first, else in pyenv's versions folder
+    (``$PYENV_ROOT``, default ``~/.pyenv``), newest patch release first; None when neither
+    has it. pyenv's shims are not used: they run whatever version the folder selects."""
+    name = f"python{version}"
+    found = shutil.which(name)
+    if found is not None and "shims" not in Path(found).parts:
+        return found
+    root = Path(os.environ.get("PYENV_ROOT") or Path.home() / ".pyenv")
+    candidates = sorted(root.glob(f"versions/{version}.*/bin/{name}"),
+                        key=lambda path: _patch(path.parts[-3]), reverse=True)
+    return next((str(path) for path in candidates if os.access(path, os.X_OK)), None)
+
+
+def _patch(release: str) -> int:
+    """18 for ``3.8.18``; -1 for a name that is no plain release (``3.8-dev``)."""
+    last = release.rsplit(".", 1)[-1]
+    return int(last) if last.isdigit() else -1
+
+
+def version_of(python: str | None) -> str:
+    """``3.8.18``: the version of ``python`` (None: this one), asked of the interpreter."""
+    if not is_foreign(python):
+        return ".".join(str(part) for part in sys.version_info[:3])
+    assert python is not None
+    run = subprocess.run([python, "-c", "import sys; print('%d.%d.%d' % sys.version_info[:3])"],
+                         capture_output=True, text=True, timeout=60, check=False)
+    return run.stdout.strip() or "unknown"
+
+
+def rdflib_version() -> str:
+    """The rdflib that read the ontology (in this process: workers get the parsed index)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("rdflib")
+    except PackageNotFoundError:  # pragma: no cover - rdflib is a dependency
+        return "unknown"
+
+
 def newer_interpreters() -> list[str]:
     """``python3.X`` on PATH with X above this Python's minor version, newest first."""
     found = []

@@ -9,17 +9,22 @@ On a robot the working directory is arbitrary (roslaunch starts nodes in ``~/.ro
 neither an argument, the environment nor a pyproject.toml above the working directory names
 an ontology, the pyproject.toml above the first file that asked for vocabulary (see
 `note_source_file`) is searched; then, with the SkiROS2 backend active, the files the world
-model server loads (`robot`); and only then the bundled vocabulary.
+model server loads (`robot`); then what ``ezmigrate`` itself would use for that file: the
+bundled core plus the ``owl/`` folders of its repository or ROS package (the one resolution
+function, ``config.resolve_ontology_paths``, serves both, so a lab's plain-Python unit tests
+import migrated skills with the vocabulary ``rewrite`` verified them with). A discovered
+file that does not parse is skipped with one logged warning (``config.load_source``).
 """
 
 from __future__ import annotations
 
+import logging
 import os
 import threading
 from collections.abc import Sequence
 from pathlib import Path
 
-from .config import OntologySource, resolve_ontology_paths
+from .config import OntologySource, load_source, resolve_ontology_paths
 from .index import OntologyIndex, load_index
 from .robot import (
     PackageLocator,
@@ -34,6 +39,7 @@ _active: OntologyIndex | None = None
 _source: OntologySource | None = None
 _hint: list[Path] = []
 """The first source file that asked for vocabulary (at most one entry)."""
+log = logging.getLogger("ezskiros_runtime")
 
 
 def note_source_file(path: str | os.PathLike[str] | None) -> None:
@@ -115,6 +121,10 @@ def _load_configured() -> OntologyIndex:
         source = resolve_ontology_paths(start=_hint[0])
     if source.origin == "bundled" and _on_skiros2():
         source = robot_source()
-    index = load_index(list(source.paths) or None)
+    if source.origin == "bundled" and _hint:  # as ezmigrate resolves it for this file
+        source = resolve_ontology_paths(start=_hint[0], roots=[_hint[0]])
+    index, source = load_source(source)
+    for warning in source.warnings():
+        log.warning("ezskiros_runtime: %s", warning)
     _source = source
     return index

@@ -23,14 +23,17 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..pyproject import TOOL_TABLE, PyprojectError, find_tool_table
-from .errors import OntologyConfigError
+from .errors import OntologyConfigError, OntologyLoadError
 
-__all__ = ["ENV_VAR", "TOOL_TABLE", "OntologySource", "find_tool_config",
+if TYPE_CHECKING:
+    from .index import OntologyIndex
+
+__all__ = ["ENV_VAR", "TOOL_TABLE", "OntologySource", "find_tool_config", "load_source",
            "resolve_ontology_paths"]
 
 ENV_VAR = "EZSKIROS_ONTOLOGY"
@@ -49,6 +52,14 @@ class OntologySource:
     paths: tuple[Path, ...]
     origin: str
     skipped: tuple[Path, ...] = ()
+    broken: tuple[tuple[Path, str], ...] = ()
+    """Discovered files that could not be read or parsed, with the reason: left out (see
+    ``load_source``)."""
+
+    def warnings(self) -> list[str]:
+        """One line per broken discovered file, for stderr or the robot's log."""
+        return [f"warning: {reason}: skipped (SkiROS2's world model would fail on this "
+                f"file if its folder were the workspace_dir)" for _path, reason in self.broken]
 
     def describe(self) -> str:
         """One line for humans: `ontology from EZSKIROS_ONTOLOGY: a.owl, b.ttl`."""
@@ -65,6 +76,9 @@ class OntologySource:
             if self.skipped:
                 text += " (vendored core copies skipped: " + ", ".join(
                     _shown(p, root) for p in self.skipped) + ")"
+            if self.broken:
+                text += " (unreadable, skipped: " + ", ".join(
+                    _shown(p, root) for p, _reason in self.broken) + ")"
             return text
         if not self.paths:
             return f"ontology from {where} (the SkiROS2 core; no owl/ folder found)"
@@ -126,6 +140,41 @@ def resolve_ontology_paths(
                 return OntologySource((bundled_ontology_path(), *discovered.files),
                                       f"discovered:{root}", discovered.vendored)
     return OntologySource((), "bundled")
+
+
+def load_source(source: OntologySource) -> tuple[OntologyIndex, OntologySource]:
+    """The index of ``source``, and the source as loaded.
+
+    A file that discovery found (an ``owl/`` folder nobody named) and that cannot be read
+    or parsed, such as an empty ``lth.owl`` committed by mistake, is left out: the source
+    returned lists it in ``broken`` and its ``warnings()`` say so, and everything else
+    runs. A file someone named (``--ontology``, ``EZSKIROS_ONTOLOGY``, pyproject) is the
+    user's choice: its error is raised (``OntologyLoadError``), as is any error of the core.
+    """
+    from .index import load_index
+
+    paths: list[Path] = list(source.paths)
+    broken: list[tuple[Path, str]] = []
+    discovered = source.origin.startswith("discovered:")
+    while True:
+        try:
+            index = load_index(paths or None)
+        except OntologyLoadError as error:
+            bad = _named_by(error, paths[1:]) if discovered else None
+            if bad is None:
+                raise
+            paths.remove(bad)
+            broken.append((bad, str(error)))
+            continue
+        return index, replace(source, paths=tuple(paths), broken=tuple(broken))
+
+
+def _named_by(error: OntologyLoadError, paths: Sequence[Path]) -> Path | None:
+    """Which of ``paths`` the load error is about, or None."""
+    if error.path is None:
+        return None
+    culprit = Path(error.path).resolve()
+    return next((path for path in paths if path.resolve() == culprit), None)
 
 
 def find_tool_config(start: Path) -> tuple[Path, dict[str, Any]] | None:

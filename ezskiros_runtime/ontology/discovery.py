@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 OWL_FOLDER = "owl"
+PACKAGE_XML = "package.xml"
 SUFFIXES = (".owl", ".ttl", ".rdf")
 CORE_FILE_NAMES = frozenset({"skiros.owl", "skirosextra.owl", "sumo.owl", "cora.owl",
                              "corax.owl", "rparts.owl"})
@@ -40,7 +41,13 @@ class Discovered:
 
 
 def repository_root(paths: Sequence[Path]) -> Path | None:
-    """The git top level above the first path, else the common folder of the paths."""
+    """The git top level above the first path, else the ROS package that holds it (the
+    nearest folder with a ``package.xml``), else the common folder of the paths.
+
+    The command (for the paths it works on) and the runtime (for the first skill module that
+    asks for vocabulary, wherever the working directory is: roslaunch starts nodes in
+    ``~/.ros``) both search from here, so they load the same files. A robot's installed
+    workspace often has no ``.git``, but its packages keep their ``package.xml``."""
     if not paths:
         return None
     first = Path(paths[0]).resolve()
@@ -48,8 +55,18 @@ def repository_root(paths: Sequence[Path]) -> Path | None:
     for candidate in (folder, *folder.parents):
         if (candidate / ".git").exists():
             return candidate
+    package = package_root(folder)
+    if package is not None:
+        return package
     folders = [p if p.is_dir() else p.parent for p in (Path(x).resolve() for x in paths)]
     return Path(os.path.commonpath([str(f) for f in folders]))
+
+
+def package_root(path: Path) -> Path | None:
+    """The nearest folder at or above ``path`` with a ``package.xml``: its ROS package."""
+    folder = path if path.is_dir() else path.parent
+    return next((candidate for candidate in (folder, *folder.parents)
+                 if (candidate / PACKAGE_XML).is_file()), None)
 
 
 def discover(root: Path, skip: Callable[[Path], bool] | None = None) -> Discovered:

@@ -13,6 +13,15 @@ from pathlib import Path
 from verify_support import LEGACY, MIGRATED, ROOT, cli, edit, tree
 
 SECTION = "## Reviewing a migration"
+VERIFIER = re.compile(r"^Verified under Python \S+ \(\S+\), ontology read with rdflib \S+\.$",
+                      re.M)
+"""The one line that names this machine's interpreter and rdflib: compared by its form."""
+
+
+def _same_report(real: str, shown: str) -> None:
+    """``real`` is ``shown`` but for the versions in the verifier line, which must be there."""
+    assert len(VERIFIER.findall(real)) == 1 and len(VERIFIER.findall(shown)) == 1
+    assert VERIFIER.sub("V", real) == VERIFIER.sub("V", shown)
 
 
 def _section() -> str:
@@ -52,7 +61,7 @@ def test_the_rewrite_report_example_is_the_real_report(tmp_path):
             tree((tmp_path / arg).parent, {Path(arg).name: ROOT / arg})
     run = cli(*args, cwd=tmp_path)
     assert run.returncode in (0, 1), run.stderr
-    assert (tmp_path / "migration.md").read_text(encoding="utf-8") == block
+    _same_report((tmp_path / "migration.md").read_text(encoding="utf-8"), block)
 
 
 def test_the_verify_report_example_is_the_real_report(tmp_path):
@@ -65,4 +74,4 @@ def test_the_verify_report_example_is_the_real_report(tmp_path):
          "self.pre_conditions += Gripper.contain(Object)")
     run = cli("verify", "before", "after", "--report", "verify.md", cwd=tmp_path)
     assert run.returncode == 1, run.stderr
-    assert (tmp_path / "verify.md").read_text(encoding="utf-8") == block
+    _same_report((tmp_path / "verify.md").read_text(encoding="utf-8"), block)

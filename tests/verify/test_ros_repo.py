@@ -20,6 +20,9 @@ import libcst as cst
 import pytest
 from verify_support import second_python
 
+from ezmigrate.package_xml import ROSDEP_KEY
+from ezmigrate.verify.interpreters import find_python
+
 REPO = Path(__file__).resolve().parents[2] / "fixtures" / "ros_repo"
 SKILLS = Path("lab_skills/src/lab_skills/skills")
 DESCRIPTIONS = {"PaintPart", "GoToStation", "PaintAtStation", "DetectPaint"}
@@ -27,13 +30,18 @@ NEWER = "vision.py"
 """Uses Python 3.12 f-strings: verifiable only under a Python that can import it."""
 
 
+ROBOT = find_python("3.8")
+"""lab_skills is a ROS 1 (catkin) package: with Python 3.8 on this machine, rewrite verifies
+under it (the robot's), and vision.py, which 3.8 cannot read, fails as it would on the robot."""
+
 SECOND = second_python()
 """A newer interpreter for vision.py, put on PATH as ``python3.12`` for the run (pyenv's
 shims do not run it), so that ``rewrite`` finds it the way it would on a lab's machine."""
 
 
 def _newer_python() -> str | None:
-    return SECOND
+    """The interpreter that can verify vision.py, or None when the run cannot."""
+    return SECOND if ROBOT is None else None
 
 
 @pytest.fixture(scope="module")
@@ -72,7 +80,11 @@ def test_every_description_converts_and_verifies(migrated):
         assert (skills[name]["status"], skills[name]["equivalent"]) == ("converted", True), \
             skills[name]
     detect = skills["DetectPaint"]
-    if _newer_python() is None:  # the one file this Python cannot import: said, not written
+    if ROBOT is not None:  # verified under the robot's Python 3.8, which cannot read it
+        assert detect["status"] == "failed"
+        assert "SyntaxError" in detect["reason"]
+        assert "verified under Python 3.8" in run.stderr
+    elif _newer_python() is None:  # the one file this Python cannot import: said, not written
         assert detect["status"] == "failed"
         assert "cannot import under Python 3.11" in detect["reason"]
     else:
@@ -107,6 +119,11 @@ def test_the_diff_holds_only_descriptions_and_the_imports_they_needed(migrated):
             continue
         changed.append(relative.as_posix())
         old, new = before.decode().splitlines(), after.decode().splitlines()
+        if relative.name == "package.xml":  # the runtime declared: one line added, no other
+            assert [line for line in new if line not in old] == [
+                f"  <exec_depend>{ROSDEP_KEY}</exec_depend>"]
+            assert len(new) == len(old) + 1
+            continue
         old_ok = _allowed_lines(before.decode(), DESCRIPTIONS)
         new_ok = _allowed_lines(after.decode(), DESCRIPTIONS)
         matcher = difflib.SequenceMatcher(a=old, b=new, autojunk=False)
@@ -117,6 +134,7 @@ def test_the_diff_holds_only_descriptions_and_the_imports_they_needed(migrated):
                       [new[j] for j in range(j1, j2) if j + 1 not in new_ok]
             assert outside == [], f"{relative}: lines outside descriptions and imports"
     expected = {(SKILLS / n).as_posix() for n in ("paint.py", "navigation.py", "tasks.py")}
+    expected.add("lab_skills/package.xml")
     if _newer_python() is not None:
         expected.add((SKILLS / NEWER).as_posix())
     assert set(changed) == expected
