@@ -14,9 +14,10 @@ where new imports go) sees what it would see in the original, and every line kee
 number. After the rewrite each placeholder, found verbatim in the printed code, gets its
 original text back: those bytes are never parsed, printed or touched.
 
-The last statement of a file, when stood in for, takes the blank lines, comments and form
-feeds after it to the end of the file: libcst would otherwise file them after a one-line
-placeholder, in a footer it does not print back whole.
+The lines after the last statement (blank lines, comments, form feeds: the tail of the
+file) are kept out of libcst's reading and put back after it: libcst does not always
+print back what it files in a module's footer (a blank line before a form feed at the end
+of a file, comments after a one-line placeholder).
 
 ``source`` must count its lines as Python does: a file whose coding cookie can make a
 newline out of other bytes (utf-7, raw-unicode-escape) is stood in for in its decoded text
@@ -48,9 +49,12 @@ class Holes:
     """A module's bytes with some statements stood in for, and how to undo it."""
 
     text: bytes
-    """What libcst parses: the original with each stood-in part replaced by its placeholder."""
+    """What libcst parses: the original with each stood-in part replaced by its placeholder,
+    without its tail."""
     filled: tuple[tuple[bytes, bytes], ...]
     """``(placeholder, original text)`` per stood-in part, in file order."""
+    tail: bytes = b""
+    """The lines after the last statement, which ``fill`` puts back at the end."""
 
     def fill(self, code: bytes) -> bytes | None:
         """``code`` (printed from the module parsed from ``text``) with every part back;
@@ -64,27 +68,27 @@ class Holes:
                 return None
             parts += (code[at:found], original)
             at = found + len(placeholder)
-        parts.append(code[at:])
-        if MARK in parts[-1] or any(MARK in part for part in parts[:-1:2]):
+        parts += (code[at:], self.tail)
+        if MARK in parts[-2] or any(MARK in part for part in parts[:-2:2]):
             return None  # a placeholder printed twice
         return b"".join(parts)
 
 
 def stand_in(source: bytes, tree: ast.Module, inert: Collection[int] = ()) -> Holes | None:
     """``source`` with its top-level functions, and the bodies of the classes whose ``id``
-    is in ``inert``, stood in for (see the module docstring); ``None`` when there is
-    nothing to stand in for, or the file is one this must leave whole."""
+    is in ``inert``, stood in for, and its tail kept apart (see the module docstring);
+    ``None`` when there is nothing to do, or the file is one this must leave whole."""
     parts = [node for node in tree.body if isinstance(node, (ast.FunctionDef,
                                                               ast.AsyncFunctionDef))
              or (isinstance(node, ast.ClassDef) and id(node) in inert and node.body)]
-    if not parts or MARK in source or _LONE_CR.search(source):
+    if not tree.body or MARK in source or _LONE_CR.search(source):
         return None
     lines = _LINE.findall(source)
-    end = len(lines) - 2  # the last line (``findall`` ends with an empty match)
+    cut = _tail_start(lines, tree.body[-1])
     filled: list[tuple[bytes, bytes]] = []
     for node in parts:
         number = len(filled)
-        last = end if node is tree.body[-1] else (node.end_lineno or node.lineno) - 1
+        last = (node.end_lineno or node.lineno) - 1
         if isinstance(node, ast.ClassDef):
             first = _first_line(node.body[0])
             head = lines[first].lstrip(_BLANK)
@@ -106,9 +110,19 @@ def stand_in(source: bytes, tree: ast.Module, inert: Collection[int] = ()) -> Ho
         lines[first] = placeholder + ends[-1]
         lines[first + 1:last + 1] = [b""] * (last - first)
         filled.append((placeholder, original))
-    if not filled:
+    tail = b"".join(lines[cut:])
+    if not filled and not tail:
         return None
-    return Holes(b"".join(lines), tuple(filled))
+    return Holes(b"".join(lines[:cut]), tuple(filled), tail)
+
+
+def _tail_start(lines: list[bytes], last: ast.stmt) -> int:
+    """Index of the first line after the statement ``last`` (the lines a backslash at the
+    end of its lines continues belong to it)."""
+    at = last.end_lineno or last.lineno
+    while at < len(lines) and lines[at - 1].rstrip(b"\r\n").endswith(b"\\"):
+        at += 1
+    return at
 
 
 def _first_line(node: ast.stmt) -> int:
