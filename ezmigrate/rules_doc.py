@@ -11,6 +11,8 @@ from pathlib import Path
 
 from ezskiros_runtime.codes import GROUPS, RULES
 
+from .rules_precision import precision_section
+
 DOC = Path(__file__).resolve().parent.parent / "docs" / "rules.md"
 
 
@@ -44,6 +46,7 @@ def render() -> str:
             out.append(f"| {r.code} | {r.name} | {severity} | {_cell(r.rationale)} | "
                        f"{_cell(r.fix)} |")
         out.append("")
+    out += precision_section()
     return "\n".join(out)
 
 
