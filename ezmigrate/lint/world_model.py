@@ -23,7 +23,7 @@ from ezskiros_runtime.world.postconditions import (
     uses_of,
 )
 from ezskiros_runtime.world.scene import Scene, SceneError, read_scene
-from ezskiros_runtime.world.scene_checks import check_scene
+from ezskiros_runtime.world.scene_checks import check_scene, unreadable
 from ezskiros_runtime.world.vocabulary import single_valued
 
 from ..discover import ALWAYS_EXCLUDED, excluded_under
@@ -75,16 +75,13 @@ def read_scenes(paths: Iterable[Path], index: OntologyIndex | None) -> list[Scen
     for path in paths:
         try:
             text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeError) as error:
-            out.append(SceneRead(path, "", None, [finding(
-                "scene-syntax", str(path), 0, f"scene {path.name} cannot be read: {error}")]))
-            continue
-        try:
             scene = read_scene(path, text)
+        except (OSError, UnicodeError) as error:
+            out.append(SceneRead(path, "", None, [unreadable(SceneError(
+                str(path), 0, f"cannot be read: {error}"))]))
+            continue
         except SceneError as error:
-            out.append(SceneRead(path, text, None, [finding(
-                "scene-syntax", str(path), error.line,
-                f"scene {path.name} cannot be loaded: {error.reason}")]))
+            out.append(SceneRead(path, text, None, [unreadable(error)]))
             continue
         out.append(SceneRead(path, text, scene, check_scene(scene, index)))
     return out

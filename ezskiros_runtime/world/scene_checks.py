@@ -45,9 +45,14 @@ def check_scene_file(path: str | Path, index: OntologyIndex | None,
     try:
         scene = read_scene(path, text)
     except SceneError as error:
-        return [finding("scene-syntax", error.path, error.line,
-                        f"scene {Path(error.path).name} cannot be loaded: {error.reason}")]
+        return [unreadable(error)]
     return check_scene(scene, index, elsewhere)
+
+
+def unreadable(error: SceneError) -> WorldFinding:
+    """The one finding of a scene the world model cannot load (EZ402)."""
+    return finding("scene-syntax", error.path, error.line,
+                   f"scene {Path(error.path).name} cannot be loaded: {error.reason}")
 
 
 def check_scene(scene: Scene, index: OntologyIndex | None,
@@ -252,4 +257,4 @@ def _misfit(value: Value, wanted: str) -> str | None:
     return None
 
 
-__all__ = ["bookkeeping", "check_scene", "check_scene_file"]
+__all__ = ["bookkeeping", "check_scene", "check_scene_file", "unreadable"]
