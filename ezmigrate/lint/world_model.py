@@ -188,7 +188,7 @@ def world_diagnostics(run: WorldRun, legacy: Iterable[tuple[str, FileResult]],
                 out += diagnostics_of(legacy_double_places(path, skill.name, skill.static,
                                                            index, names),
                                       sources.get(path, ""), skill.name)
-            if skill.model is not None:
+            if skill.model is not None and run.start_scene is not None:
                 models.append((path, skill.name, skill.line, SkillModel.from_json(skill.model)))
     for path, found in loaded:
         for f in ezskiros_double_places(path, sources.get(path, ""), found, index, names):
