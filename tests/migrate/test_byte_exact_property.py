@@ -1,8 +1,8 @@
 """Property: outside the migrated code, every line of a generated module survives.
 
-Modules mix legacy descriptions (some sharing a name, some decorated) with the shapes
-that once lost bytes (issue 20): helpers with nested defs, decorators and form feeds at
-the start of their lines, implementation classes, ``class X(*SkillDescription)``, coding
+Modules mix legacy descriptions (some sharing a name, some decorated, with methods of
+their own) with the shapes that once lost bytes (issue 20): functions and methods with
+nested defs, decorators and form feeds at the start of their lines, implementation classes, ``class X(*SkillDescription)``, coding
 cookies (latin-1, and utf-7 / raw-unicode-escape with escaped newlines inside a helper),
 and tails after the last statement (blank and whitespace-only lines, form feeds,
 commented-out code, no final newline).
@@ -86,8 +86,9 @@ def _description(draw: st.DrawFn, module: Module) -> bool:
     if draw(st.booleans()):
         module.add('    """A skill."""\n')
     if draw(st.booleans()):
-        module.add("    def helper(self):\n        return 1\n" + draw(SEPARATORS).replace(
-            "# note", "    # note"))
+        module.add(draw(st.sampled_from(["    ", "\f    "])) + "def helper(self):\n"
+                   + draw(st.sampled_from(["        ", "\f        "])) + "return 1\n"
+                   + draw(SEPARATORS).replace("# note", "    # note"))
     params = draw(st.integers(0, 3))
     body = "".join(f'        self.addParam("P{i}", {i}, ParamTypes.Required)\n'
                    for i in range(params)) or "        pass\n"
@@ -95,7 +96,9 @@ def _description(draw: st.DrawFn, module: Module) -> bool:
     module.add("    def createDescription(self):\n" + body + trailing, protected=True)
     module.descriptions += 1
     if draw(st.booleans()):
-        module.add("    def other(self):\n        x = 1\n\n        return x\n")
+        module.add(draw(st.sampled_from(["", "    @property\n", "    @property\n\f"]))
+                   + "    def other(self):\n        x = 1\n\n"
+                   + draw(st.sampled_from(["        ", "\f        "])) + "return x\n")
         return False
     return True
 
