@@ -29,6 +29,7 @@ from libcst.metadata import CodeRange
 
 from ..results import FileResult
 from .context import positions_of
+from .holes import first_line
 
 _LINE = re.compile(r"[^\r\n]*(?:\r\n|\n|\r)?")
 CREATE = "createDescription"
@@ -134,9 +135,9 @@ def protected_lines(tree: ast.Module, converted: Collection[int], count: int) ->
     body = tree.body
     for at, node in enumerate(body):
         if isinstance(node, ast.ClassDef) and node.lineno in converted:
-            after = _first_line(body[at + 1]) if at + 1 < len(body) else count + 1
-            found |= _class_lines(node.lineno, [_first_line(s) for s in node.body], [
-                _first_line(s) for s in node.body if _creates(s)], after)
+            after = first_line(body[at + 1]) if at + 1 < len(body) else count + 1
+            found |= _class_lines(node.lineno, [first_line(s) for s in node.body], [
+                first_line(s) for s in node.body if _creates(s)], after)
     return found
 
 
@@ -208,12 +209,6 @@ def _statements(body: list[ast.stmt]) -> Iterator[ast.stmt]:
 
 
 _BLOCKS = ("body", "orelse", "finalbody")
-
-
-def _first_line(node: ast.stmt) -> int:
-    """A statement's first line, its decorators included."""
-    decorators = getattr(node, "decorator_list", [])
-    return min([node.lineno, *(d.lineno for d in decorators)])
 
 
 def _creates(node: ast.stmt) -> bool:

@@ -95,7 +95,7 @@ def stand_in(source: bytes, tree: ast.Module, inert: Collection[int] = ()) -> Ho
     for node, body in _parts(tree, inert):
         number = len(filled)
         last = (node.end_lineno or node.lineno) - 1
-        first = _first_line(body[0] if body else node)
+        first = first_line(body[0] if body else node) - 1
         lead, indent = _indentation(lines[first])
         if not _starts(lines[first][lead:], lead, body[0] if body else node):
             continue
@@ -158,10 +158,10 @@ def _indentation(line: bytes) -> tuple[int, bytes]:
     return lead, line[:lead].rpartition(b"\f")[2]
 
 
-def _first_line(node: ast.stmt) -> int:
-    """0-based first line of a statement, its decorators included."""
+def first_line(node: ast.stmt) -> int:
+    """The first line of a statement (1-based), its decorators included."""
     decorators = getattr(node, "decorator_list", [])
-    return min([node.lineno, *(d.lineno for d in decorators)]) - 1
+    return min([node.lineno, *(d.lineno for d in decorators)])
 
 
 def _starts(line: bytes, column: int, node: ast.stmt) -> bool:

@@ -70,7 +70,8 @@ class Module:
                 if n not in self.protected]
 
 
-SEPARATORS = st.sampled_from(["\n", "\n\n", "# note\n", "\f\n", "    \n", "\n\f\n\n"])
+SEPARATORS = st.sampled_from(["\n", "\n\n", "# note\n", "\f\n", "    \n", "\n\f\n\n",
+                              "\n    \n    # a comment block\n    # of two lines\n"])
 TAILS = st.lists(st.sampled_from(["\n", "    \n", "\f\n", "    # commented_out()\n",
                                   "# end\n", "\t\n"]), max_size=4)
 
