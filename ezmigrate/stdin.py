@@ -40,13 +40,16 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, ve
     """
     from .discover import Candidate
     from .project import Checks, settle
+    from .target import robot_python, target_for
     from .verify.verdicts import Comparison
 
     data = sys.stdin.buffer.read()
-    checks = Checks(options.pool(ontology, workers=min(2, options.jobs)),
-                    Comparison(ignore_order, ignore_labels)) if verify else None
+    robot = target_for([Path.cwd()], options.target_version)  # stdin is the cwd's project's
+    pool = replace(options.pool(ontology, workers=min(2, options.jobs)),
+                   python=robot_python(robot, options.python, verify))
+    checks = Checks(pool, Comparison(ignore_order, ignore_labels)) if verify else None
     with tempfile.TemporaryDirectory(prefix="ezmigrate-stdin-") as folder:
         path = Path(folder) / NAME
         path.write_bytes(data)
-        [item] = settle([Candidate(path, path.parent)], index, 1, checks)
+        [item] = settle([Candidate(path, path.parent)], index, 1, checks, target=robot.version)
     return data, replace(item.result, path="-")
