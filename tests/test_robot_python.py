@@ -179,6 +179,32 @@ def test_the_migrated_package_imports_under_the_robots_python(robot, migrated_pa
     assert "owl/paintcell.owl" in printed and "[0.25, 0.5, 0.25]" in printed
 
 
+_WORKER_MODULES = """
+import sys
+import ezmigrate.verify.child, ezmigrate.verify.zygote
+print(" ".join(sorted(m for m in sys.modules if m.split(".")[0] == "ezmigrate")))
+"""
+
+
+@pytest.mark.slow
+def test_the_verification_worker_runs_under_the_robots_python_and_ruff_holds_it_there(robot):
+    """``--python`` may name the robot's interpreter: the worker (and all it imports of
+    ``ezmigrate``) must import there, and each such module is one ruff checks as py38."""
+    import tomllib
+
+    _, python = robot
+    run = subprocess.run([str(python), "-c", _WORKER_MODULES], capture_output=True, text=True,
+                         timeout=300, check=False)
+    assert run.returncode == 0, run.stderr
+    targets = tomllib.loads((REPO / "pyproject.toml").read_text(encoding="utf-8"))[
+        "tool"]["ruff"]["per-file-target-version"]
+    for module in run.stdout.split():
+        parts = module.split(".")
+        is_package = (REPO.joinpath(*parts) / "__init__.py").is_file()
+        path = "/".join(parts) + ("/__init__.py" if is_package else ".py")
+        assert targets.get(path) == "py38", f"{path} runs under 3.8 but ruff checks it as newer"
+
+
 def _noetic_python() -> str:
     """Python 3.8, required in CI (see the module doc)."""
     python = find_python("3.8")
