@@ -199,6 +199,15 @@ def test_rewrite_from_stdin_gives_the_original_back(skill_file: Path) -> None:
     assert proc.returncode == 1, proc.stderr
 
 
+def test_check_reports_a_file_the_migration_would_damage_as_ez906(skill_file: Path) -> None:
+    """A decorated class is no plain description (``lint/plain_reader.py``), so ``check``
+    reads it with the codemod, and the guard's verdict is a finding."""
+    skill_file.write_bytes(SOURCE.replace(b"class Pick", b"@register\nclass Pick"))
+    proc = _ezmigrate("check", "--select", "EZ9", "--jobs", "1", str(skill_file))
+    assert f"skills.py:{LOST}:1: EZ906 ".encode() in proc.stdout, proc.stdout + proc.stderr
+    assert proc.returncode == 1
+
+
 def test_the_stand_in_reading_passes_the_guard_on_generated_modules() -> None:
     """The guard stays quiet where the causes are fixed: on the modules of the byte-exact
     property the first reading is never refused."""
