@@ -24,7 +24,7 @@ from ezskiros_runtime.world.postconditions import (
 )
 from ezskiros_runtime.world.scene import Scene, SceneError, read_scene
 from ezskiros_runtime.world.scene_checks import check_scene, unreadable
-from ezskiros_runtime.world.vocabulary import single_valued
+from ezskiros_runtime.world.vocabulary import SingleValued, single_valued
 
 from ..discover import ALWAYS_EXCLUDED, excluded_under
 from ..results import FileResult
@@ -95,26 +95,27 @@ def diagnostics_of(found: Iterable[WorldFinding], text: str, skill: str = ""
 
 
 def legacy_double_places(path: str, skill: str, facts: StaticDescription,
-                         index: OntologyIndex | None, names: Sequence[str] | None
+                         index: OntologyIndex | None, entries: list[SingleValued]
                          ) -> list[WorldFinding]:
-    """EZ401 for a legacy description read statically (lines from the source)."""
+    """EZ401 for a legacy description read statically (lines from the source);
+    ``entries``: the single-valued relations (``single_valued``)."""
     uses = [RelationUse(which, c.vocabulary, c.subject, c.object, bool(c.desired), c.line,
                         str(c.label or ""))
             for which, c in facts.conditions
             if c.kind == "relation" and c.vocabulary and c.subject and c.object]
     return [finding("double-place", path, d.second.line, d.message(), skill, d.fix("legacy"))
-            for d in double_places(uses, single_valued(index, names), index)]
+            for d in double_places(uses, entries, index)]
 
 
 def ezskiros_double_places(path: str, source: str, models: Iterable[SkillModel],
-                           index: OntologyIndex | None, names: Sequence[str] | None
+                           index: OntologyIndex | None, entries: list[SingleValued]
                            ) -> list[WorldFinding]:
     """EZ401 for loaded EzSkiROS descriptions; the line is that of the post-condition's
     ``+=`` in the class, found in the source."""
     lines = _post_lines(source)
     found = []
     for model in models:
-        for d in double_places(uses_of(model), single_valued(index, names), index):
+        for d in double_places(uses_of(model), entries, index):
             line = _line_of(lines.get(model.name, []), d.second) or model.line or 0
             found.append(finding("double-place", path, line, d.message(), model.name,
                                  d.fix("ezskiros")))
@@ -180,18 +181,18 @@ def world_diagnostics(run: WorldRun, legacy: Iterable[tuple[str, FileResult]],
     """Every EZ4xx diagnostic of a run; the scenes' texts are added to ``sources`` (so that
     ``# ezskiros: ignore[EZ403]`` works in a scene too)."""
     out: list[Diagnostic] = []
-    names = run.single_valued
+    entries = single_valued(index, run.single_valued)  # resolved once per run
     models: list[tuple[str, str, int, SkillModel]] = []
     for path, result in legacy:
         for skill in result.skills:
             if skill.static is not None and skill.status == "converted":
                 out += diagnostics_of(legacy_double_places(path, skill.name, skill.static,
-                                                           index, names),
+                                                           index, entries),
                                       sources.get(path, ""), skill.name)
             if skill.model is not None and run.start_scene is not None:
                 models.append((path, skill.name, skill.line, SkillModel.from_json(skill.model)))
     for path, found in loaded:
-        for f in ezskiros_double_places(path, sources.get(path, ""), found, index, names):
+        for f in ezskiros_double_places(path, sources.get(path, ""), found, index, entries):
             out += diagnostics_of([f], sources.get(path, ""), f.subject)
         models += [(path, m.name, m.line or 0, m) for m in found]
     for read in read_scenes(run.scenes, index):
