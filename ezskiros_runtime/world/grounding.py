@@ -31,7 +31,7 @@ if TYPE_CHECKING:
 
 Assignment = Dict[str, str]
 MAX_CHOICES = 200_000
-"""Partial assignments kept at once; beyond it the search gives up (``undecided``)."""
+"""Choices tried in one search; beyond it the search gives up (``undecided``)."""
 _COMPARE: dict[str, Callable[[Any, Any], bool]] = {
     "=": operator.eq, "==": operator.eq, "!=": operator.ne, ">": operator.gt,
     "<": operator.lt, ">=": operator.ge, "<=": operator.le}
@@ -111,6 +111,11 @@ class _Search:
         self.index = index
         self.params = dict(to_ground(model))
         self.links = {(r.subject, r.property, r.object) for r in scene.relations}
+        self.out_links: dict[str, list[tuple[str, str]]] = {}
+        self.in_links: dict[str, list[tuple[str, str]]] = {}
+        for r in scene.relations:
+            self.out_links.setdefault(r.subject, []).append((r.property, r.object))
+            self.in_links.setdefault(r.object, []).append((r.property, r.subject))
         self._below: dict[str, list[str]] = {}
 
     def candidates(self, element_type: str) -> list[str]:
@@ -128,28 +133,83 @@ class _Search:
                 return Grounding(name, False, reason=(
                     f"no element of class {self.params[key] or '?'} for parameter {key} in "
                     f"the scene"))
-        choices: list[Assignment] = [{}]
-        for condition in self.model.pre:
-            keys = [k for k in _keys(condition) if k in self.params]
-            if not keys or not self._judged(condition):
-                continue
-            extended = []
-            for choice in choices:
-                for full in _extend(choice, [k for k in keys if k not in choice], pools):
-                    if self.holds(condition, full):
-                        extended.append(full)
-                        if len(extended) > MAX_CHOICES:
-                            return Grounding(name, True, reason="too many choices to search",
-                                             undecided=True)
-            if not extended:
+        judged = [c for c in self.model.pre
+                  if self._judged(c) and any(k in self.params for k in _keys(c))]
+        found = self._first(judged, pools)
+        if found is None:
+            return Grounding(name, True, reason="too many choices to search", undecided=True)
+        if found:
+            chosen = dict(found[0])
+            for key, pool in pools.items():
+                chosen.setdefault(key, pool[0])
+            return Grounding(name, True, assignment=chosen)
+        for k in range(1, len(judged) + 1):  # the first prefix no choice satisfies
+            if self._first(judged[:k], pools) == []:
                 return Grounding(name, False, reason=(
-                    f"no choice of elements satisfies the pre-condition {describe(condition)}"
-                    ), blocking=condition)
-            choices = extended
-        chosen = dict(choices[0])
-        for key, pool in pools.items():
-            chosen.setdefault(key, pool[0])
-        return Grounding(name, True, assignment=chosen)
+                    "no choice of elements satisfies the pre-condition "
+                    f"{describe(judged[k - 1])}"), blocking=judged[k - 1])
+        return Grounding(name, True, reason="too many choices to search", undecided=True)
+
+    def _first(self, conditions: list[Condition], pools: dict[str, list[str]]
+               ) -> list[Assignment] | None:
+        """``[one assignment]`` satisfying every condition, ``[]`` when none does, None
+        when the search ran out of its budget (``MAX_CHOICES`` steps). Depth first, the
+        parameters in the order the conditions name them; a relation to a parameter already
+        chosen narrows the candidates to the elements it links (scenes are small, but a
+        product of every pool is not)."""
+        order = list(dict.fromkeys(k for c in conditions for k in _keys(c) if k in pools))
+        waiting = {k: [c for c in conditions if k in _keys(c)
+                       and all(o in order[:i + 1] for o in _keys(c))]
+                   for i, k in enumerate(order)}
+        budget = [MAX_CHOICES]
+
+        def search(i: int, choice: Assignment) -> Assignment | None:
+            if i == len(order):
+                return dict(choice)
+            key = order[i]
+            for element in self._narrowed(key, pools[key], conditions, choice):
+                budget[0] -= 1
+                if budget[0] < 0:
+                    raise _OutOfBudget
+                choice[key] = element
+                if all(self.holds(c, choice) for c in waiting[key]):
+                    found = search(i + 1, choice)
+                    if found is not None:
+                        return found
+                del choice[key]
+            return None
+
+        try:
+            found = search(0, {})
+        except _OutOfBudget:
+            return None
+        return [] if found is None else [found]
+
+    def _narrowed(self, key: str, pool: list[str], conditions: list[Condition],
+                  choice: Assignment) -> list[str]:
+        """``pool``, less what a wanted relation to an already chosen parameter excludes."""
+        for c in conditions:
+            desired = untyped(c.desired_state) if c.desired_state is not None else True
+            if c.kind != "relation" or desired is False:
+                continue
+            if c.object == key and c.subject in choice:
+                linked = self._linked(choice[c.subject], c.vocabulary or "", forward=True)
+            elif c.subject == key and c.object in choice:
+                linked = self._linked(choice[c.object], c.vocabulary or "", forward=False)
+            else:
+                continue
+            pool = [e for e in pool if e in linked]
+        return pool
+
+    def _linked(self, end: str, relation: str, forward: bool) -> set[str]:
+        wanted = self.index.expand(relation)
+        if wanted is None:
+            return set()
+        if wanted not in self._below:
+            self._below[wanted] = sorted(sub_properties(self.index, wanted))
+        below = set(self._below[wanted])
+        links = (self.out_links if forward else self.in_links).get(end, [])
+        return {other for p, other in links if p in below}
 
     def _judged(self, c: Condition) -> bool:
         """Conditions the world model decides from the scene (relation and property kinds,
@@ -207,12 +267,8 @@ def _keys(c: Condition) -> list[str]:
     return [k for k in (c.subject, c.object) if k is not None]
 
 
-def _extend(choice: Assignment, keys: list[str], pools: dict[str, list[str]]
-            ) -> list[Assignment]:
-    found = [dict(choice)]
-    for key in dict.fromkeys(keys):
-        found = [{**f, key: e} for f in found for e in pools[key]]
-    return found
+class _OutOfBudget(Exception):
+    """The search took more than ``MAX_CHOICES`` steps."""
 
 
 __all__ = ["Grounding", "can_start", "describe", "to_ground"]

@@ -269,3 +269,42 @@ def test_grounding_takes_a_model_and_judges_or_and_negated_conditions(index):
         "Part": CELL + "Part-7", "Where": CELL + "Shelf-2"}
     assert can_start(model(contain, nowhere), SAVED, index).reason.startswith(
         "no choice of elements satisfies the pre-condition 'NotIn'")
+
+
+def test_grounding_searches_a_large_scene_without_trying_every_product(tmp_path: Path):
+    """60 locations of 8 products each: four parameters have 60 * 480 * 60 * 480 joint
+    choices; the search follows the relations instead, so both answers come at once (a
+    product of the pools would run out of its budget and say ``undecided``)."""
+    lines = ["@prefix skiros: <http://rvmi.aau.dk/ontologies/skiros.owl#> .",
+             "@prefix xsd: <http://www.w3.org/2001/XMLSchema#> ."]
+    for i in range(60):
+        lines.append(f"skiros:Location-{i} a skiros:Location ; skiros:contain "
+                     + ", ".join(f"skiros:Product-{i}-{j}" for j in range(8)) + " .")
+        lines += [f'skiros:Product-{i}-{j} a skiros:Product ; skiros:Weight "{j}.0"^^xsd:float .'
+                  for j in range(8)]
+    path = tmp_path / "big.turtle"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    scene = read_scene(path)
+
+    def weight(key: str, op: str, value: float, label: str) -> Condition:
+        return Condition("property", label, "skiros:Weight", key, operator=op,
+                         value=("float", value), desired_state=("bool", True))
+
+    def contain(subject: str, obj: str, label: str) -> Condition:
+        return Condition("relation", label, "skiros:contain", subject, obj,
+                         desired_state=("bool", True))
+
+    params = tuple(Param(k, "Inferred", "Element", t) for k, t in (
+        ("A", "skiros:Location"), ("O", "skiros:Product"), ("B", "skiros:Location"),
+        ("P", "skiros:Product")))
+    pre = (contain("A", "O", "AO"), contain("B", "P", "BP"), weight("O", ">", 6.5, "Heavy"),
+           weight("P", "<", 0.5, "Light"), contain("A", "P", "AP"))
+    core = load_index(cache=False)
+    found = can_start(SkillModel("M", "skiros:M", params=params, pre=pre), scene, core)
+    assert found.ok and not found.undecided
+    assert found.assignment["O"].endswith("-7") and found.assignment["P"].endswith("-0")
+    blocked = can_start(SkillModel("M", "skiros:M", params=params,
+                                   pre=(*pre, weight("P", ">", 100.0, "TooHeavy"))), scene,
+                        core)
+    assert not blocked and not blocked.undecided and blocked.blocking is not None
+    assert blocked.blocking.label == "TooHeavy"
