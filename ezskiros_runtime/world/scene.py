@@ -22,10 +22,16 @@ from pathlib import Path
 from typing import Iterator
 
 RDF_TYPE = "http://www.w3.org/1999/02/22-rdf-syntax-ns#type"
+RDFS_LABEL = "http://www.w3.org/2000/01/rdf-schema#label"
 OWL = "http://www.w3.org/2002/07/owl#"
 XSD = "http://www.w3.org/2001/XMLSchema#"
 NOT_CLASSES = frozenset({OWL + "NamedIndividual", OWL + "Thing"})
 """Types every saved individual carries that say nothing about what it is."""
+SCHEMA = ("http://www.w3.org/2002/07/owl#", "http://www.w3.org/2000/01/rdf-schema#",
+          "http://www.w3.org/1999/02/22-rdf-syntax-ns#")
+"""Vocabulary about vocabulary: a subject typed with it (the ``owl:Ontology`` header, a
+class the scene declares) is no element of the world, and a predicate from it
+(``owl:imports``, ``rdfs:seeAlso``) no relation between elements."""
 
 _PREFIX = re.compile(r"^\s*(?:@prefix|PREFIX)\s+([\w.-]*):\s*<([^>]*)>", re.IGNORECASE)
 _QUOTED = re.compile(r'"((?:[^"\\]|\\.)*)"')
@@ -129,8 +135,10 @@ def read_scene(path: str | Path, text: str | None = None) -> Scene:
     blocks = _Blocks(text, scene.prefixes)
     triples = sorted(graph.triples((None, None, None)), key=lambda t: (str(t[0]), str(t[1]),
                                                                          str(t[2])))
+    schema = {str(s) for s, p, o in triples if str(p) == RDF_TYPE
+              and str(o).startswith(SCHEMA) and str(o) not in NOT_CLASSES}
     for s, p, o in triples:
-        if isinstance(s, BNode) or not isinstance(s, URIRef):
+        if isinstance(s, BNode) or not isinstance(s, URIRef) or str(s) in schema:
             continue
         subject = str(s)
         element = scene.elements.get(subject)
@@ -140,13 +148,14 @@ def read_scene(path: str | Path, text: str | None = None) -> Scene:
         if prop == RDF_TYPE and isinstance(o, URIRef):
             if str(o) not in NOT_CLASSES and str(o) not in element.types:
                 element.types.append(str(o))
+        elif prop == RDFS_LABEL:
+            element.label = str(o)
+        elif prop.startswith(SCHEMA):
+            continue
         elif isinstance(o, URIRef):
             scene.relations.append(Relation(subject, prop, str(o),
                                             blocks.line(subject, str(o), prop)))
         elif isinstance(o, Literal):
-            if prop.endswith("#label"):
-                element.label = str(o)
-                continue
             datatype = str(o.datatype) if o.datatype is not None else None
             line = blocks.line(subject, None, prop)
             with _quiet_rdflib():

@@ -308,3 +308,25 @@ def test_grounding_searches_a_large_scene_without_trying_every_product(tmp_path:
                         core)
     assert not blocked and not blocked.undecided and blocked.blocking is not None
     assert blocked.blocking.label == "TooHeavy"
+
+
+def test_an_ontology_header_and_classes_declared_in_a_scene_are_no_elements(tmp_path: Path,
+                                                                           index):
+    plain = SCENE.format(x="0.5", camera="cell:Kinect", relation="skiros:FrameId \"cam\"")
+    schema = ("@prefix owl: <http://www.w3.org/2002/07/owl#> .\n"
+              "@prefix rdfs: <http://www.w3.org/2000/01/rdf-schema#> .\n" + plain
+              + "\n<http://lab.example.org/scene> a owl:Ontology ;\n"
+                "    owl:imports <http://lab.example.org/ontologies/cell.owl> .\n\n"
+                "cell:Kinect a owl:Class ;\n    rdfs:subClassOf skiros:DepthCamera ;\n"
+                "    rdfs:label \"kinect\" .\n")
+    codes = []
+    for name, text in (("plain", plain), ("schema", schema)):
+        path = tmp_path / f"{name}.turtle"
+        path.write_text(text, encoding="utf-8")
+        scene = read_scene(path)
+        assert "http://lab.example.org/scene" not in scene.elements
+        assert CELL + "Kinect" not in scene.elements
+        codes.append(sorted(f.code for f in check_scene(scene, index)))
+    # the camera of an undeclared class, outside the tree: the header and the class add
+    # nothing, and a class the scene declares is still unknown to the ontology (info)
+    assert codes == [["EZ407", "EZ408"], ["EZ407", "EZ408"]]
