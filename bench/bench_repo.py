@@ -264,8 +264,8 @@ def commands_for(tree: Path, files: int, jobs: int, baseline: bool, verify_comma
     return found
 
 
-_REWRITE = re.compile(r"(\d+) files scanned, (\d+) skills found, (\d+) converted, (\d+) "
-                      r"skipped, (\d+) failed; (\d+) files")
+_REWRITE = re.compile(r"(\d+) files? scanned, (\d+) skills? found, (\d+) converted, (\d+) "
+                      r"skipped, (\d+) failed, \d+ unchanged; (\d+) files?")
 _VERIFY = re.compile(r"(\d+) files compared, (\d+) classes, (\d+) equivalent")
 _LIBCST = re.compile(r"Finished codemodding (\d+) files")
 

@@ -60,7 +60,7 @@ HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
 FILES, SKILL_SHARE, SEED = 2000, 0.1, 0
 MANIFEST = ".generated-repo.json"
-_REWRITE = re.compile(r"(\d+) files scanned, (\d+) skills found, (\d+) converted, "
+_REWRITE = re.compile(r"(\d+) files? scanned, (\d+) skills? found, (\d+) converted, "
                       r"(\d+) skipped, (\d+) failed")
 _VERIFY = re.compile(r"(\d+) files compared, (\d+) classes, (\d+) equivalent")
 

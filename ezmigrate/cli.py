@@ -1,9 +1,10 @@
 """The ``ezmigrate`` command line. It parses options and prints; decisions live elsewhere.
 
 Conventions of black and ruff: diffs and reports go to stdout only when asked, progress and
-the summary to stderr; exit 0 when nothing needs attention, 1 when something does (``--check``
-found changes, a skill was skipped or failed verification, a file could not be processed),
-2 for usage or internal errors.
+the summary to stderr; exit 0 when the run did its work (skills skipped with a reason
+included), 1 when something needs attention (``--check`` found changes, a verification
+failed, a file could not be processed; with ``--strict`` also a skipped skill), 2 for usage
+or internal errors.
 """
 
 from __future__ import annotations
@@ -188,6 +189,9 @@ def main() -> None:
 @click.option("--ignore-order", is_flag=True, help="Verification ignores declaration order.")
 @click.option("--ignore-labels", is_flag=True, help="Verification ignores condition labels.")
 @click.option("--color/--no-color", default=None, help="Colour diffs (default: on a terminal).")
+@click.option("--strict", is_flag=True,
+              help="Exit 1 also when a skill was skipped with a reason (default: only for "
+                   "--check with changes, failed verification, or unprocessable files).")
 @click.option("--package-xml/--no-package-xml", default=True, show_default=True,
               help="Declare the runtime (<exec_depend>) in the package.xml of each ROS "
                    "package whose files were migrated.")
@@ -195,8 +199,8 @@ def main() -> None:
 def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | None,
             exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
             output_dir: Path | None, verify: bool, timeout: float | None, python: str | None,
-            ignore_order: bool, ignore_labels: bool, color: bool | None, package_xml: bool,
-            debug: bool) -> None:
+            ignore_order: bool, ignore_labels: bool, color: bool | None, strict: bool,
+            package_xml: bool, debug: bool) -> None:
     """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin).
 
     Temporary files (.NAME.XXXXXXXX.ezmigrate) that a killed run left beside PATHS are
@@ -216,7 +220,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         if not (dry_run or check):  # whatever happened, stdout gets a whole file
             new = result.new_source
             sys.stdout.buffer.write(new if isinstance(new, bytes) else data)
-        _finish([result], report, not (dry_run or check), check, [],
+        _finish([result], report, not (dry_run or check), check, strict, [],
                  MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used))
     from .session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
 
@@ -251,7 +255,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
             options.pool(ontology_files))
         scenes = _scene_section(paths, options.exclude, index)
-    _finish([m.result for m in outcome.migrated], report, request.writes, check,
+    _finish([m.result for m in outcome.migrated], report, request.writes, check, strict,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
                                              compounds=compounds, verifier=verifier,
                                              scenes=scenes, notes=declared))
@@ -321,14 +325,14 @@ def _print_result(shown: str, relative: str, original: bytes, result: FileResult
 
 
 def _finish(results: list[FileResult], report: Path | None, writes: bool, check: bool,
-            refused: list[str], options: MarkdownOptions) -> NoReturn:
+            strict: bool, refused: list[str], options: MarkdownOptions) -> NoReturn:
     """The report, the summary line, and the exit code every ``rewrite`` ends with."""
     if report is not None:
         _write_report(report, results, options)
     summary = Summary.of(results)
     click.echo(f"ezmigrate: {summary.line(dry=not writes)}", err=True)
     would_change = summary.changed_files > 0 and check
-    sys.exit(EXIT_ATTENTION if would_change or summary.needs_attention() or refused
+    sys.exit(EXIT_ATTENTION if would_change or summary.needs_attention(strict) or refused
              else EXIT_OK)
 
 

@@ -40,15 +40,24 @@ class Summary:
 
     def line(self, *, dry: bool) -> str:
         change = "would change" if dry else "changed"
-        text = (f"{self.files} files scanned, {self.skills} skills found, {self.converted} "
-                f"converted, {self.skipped} skipped, {self.failed} failed; "
-                f"{self.changed_files} files {change}")
+        text = (f"{counted(self.files, 'file')} scanned, {counted(self.skills, 'skill')} "
+                f"found, {self.converted} converted, {self.skipped} skipped, {self.failed} "
+                f"failed, {self.unchanged} unchanged; {counted(self.changed_files, 'file')} "
+                f"{change}")
         if self.file_errors:
-            text += f"; {self.file_errors} files could not be processed"
+            text += f"; {counted(self.file_errors, 'file')} could not be processed"
         return text
 
-    def needs_attention(self) -> bool:
-        return bool(self.skipped or self.failed or self.file_errors)
+    def needs_attention(self, strict: bool = False) -> bool:
+        """Whether ``rewrite`` exits 1, as black does: a failed verification or a file that
+        could not be processed. A skill skipped with a reason is the run doing its work
+        (the reason is printed and reported), so it counts only with ``--strict``."""
+        return bool(self.failed or self.file_errors or (strict and self.skipped))
+
+
+def counted(number: int, noun: str) -> str:
+    """``1 file``, ``2 files``: the summary reads as English."""
+    return f"{number} {noun}" + ("" if number == 1 else "s")
 
 
 @dataclass

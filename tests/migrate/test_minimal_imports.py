@@ -192,7 +192,7 @@ def test_a_star_imported_helper_re_exporting_the_legacy_base_still_verifies(tmp_
     run = subprocess.run([sys.executable, "-m", "ezmigrate", "rewrite", str(package)],
                          capture_output=True, text=True, check=False, timeout=600)
     assert run.returncode == 0, run.stderr
-    assert "1 skills found, 1 converted, 0 skipped, 0 failed" in run.stderr, run.stderr
+    assert "1 skill found, 1 converted, 0 skipped, 0 failed" in run.stderr, run.stderr
     text = (package / "pick.py").read_text(encoding="utf-8")
     assert text.index("from .helpers import *") < text.index("from ezskiros_runtime import")
     assert "class Pick(SkillDescription):" in text and "def description(self," in text

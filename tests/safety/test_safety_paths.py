@@ -70,7 +70,7 @@ def test_a_symlink_inside_the_root_is_written_through_once_and_stays_a_symlink(l
     assert os.readlink(root / "sub" / "alias.py") == "../descriptions.py"
     assert (root / "descriptions.py").read_bytes() == expected_migration(
         DESCRIPTIONS.read_bytes())
-    assert "1 files changed" in run.stderr
+    assert "1 file changed" in run.stderr
 
 
 def test_directory_symlink_loops_end(layout):

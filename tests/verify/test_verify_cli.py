@@ -266,7 +266,7 @@ def test_rewrite_skips_skills_the_runtime_would_refuse_and_leaves_the_file(tmp_p
     folder = tree(tmp_path / "skills", {"type_errors.py": REJECTED})
     before = (folder / "type_errors.py").read_bytes()
     run = cli("rewrite", folder, "--report", tmp_path / "r.json", *PAPER_AXIOMS)
-    assert run.returncode == 1, run.stderr
+    assert run.returncode == 0, run.stderr
     assert (folder / "type_errors.py").read_bytes() == before
     skills = {s["class"]: s for s in read_json(tmp_path / "r.json")["skills"]}
     assert set(skills) == {"HandOver", "CheckTool", "MountCamera"}
@@ -307,7 +307,7 @@ class FineChild(HandOver):
     original = tree(tmp_path / "original", {"type_errors.py": source})
     folder = tree(tmp_path / "skills", {"type_errors.py": source})
     run = cli("rewrite", folder, "--report", tmp_path / "r.json", *PAPER_AXIOMS)
-    assert run.returncode == 1, run.stderr  # skipped skills need attention
+    assert run.returncode == 0, run.stderr  # skipped with a reason: the run did its work
     statuses = {s["class"]: s["status"] for s in read_json(tmp_path / "r.json")["skills"]}
     assert statuses == {"HandOver": "skipped", "CheckTool": "skipped",
                         "MountCamera": "skipped", "FineOne": "converted",

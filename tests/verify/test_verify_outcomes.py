@@ -44,7 +44,7 @@ def _hard_violation(folder: Path, legacy: bool) -> Path:
 def test_rewrite_skips_a_skill_the_runtime_rejects_with_the_finding_and_its_line(tmp_path):
     folder = _hard_violation(tmp_path / "skills", legacy=True)
     run = cli("rewrite", folder, "--report", tmp_path / "r.json", *PAPER_AXIOMS)
-    assert run.returncode == 1, run.stderr
+    assert run.returncode == 0, run.stderr
     place = skills_of(read_json(tmp_path / "r.json"), VIOLATION)["PlaceOnPose"]
     assert (place["status"], place["equivalent"]) == ("skipped", None)
     assert place["reason"] == (

@@ -32,7 +32,8 @@ def reports(tmp_path_factory):
             report = tmp / f"{name}.{suffix}"
             run = cli("rewrite", folder, "--dry-run", *extra, "--report", report,
                       *PAPER_AXIOMS)
-            assert run.returncode == 1, run.stderr  # skips and a failure need attention
+            # a failed verification needs attention; skips with a reason alone do not
+            assert run.returncode == (1 if name == "verified" else 0), run.stderr
             out[f"{name}.{suffix}"] = report.read_text(encoding="utf-8")
     return out
 
