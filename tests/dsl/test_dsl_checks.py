@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 from dsl_support import PAPER, line_of, paper  # noqa: F401 - paper is a fixture
+from shared_data import skiros2
 
 from ezskiros_runtime import (
     ELEMENT,
@@ -246,7 +247,7 @@ def test_the_automatic_robot_may_be_a_device(tmp_path: Path) -> None:
     """The legacy pattern the rule is for: the automatic ``Robot: INFERRED[sumo.Agent]``
     with ``cora:robotPart`` (domain ``sumo:Device``) may hold, since ``cora:Robot`` is both;
     the warning names the file, line, parameter and a class to narrow it to."""
-    use_ontology([Path("/work/shared/ontology/skiros2")])
+    use_ontology([skiros2()])
 
     class Skill(SkillDescription):
         def description(self, Robot: INFERRED[ELEMENT("sumo:Agent")],

@@ -6,17 +6,13 @@ class or property missing from skiros-core.ttl fails here.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 import rdflib
 from rdflib.namespace import OWL, RDF, RDFS
+from shared_data import REPO, skiros2
 
 from ezskiros_runtime.ontology.expressions import Named
 from ezskiros_runtime.ontology.index import OntologyIndex, bundled_ontology_path, load_index
-
-REPO = Path(__file__).resolve().parents[2]
-SKIROS2 = REPO / ".." / "shared" / "ontology" / "skiros2"
 
 SKIROS = "http://rvmi.aau.dk/ontologies/skiros.owl#"
 SUMO = "http://www.inf.ufrgs.br/phi-group/ontologies/sumo.owl#"
@@ -31,9 +27,8 @@ def bundled() -> OntologyIndex:
 
 @pytest.fixture(scope="module")
 def public() -> rdflib.Graph:
-    assert SKIROS2.is_dir(), f"the shared SkiROS2 ontology is missing at {SKIROS2}"
     graph = rdflib.Graph()
-    for path in sorted(SKIROS2.rglob("*.owl")):
+    for path in sorted(skiros2().rglob("*.owl")):
         graph.parse(str(path), format="xml")
     return graph
 

@@ -11,6 +11,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from shared_data import skiros2
 
 from ezskiros_runtime.ontology.index import load_index
 
@@ -20,7 +21,6 @@ index_cache = importlib.import_module("ezskiros_runtime.ontology.cache")
 
 REPO = Path(__file__).resolve().parents[2]
 FIXTURES = REPO / "fixtures" / "ontology"
-SKIROS2 = REPO / ".." / "shared" / "ontology" / "skiros2"
 WC = "http://example.org/ontologies/workcell.owl#"
 
 CHILD = """
@@ -173,9 +173,9 @@ def test_default_cache_dir_is_used(
 
 
 def test_real_ontology_round_trips_through_the_cache(cache_dir: Path) -> None:
-    cold = load_index([SKIROS2], cache_dir=cache_dir)
+    cold = load_index([skiros2()], cache_dir=cache_dir)
     hits = index_cache.stats.hits
-    warm = load_index([SKIROS2], cache_dir=cache_dir)
+    warm = load_index([skiros2()], cache_dir=cache_dir)
     assert index_cache.stats.hits == hits + 1
     assert warm.properties == cold.properties
     assert warm.prefixes == cold.prefixes

@@ -10,21 +10,15 @@ must never reject a skill that SkiROS2 loads.
 
 from __future__ import annotations
 
-from pathlib import Path
-
-import pytest
 from rdflib import OWL, RDF, RDFS, BNode, Graph, URIRef
+from shared_data import skiros2
 
 from ezskiros_runtime.ontology.index import bundled_ontology_path
 
-REAL_CORE = Path(__file__).resolve().parents[3] / "shared" / "ontology" / "skiros2"
-
 
 def _real() -> Graph:
-    if not REAL_CORE.is_dir():
-        pytest.skip(f"the real SkiROS2 core files are not at {REAL_CORE}")
     graph = Graph()
-    for path in sorted(REAL_CORE.rglob("*.owl")):
+    for path in sorted(skiros2().rglob("*.owl")):
         graph.parse(str(path), format="xml")
     return graph
 

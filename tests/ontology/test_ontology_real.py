@@ -11,12 +11,10 @@ from pathlib import Path
 import pytest
 import rdflib
 from rdflib.namespace import RDFS
+from shared_data import skiros2
 
 from ezskiros_runtime.ontology.expressions import ComplementOf, IntersectionOf, Named
 from ezskiros_runtime.ontology.index import OntologyIndex, load_index
-
-REPO = Path(__file__).resolve().parents[2]
-SKIROS2 = REPO / ".." / "shared" / "ontology" / "skiros2"
 
 SKIROS = "http://rvmi.aau.dk/ontologies/skiros.owl#"
 SUMO = "http://www.inf.ufrgs.br/phi-group/ontologies/sumo.owl#"
@@ -28,14 +26,13 @@ XSD = "http://www.w3.org/2001/XMLSchema#"
 
 @pytest.fixture(scope="module")
 def real() -> OntologyIndex:
-    assert SKIROS2.is_dir(), f"the shared SkiROS2 ontology is missing at {SKIROS2}"
-    return load_index([SKIROS2], cache=False)
+    return load_index([skiros2()], cache=False)
 
 
 @pytest.fixture(scope="module")
 def raw_graph() -> rdflib.Graph:
     graph = rdflib.Graph()
-    for path in sorted(SKIROS2.rglob("*.owl")):
+    for path in sorted(skiros2().rglob("*.owl")):
         graph.parse(str(path), format="xml")
     return graph
 

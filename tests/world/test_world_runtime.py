@@ -8,6 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from shared_data import skiros2
 
 from ezskiros_runtime.legacy.abstract_skill import SkillDescription
 from ezskiros_runtime.legacy.params import ParamTypes
@@ -31,15 +32,12 @@ REPO = ROOT / "fixtures" / "world_repo"
 SCENES = REPO / "owl" / "scenes"
 SAVED = SCENES / "cell.turtle"
 EDITED = SCENES / "cell_two_stations.turtle"
-SKIROS2 = ROOT.parent / "shared" / "ontology" / "skiros2"
-if not SKIROS2.is_dir():  # the shared data sits beside the checkout
-    SKIROS2 = Path("/work/shared/ontology/skiros2")
 
 
 @pytest.fixture(scope="module")
 def index():
     """The real SkiROS2 core files and the lab's own ontology, as the world model loads them."""
-    return load_index([SKIROS2, REPO / "owl"], cache=False)
+    return load_index([skiros2(), REPO / "owl"], cache=False)
 
 
 def _codes(found):
