@@ -51,6 +51,9 @@ class CheckOutcome:
     skills: int = 0
     diagnostics: list[Diagnostic] = field(default_factory=list)
     sources: dict[str, str] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+    """What discovery passed over and why (vendored SkiROS2 code, symlink loops), for
+    stderr."""
 
 
 def _text(data: bytes) -> str:
@@ -137,15 +140,17 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               exclude: tuple[str, ...] = (),
               progress: Callable[[str], None] | None = None,
               skill_libraries: tuple[Path, ...] = (), compounds: bool = True,
-              world: WorldRun | None = None) -> CheckOutcome:
+              world: WorldRun | None = None,
+              include_vendored: bool = False) -> CheckOutcome:
     """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
     the compound skills' trees against every description found (unless ``compounds`` is
     False: no EZ3 code is selected, so their reading and tracing would be thrown away),
     then the world model (EZ4xx: ``world``, or the defaults and the scenes under ``paths``;
     scenes named in ``paths`` are scenes, not Python files)."""
     world = world or WorldRun(scenes=tuple(scene_files(paths, exclude)))
-    candidates, _ = discover([p for p in paths if p.suffix != SCENE_SUFFIX], exclude)
-    outcome = CheckOutcome(files=len(candidates))
+    candidates, notes = discover([p for p in paths if p.suffix != SCENE_SUFFIX], exclude,
+                                 include_vendored=include_vendored)
+    outcome = CheckOutcome(files=len(candidates), notes=notes)
     if progress is not None:
         progress(f"checking {len(candidates)} files")
     trees = None

@@ -173,6 +173,9 @@ def main() -> None:
               callback=lambda _ctx, _param, value: _report_path(value),
               help="Write a report: Markdown for .md, JSON for .json (- for JSON on stdout).")
 @click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
+@click.option("--include-vendored", is_flag=True,
+              help="Also go into vendored copies of SkiROS2's own packages (skiros2_common, "
+                   "skiros2_std_skills, ...), which are skipped with a note by default.")
 @click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
               help="Ontology file or folder (repeatable).")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
@@ -200,7 +203,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
             output_dir: Path | None, verify: bool, timeout: float | None, python: str | None,
             ignore_order: bool, ignore_labels: bool, color: bool | None, strict: bool,
-            package_xml: bool, debug: bool) -> None:
+            package_xml: bool, include_vendored: bool, debug: bool) -> None:
     """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin).
 
     Temporary files (.NAME.XXXXXXXX.ezmigrate) that a killed run left beside PATHS are
@@ -234,7 +237,8 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         paths=list(paths), dry_run=dry_run, check=check, exclude=options.exclude,
         jobs=options.jobs, output_dir=output_dir, verify=verify, timeout=options.timeout,
         python=python, ignore_order=ignore_order, ignore_labels=ignore_labels,
-        ontology=ontology_files, project=options.project, target=robot.version)
+        ontology=ontology_files, project=options.project, target=robot.version,
+        include_vendored=include_vendored)
     outcome = run_rewrite(request, index)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
@@ -414,6 +418,10 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
                                                      "junit"]), default="text",
               show_default=True, help="How findings are written to stdout.")
 @click.option("--statistics", is_flag=True, help="Print the count of findings per code.")
+@click.option("--fix", is_flag=True,
+              help="Apply the fixes that are safe and explicit (EZ101), then report the rest.")
+@click.option("--diff", "show_diff", is_flag=True,
+              help="Print the diff --fix would apply and write nothing (exit 1 if any).")
 @click.option("--exit-zero", is_flag=True, help="Exit 0 even when errors were found.")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
 @click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
@@ -421,6 +429,9 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
               help="Load files with this interpreter when verifying (default: this one, and "
                    "for syntax newer than it the newest python3.X on PATH that compiles it).")
 @click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
+@click.option("--include-vendored", is_flag=True,
+              help="Also go into vendored copies of SkiROS2's own packages (skiros2_common, "
+                   "skiros2_std_skills, ...), which are skipped with a note by default.")
 @click.option("--quiet", "-q", is_flag=True, help="Only errors; no summary.")
 @click.option("--scene", type=click.Path(path_type=Path, exists=True, dir_okay=False),
               help="A world-model scene (*.turtle): say which skills cannot start from it "
@@ -429,8 +440,9 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str, ...],
           ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
           statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
-          python: str | None, exclude: tuple[str, ...], quiet: bool, scene: Path | None,
-          debug: bool) -> None:
+          python: str | None, exclude: tuple[str, ...], include_vendored: bool, quiet: bool,
+          scene: Path | None, debug: bool, fix: bool = False,
+          show_diff: bool = False) -> None:
     """Lint SkiROS2 and EzSkiROS descriptions under PATHS (codes: docs/rules.md).
 
     Suppress a finding on its line with `# ezskiros: ignore[EZ209]` (or `ignore[EZ209,EZ201]`).
@@ -459,8 +471,18 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     outcome = run_check(list(paths), index, pool, options.exclude, progress,
                         options.skill_libraries,
                         compounds=any(c.startswith("EZ3") for c in selection.codes()),
-                        world=_world_run(paths, options.exclude, scene))
+                        world=_world_run(paths, options.exclude, scene),
+                        include_vendored=include_vendored)
+    for note in outcome.notes:
+        click.echo(f"ezmigrate: {note}", err=True)
     found = apply(outcome.diagnostics, outcome.sources, selection)
+    if fix or show_diff:
+        from .fixes import fix_findings
+
+        found, fixable = fix_findings(found, paths, write=fix and not show_diff,
+                                      colour_diff=sys.stdout.isatty())
+        if show_diff:
+            sys.exit(EXIT_ATTENTION if fixable else EXIT_OK)
     shown = [d for d in found if d.severity == "error"] if quiet else found
     click.echo(count(shown) if statistics else FORMATS[output_format](shown), nl=False)
     errors = sum(1 for d in found if d.severity == "error")

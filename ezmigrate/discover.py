@@ -3,6 +3,13 @@
 Conventions of black and ruff: excludes apply to explicitly named files too (pre-commit
 passes file names), ``.gitignore`` is respected inside git checkouts, and symlinks are
 followed only while they stay inside the given roots (a loop or an escape ends there).
+
+A vendored copy of SkiROS2's own Python (the framework's packages, its standard skill
+libraries) is not the lab's code: migrating or linting it would rewrite upstream files the
+lab does not own and bury its findings in theirs. A folder named like an upstream package,
+or whose ``package.xml`` names one, is passed over with one note, unless it (or a path in
+it) is named on the command line, or ``include_vendored`` is set (``--include-vendored``);
+the rule is the one the ontology discovery applies to vendored core ``.owl`` files.
 """
 
 from __future__ import annotations
@@ -10,12 +17,20 @@ from __future__ import annotations
 import errno
 import fnmatch
 import os
+import re
 import subprocess
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 from .writing import is_temporary_name
+
+UPSTREAM_PACKAGES = frozenset({
+    "skiros2", "skiros2_common", "skiros2_skill", "skiros2_world_model", "skiros2_task",
+    "skiros2_gui", "skiros2_msgs", "skiros2_resource", "skiros2_std_skills",
+    "skiros2_std_lib", "skiros2_test_lib", "skiros2_template_lib"})
+"""SkiROS2's own ROS packages (framework and standard libraries): vendored, never ours."""
+_PACKAGE_NAME = re.compile(rb"<name>\s*([A-Za-z0-9_]+)\s*</name>")
 
 ALWAYS_EXCLUDED = frozenset({".git", ".hg", ".svn", "__pycache__", ".venv", "venv", ".tox",
                              ".mypy_cache", ".ruff_cache", ".pytest_cache", "node_modules",
@@ -82,6 +97,20 @@ def _spellings(path: Path, project: Path | None, named: bool) -> set[str]:
     return names
 
 
+def vendored_package(folder: Path) -> str | None:
+    """The upstream SkiROS2 package ``folder`` is a copy of (by its name, or the name its
+    ``package.xml`` gives), or None."""
+    if folder.name in UPSTREAM_PACKAGES:
+        return folder.name
+    try:
+        data = (folder / "package.xml").read_bytes()
+    except OSError:
+        return None
+    match = _PACKAGE_NAME.search(data)
+    name = match.group(1).decode() if match else None
+    return name if name in UPSTREAM_PACKAGES else None
+
+
 def _inside(real: str, roots: Iterable[str]) -> bool:
     """Whether the resolved path ``real`` is one of the resolved ``roots`` or below one."""
     return any(real == r or real.startswith(os.path.join(r, "")) for r in roots)
@@ -90,13 +119,15 @@ def _inside(real: str, roots: Iterable[str]) -> bool:
 def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
              respect_gitignore: bool = True,
              stale: list[Path] | None = None,
-             project: Path | None = None) -> tuple[list[Candidate], list[str]]:
+             project: Path | None = None,
+             include_vendored: bool = False) -> tuple[list[Candidate], list[str]]:
     """All candidate files, sorted and unique, plus messages about what was passed over.
 
     ``stale`` (when given) collects temporary files of ours (``.NAME.XXXXXXXX.ezmigrate``)
     found beside the candidates: only a SIGKILLed run leaves them. Discovery only lists
     them; ``session.run_rewrite`` decides whether to remove them (only when it writes).
     ``project``: the folder excludes are also matched relative to (see ``_spellings``).
+    ``include_vendored``: walk into vendored SkiROS2 packages too (see the module doc).
 
     Each file's real path (symlinks resolved) is worked out once, from its folder's real
     path, which is resolved once per folder: a tree of 20,000 files costs one ``stat`` per
@@ -116,7 +147,10 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
                 if stale is not None:
                     stale.extend(_temporaries_of(given))
             continue
-        for file, real in _walk(given, real_roots, notes, stale):
+        named = given.resolve()  # a path in a vendored package, named: include all of it
+        inside = any(vendored_package(f) for f in (named, *named.parents))
+        vendored = None if include_vendored or inside else _note_vendored(notes)
+        for file, real in _walk(given, real_roots, notes, stale, vendored):
             candidate = Candidate(file, root)
             if exclude and any(_excluded(name, exclude) for name in
                                {candidate.relative, *_spellings(file, project, named=False)}):
@@ -139,10 +173,24 @@ def _temporaries_of(file: Path) -> list[Path]:
         return []
 
 
+def _note_vendored(notes: list[str]) -> Callable[[Path], bool]:
+    """Whether to pass over a folder below a given path: a vendored SkiROS2 package, said
+    once in ``notes``."""
+    def skip(folder: Path) -> bool:
+        package = vendored_package(folder)
+        if package is not None:
+            notes.append(f"{folder}: a vendored copy of SkiROS2's {package}, not the lab's "
+                         "code: skipped (name it, or pass --include-vendored, to include it)")
+        return package is not None
+    return skip
+
+
 def _walk(top: Path, roots: list[str], notes: list[str],
-          stale: list[Path] | None = None) -> Iterator[tuple[Path, str]]:
+          stale: list[Path] | None = None,
+          vendored: Callable[[Path], bool] | None = None) -> Iterator[tuple[Path, str]]:
     """``.py`` files under ``top`` with their real paths (depth first, names sorted), and
-    our temporary files into ``stale`` when it is given."""
+    our temporary files into ``stale`` when it is given; folders ``vendored`` says are
+    SkiROS2's own are not entered."""
     seen: set[str] = set()
     stack = [top]
     while stack:
@@ -178,7 +226,7 @@ def _walk(top: Path, roots: list[str], notes: list[str],
                 reason = "symlink loop" if error.errno == errno.ELOOP else error.strerror
                 notes.append(f"{Path(entry.path)}: {reason}, skipped")
                 continue
-            if is_dir:
+            if is_dir and not (vendored is not None and vendored(Path(entry.path))):
                 stack.append(Path(entry.path))
             elif is_file:
                 yield Path(entry.path), target

@@ -52,6 +52,8 @@ class RewriteOptions:
     """The folder of the ``pyproject.toml`` in use: excludes also match relative to it."""
     target: tuple[int, int] | None = None
     """The Python the migrated code must run on (``ezmigrate.target``; None: the default)."""
+    include_vendored: bool = False
+    """Go into vendored copies of SkiROS2's own packages too (``discover``)."""
 
     @property
     def writes(self) -> bool:
@@ -87,6 +89,7 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     """
     stale: list[Path] = []
     candidates, notes = discover(options.paths, options.exclude, stale=stale,
+                                 include_vendored=options.include_vendored,
                                  project=options.project)
     notes += _stale_notes(stale, options.writes)
     holdpoint.reach("discovered")
