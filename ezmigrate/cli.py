@@ -192,6 +192,9 @@ def main() -> None:
 @click.option("--ignore-order", is_flag=True, help="Verification ignores declaration order.")
 @click.option("--ignore-labels", is_flag=True, help="Verification ignores condition labels.")
 @click.option("--color/--no-color", default=None, help="Colour diffs (default: on a terminal).")
+@click.option("--stdin-filename", type=click.Path(path_type=Path, dir_okay=False),
+              help="With PATH '-': the file stdin stands for (as ruff's flag): its project's "
+                   "configuration, ontology and robot apply, and messages name it.")
 @click.option("--strict", is_flag=True,
               help="Exit 1 also when a skill was skipped with a reason (default: only for "
                    "--check with changes, failed verification, or unprocessable files).")
@@ -203,23 +206,27 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
             output_dir: Path | None, verify: bool, timeout: float | None, python: str | None,
             ignore_order: bool, ignore_labels: bool, color: bool | None, strict: bool,
-            package_xml: bool, include_vendored: bool, debug: bool) -> None:
+            package_xml: bool, include_vendored: bool, debug: bool,
+            stdin_filename: Path | None = None) -> None:
     """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin).
 
     Temporary files (.NAME.XXXXXXXX.ezmigrate) that a killed run left beside PATHS are
     listed; a run that writes removes them (they never hold the only copy of anything).
     """
     reads_stdin = [str(p) for p in paths] == ["-"]
-    start = Path.cwd() if reads_stdin else paths[0]  # stdin belongs to the current project
+    start = (stdin_filename or Path.cwd()) if reads_stdin else paths[0]
     options = _options(start, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
                                           python=python))
     if reads_stdin:
-        from .stdin import rewrite_stdin
+        from .stdin import rewrite_stdin, stdin_roots
 
-        index, ontology_files, used = _load_index(ontology, start, [start], options)
+        index, ontology_files, used = _load_index(ontology, start, stdin_roots(stdin_filename),
+                                                  options)
         data, result = rewrite_stdin(index, ontology_files, options, verify=verify,
-                                     ignore_order=ignore_order, ignore_labels=ignore_labels)
-        _print_result("-", "-", data, result, dry_run, check, color, debug)
+                                     ignore_order=ignore_order, ignore_labels=ignore_labels,
+                                     filename=stdin_filename)
+        shown = str(stdin_filename) if stdin_filename else "-"
+        _print_result(shown, shown, data, result, dry_run, check, color, debug)
         if not (dry_run or check):  # whatever happened, stdout gets a whole file
             new = result.new_source
             sys.stdout.buffer.write(new if isinstance(new, bytes) else data)

@@ -17,6 +17,8 @@ from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from ezskiros_runtime.ontology.discovery import enclosing_project
+
 from .results import FileResult
 
 if TYPE_CHECKING:
@@ -26,9 +28,20 @@ NAME = "stdin_module.py"
 """What the one file of the project is called on disk while it is migrated and loaded."""
 
 
+def stdin_roots(filename: Path | None) -> list[Path]:
+    """Where ontology discovery may look for stdin's project: the folder of
+    ``--stdin-filename``; else the working directory, but only inside a git checkout or a
+    ROS package. An editor started in a home folder must not have every ``owl/`` folder
+    below it loaded (another project's broken file once aborted such a run)."""
+    if filename is not None:
+        return [filename.parent if filename.parent.is_dir() else Path.cwd()]
+    cwd = Path.cwd()
+    return [cwd] if enclosing_project(cwd) is not None else []
+
+
 def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, verify: bool,
-                  ignore_order: bool = False,
-                  ignore_labels: bool = False) -> tuple[bytes, FileResult]:
+                  ignore_order: bool = False, ignore_labels: bool = False,
+                  filename: Path | None = None) -> tuple[bytes, FileResult]:
     """Stdin's bytes and their result; ``new_source`` is set only when it verified (or
     verification is off). The command line prints and exits exactly as for a file.
 
@@ -44,7 +57,7 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, ve
     from .verify.verdicts import Comparison
 
     data = sys.stdin.buffer.read()
-    robot = target_for([Path.cwd()], options.target_version)  # stdin is the cwd's project's
+    robot = target_for([filename or Path.cwd()], options.target_version)
     pool = replace(options.pool(ontology, workers=min(2, options.jobs)),
                    python=robot_python(robot, options.python, verify))
     checks = Checks(pool, Comparison(ignore_order, ignore_labels)) if verify else None
@@ -52,4 +65,4 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, ve
         path = Path(folder) / NAME
         path.write_bytes(data)
         [item] = settle([Candidate(path, path.parent)], index, 1, checks, target=robot.version)
-    return data, replace(item.result, path="-")
+    return data, replace(item.result, path=str(filename) if filename else "-")

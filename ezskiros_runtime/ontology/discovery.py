@@ -50,16 +50,22 @@ def repository_root(paths: Sequence[Path]) -> Path | None:
     workspace often has no ``.git``, but its packages keep their ``package.xml``."""
     if not paths:
         return None
-    first = Path(paths[0]).resolve()
+    enclosing = enclosing_project(Path(paths[0]))
+    if enclosing is not None:
+        return enclosing
+    folders = [p if p.is_dir() else p.parent for p in (Path(x).resolve() for x in paths)]
+    return Path(os.path.commonpath([str(f) for f in folders]))
+
+
+def enclosing_project(path: Path) -> Path | None:
+    """The git top level at or above ``path``, else its ROS package; None when ``path`` is
+    in neither (a home folder, say: then nothing around it is the project's to search)."""
+    first = path.resolve()
     folder = first if first.is_dir() else first.parent
     for candidate in (folder, *folder.parents):
         if (candidate / ".git").exists():
             return candidate
-    package = package_root(folder)
-    if package is not None:
-        return package
-    folders = [p if p.is_dir() else p.parent for p in (Path(x).resolve() for x in paths)]
-    return Path(os.path.commonpath([str(f) for f in folders]))
+    return package_root(folder)
 
 
 def package_root(path: Path) -> Path | None:
