@@ -4,7 +4,8 @@ Layout follows the paper (one parameter per line, aligned under the opening pare
 The method is assembled from libcst nodes around the original ones: the original ``def``
 keeps its leading comments and header, kept statements and the docstring are the original
 nodes, and the comments of each legacy statement move with what replaces it (onto the
-parameter in the signature, or onto the ``+=`` line).
+parameter in the signature, or onto the ``+=`` line). Text that SkiROS2 drops (a string in
+``addParam``'s options slot) becomes a comment on its parameter's line (``kept_text``).
 """
 
 from __future__ import annotations
@@ -59,7 +60,9 @@ def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
     The caller replays the result to prove the model is unchanged.
     """
     params: list[ParamOp] = []
-    for op in skill.params():
+    for declared_op in skill.params():
+        op = replace(declared_op, comments=kept_text(declared_op.comments,
+                                                     declared_op.options_text))
         earlier = next((i for i, p in enumerate(params) if p.key == op.key), None)
         between = params[earlier + 1:] if earlier is not None else []
         if earlier is not None and not _expands_options(params[earlier]) \
@@ -74,6 +77,21 @@ def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
     if ROBOT in used and ROBOT not in declared:
         params = [*params, ParamOp(ROBOT, ElementValue("sumo:Agent"), "Inferred", [], None, 0)]
     return params
+
+
+def kept_text(comments: Comments, text: str | None) -> Comments:
+    """``comments`` with the text of the options slot added as the parameter line's comment.
+
+    Why: SkiROS2 drops a string passed there (the description stays empty), so the signature
+    must not declare it either, but it is the author's words: losing them in a migration is
+    a surprise, a comment keeps them with the meaning unchanged. A comment already at the end
+    of the line follows it; text that cannot sit on one comment line is shown as a literal.
+    """
+    if not text or not text.strip():
+        return comments
+    shown = text.strip() if text.isprintable() else repr(text)
+    after = f"  {comments.trailing.value}" if comments.trailing is not None else ""
+    return replace(comments, trailing=cst.Comment(f"# {shown}{after}"))
 
 
 def _merged(first: Comments, second: Comments) -> Comments:

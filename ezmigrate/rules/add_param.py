@@ -4,7 +4,8 @@ Legacy (legacy-skiros2-api.md §3, §8)           EzSkiROS (docs/dsl.md)
 ``addParam("O", Element("skiros:P"), Required)``  ``O: skiros.P``
 ``addParam("S", 0.5, ParamTypes.Optional)``      ``S: OPTIONAL[float] = 0.5``
 ``addParam("S", 0.5, 1, [], "m/s")``             ``S: OPTIONAL[float, DESC("m/s")] = 0.5``
-``addParam("S", float, 0, "m/s")``               ``S: float``  (quirk: "m/s" lands in options)
+``addParam("S", float, 0, "m/s")``               ``S: float,  # m/s``  (quirk: "m/s" lands in
+                                                 options; the text stays, as a comment)
 ``addParam("C", Element(":Cam"), 2, [Lock])``    ``C: INFERRED[ELEMENT(":Cam"), Lock]``
 ``addParam("On/Off", True, Required)``           ``On_Off: REQUIRED[bool, KEY("On/Off")] = True``
 """
@@ -153,8 +154,9 @@ def param_findings(op: ParamOp, skill: ExtractedSkill) -> None:
     if op.options_text is not None:
         skill.finding("description-in-options", op.line,
                           f"addParam({op.key!r}) passes {op.options_text!r} in the options slot:"
-                          " SkiROS2 ignores it and the description stays empty (kept as is; "
-                          "pass it as description=... to fix)")
+                          " SkiROS2 ignores it and the description stays empty (a migration keeps "
+                          "the text as a comment on the parameter's line, meaning unchanged; "
+                          "`ezmigrate check --fix` passes it as description=... instead)")
     if op.options and not (isinstance(op.value, ElementValue) and not op.value.is_class):
         skill.finding("options-ignored", op.line,
                           f"ParamOptions on {op.key!r} have no effect: SkiROS2 only expands "

@@ -114,11 +114,36 @@ class S(SkillDescription):
                     *,
                     Speed: OPTIONAL[float, DESC("m/s")] = 0.5,
                     Mass: REQUIRED[float, DESC("kg")],
-                    Force: OPTIONAL[float] = 1.0):
+                    Force: OPTIONAL[float] = 1.0):  # newton
         pass
 ''')
     kinds = [f.kind for f in result.skills[0].findings]
     assert "description-in-options" in kinds
+
+
+def test_text_in_the_options_slot_stays_as_a_comment_on_the_parameters_line():
+    """Issue 22: SkiROS2 drops it (so no DESC), but the author's words are not lost; a
+    comment already on the line follows, and text no comment line can hold is a literal."""
+    result = assert_migrates(case(
+        '        self.addParam("Linear", float, ParamTypes.Required, "Linear velocity")\n'
+        '        self.addParam("Turn", 0.5, ParamTypes.Optional, "rad/s")  # measured\n'
+        '        self.addParam("Note", "", ParamTypes.Optional, "two\\nlines")\n'
+        '        self.addParam("Mass", 1.0, ParamTypes.Optional, "")\n'
+    ), '''\
+from ezskiros_runtime import SkillDescription, OPTIONAL
+
+
+class S(SkillDescription):
+    def description(self,
+                    Linear: float,  # Linear velocity
+                    Turn: OPTIONAL[float] = 0.5,  # rad/s  # measured
+                    Note: OPTIONAL[str] = "",  # 'two\\nlines'
+                    Mass: OPTIONAL[float] = 1.0):
+        pass
+''')
+    messages = [f.message for f in result.skills[0].findings]
+    assert all("as a comment on the parameter's line, meaning unchanged" in m
+               for m in messages[:3]), messages
 
 
 def test_options_on_non_element_values_are_dropped_with_a_finding():

@@ -1,0 +1,59 @@
+"""How every command prints a path: one base for stderr, reports and ``check``.
+
+Why: ruff and black print paths relative to the working directory when the file is inside
+it (what a user can paste into their editor or shell), and a unified diff names files
+relative to the repository root (``a/pkg/x.py``) so that ``git apply`` from the root takes
+it. A report lands in a pull request, so it must never carry a path of the machine that
+made it: a file outside the working directory is named relative to its repository, else by
+its name alone.
+"""
+
+from __future__ import annotations
+
+import os
+from functools import lru_cache
+from pathlib import Path
+
+
+def shown(path: Path | str) -> str:
+    """``path`` as the user sees it: relative to the working directory when inside it,
+    else as given (a ``-`` stays ``-``)."""
+    text = str(path)
+    if text == "-":
+        return text
+    absolute = os.path.abspath(text)
+    cwd = os.getcwd()
+    if absolute == cwd or absolute.startswith(cwd.rstrip(os.sep) + os.sep):
+        return Path(os.path.relpath(absolute, cwd)).as_posix()
+    return text
+
+
+def in_report(path: Path | str) -> str:
+    """``path`` for a report: ``shown``, unless that is absolute (then relative to its
+    repository, or its name alone): no report names a folder of the machine that wrote it."""
+    text = shown(path)
+    if not os.path.isabs(text):
+        return text
+    return from_repository(text)
+
+
+def from_repository(path: Path | str) -> str:
+    """``path`` relative to the root of the git repository holding it (the names of a
+    diff's ``a/``/``b/`` headers), else relative to the working directory when inside it,
+    else its name."""
+    absolute = Path(os.path.abspath(path))
+    root = repository_root(absolute.parent)
+    if root is not None:
+        return absolute.relative_to(root).as_posix()
+    text = shown(absolute)
+    return text if not os.path.isabs(text) else absolute.name
+
+
+@lru_cache(maxsize=256)
+def repository_root(folder: Path) -> Path | None:
+    """The nearest folder at or above ``folder`` holding ``.git`` (a folder, or the file of
+    a worktree or submodule), or ``None``."""
+    for candidate in (folder, *folder.parents):
+        if (candidate / ".git").exists():
+            return candidate
+    return None
