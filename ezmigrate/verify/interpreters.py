@@ -67,10 +67,21 @@ def find_python(version: str) -> str | None:
     found = shutil.which(name)
     if found is not None and "shims" not in Path(found).parts:
         return found
-    root = Path(os.environ.get("PYENV_ROOT") or Path.home() / ".pyenv")
-    candidates = sorted(root.glob(f"versions/{version}.*/bin/{name}"),
+    candidates = sorted(_pyenv_root().glob(f"versions/{version}.*/bin/{name}"),
                         key=lambda path: _patch(path.parts[-3]), reverse=True)
     return next((str(path) for path in candidates if os.access(path, os.X_OK)), None)
+
+
+def _pyenv_root() -> Path:
+    return Path(os.environ.get("PYENV_ROOT") or Path.home() / ".pyenv")
+
+
+def installed_newer() -> list[str]:
+    """Every ``python3.X`` newer than this one that ``find_python`` finds (PATH or pyenv),
+    newest first: where to look for an interpreter to name in a hint."""
+    found = (find_python(f"3.{minor}") for minor in
+             range(sys.version_info.minor + 20, sys.version_info.minor, -1))
+    return [python for python in found if python is not None]
 
 
 def _patch(release: str) -> int:
@@ -135,3 +146,13 @@ def compiles(python: str, sources: Sequence[bytes]) -> bool:
 def newest_that_compiles(sources: Sequence[bytes]) -> str | None:
     """The newest ``python3.X`` on PATH that compiles every source, or None."""
     return next((p for p in newer_interpreters() if compiles(p, sources)), None)
+
+
+def newer_syntax_hint(sources: Sequence[bytes]) -> str:
+    """What to do about files no interpreter on PATH could load: name one installed
+    elsewhere (pyenv) that reads them, for ``--python``; or say none was found."""
+    python = next((p for p in installed_newer() if compiles(p, sources)), None)
+    if python is None:
+        return ("no newer Python on PATH or in pyenv's versions folder reads it: verify with "
+                "--python naming one that does")
+    return f"{describe(python)} reads it: verify with --python {python}"

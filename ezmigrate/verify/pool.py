@@ -19,7 +19,13 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from .interpreters import describe, is_foreign, newest_that_compiles, worker_command
+from .interpreters import (
+    describe,
+    is_foreign,
+    newer_syntax_hint,
+    newest_that_compiles,
+    worker_command,
+)
 from .protocol import LoadJob, LoadOutcome
 
 
@@ -282,6 +288,9 @@ def _retry_newer_syntax(jobs: Sequence[LoadJob], outcomes: list[LoadOutcome],
                for i in again]
     python = newest_that_compiles([s for s in sources if s is not None])
     if python is None:
+        hint = newer_syntax_hint([s for s in sources if s is not None])
+        for i in again:
+            outcomes[i] = replace(outcomes[i], message=f"{outcomes[i].message} ({hint})")
         return
     try:
         retried = run_jobs([jobs[i] for i in again], replace(config, python=python))

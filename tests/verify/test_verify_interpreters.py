@@ -97,11 +97,28 @@ def test_the_project_can_name_its_interpreter(tmp_path):
 
 
 def test_with_no_newer_interpreter_the_file_is_said_to_need_one(tmp_path):
-    run, data = _run(tmp_path, env=_path_with(tmp_path, None))
+    env = dict(_path_with(tmp_path, None), PYENV_ROOT=str(tmp_path / "no-pyenv"))
+    run, data = _run(tmp_path, env=env)
     assert run.returncode == 1
     skill = data["skills"][0]
     assert skill["status"] == "failed" and "cannot import under Python 3." in skill["reason"]
+    assert "no newer Python on PATH or in pyenv's versions folder" in skill["reason"]
     assert "def createDescription" in (tmp_path / "skills" / "vision.py").read_text()
+
+
+@needs_second
+def test_a_newer_interpreter_off_path_is_named_for_python(tmp_path):
+    """Not on PATH (so not used unasked), but installed by pyenv: the reason names it, with
+    the --python that verifies the file."""
+    assert SECOND is not None
+    installed = tmp_path / "pyenv" / "versions" / "3.12.9" / "bin" / "python3.12"
+    installed.parent.mkdir(parents=True)
+    installed.symlink_to(SECOND)
+    env = dict(_path_with(tmp_path, None), PYENV_ROOT=str(tmp_path / "pyenv"))
+    run, data = _run(tmp_path, env=env)
+    assert run.returncode == 1
+    reason = data["skills"][0]["reason"]
+    assert f"reads it: verify with --python {installed}" in reason, reason
 
 
 def test_an_interpreter_that_does_not_exist_is_a_usage_error(tmp_path):
