@@ -50,10 +50,13 @@ class Checks:
 
 def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: int,
            checks: Checks | None = None, progress: Progress | None = None,
-           target: tuple[int, int] | None = None) -> list[Migrated]:
+           target: tuple[int, int] | None = None,
+           refuse_unloadable: bool = False) -> list[Migrated]:
     """Every candidate's settled result (see the module doc); ``checks`` None: no
     verification (``--no-verify``, ``check``); ``target``: the Python the migrated code
-    must run on (None: the default, ``Settings.target``)."""
+    must run on (None: the default, ``Settings.target``). ``refuse_unloadable``: without
+    verification, hold back what the runtime's early checks refuse (``static_refusal``;
+    ``rewrite --no-verify`` writes, ``check`` only reads)."""
     migrated = migrate_all(candidates, index, jobs, progress, target)
     base = Settings(index=index) if target is None else Settings(index=index, target=target)
     _settle_cross_file(migrated, base)
@@ -62,6 +65,10 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
     holdpoint.reach("migrated")
     if checks is not None:
         verify_changed(migrated, checks)
+    elif refuse_unloadable:
+        from .static_refusal import refuse_statically
+
+        refuse_statically(migrated, index)
     return migrated
 
 
@@ -107,7 +114,7 @@ def verify_changed(migrated: list[Migrated], checks: Checks) -> None:
             item.result, culprits = apply_verdicts(item.result, outcomes[2 * number],
                                                    outcomes[2 * number + 1],
                                                    checks.comparison)
-            if culprits and _migrate_holding(item, culprits):
+            if culprits and hold_back(item, culprits):
                 again.append(item)
         redone = {item.candidate.relative for item in again}
         again += [item for item in changed if item not in again and item.result.changed
@@ -117,12 +124,12 @@ def verify_changed(migrated: list[Migrated], checks: Checks) -> None:
         pending = again
     else:  # still unsettled after the last round: write none of it
         for item in pending:
-            item.result = _not_written(item.result, "not verified: its file changed in "
+            item.result = not_written(item.result, "not verified: its file changed in "
                                        "every verification round")
     _hold_dependents(changed, by_relative)
 
 
-def _migrate_holding(item: Migrated, culprits: dict[str, SkillResult]) -> bool:
+def hold_back(item: Migrated, culprits: dict[str, SkillResult]) -> bool:
     """Migrate ``item`` again leaving ``culprits`` as they are; True when something still
     changes (and so must be verified again)."""
     settings = item.settings or Settings()
@@ -155,13 +162,13 @@ def _hold_dependents(migrated: list[Migrated], by_relative: dict[str, Migrated])
             held = [r for r in item.result.depends_on
                     if r in by_relative and by_relative[r].result.new_source is None]
             if held:
-                item.result = _not_written(item.result, "not written: it derives from a "
+                item.result = not_written(item.result, "not written: it derives from a "
                                            f"description in {held[0]}, which is not being "
                                            "written")
                 changed = True
 
 
-def _not_written(result: FileResult, reason: str) -> FileResult:
+def not_written(result: FileResult, reason: str) -> FileResult:
     """``result`` kept as it was on disk: its converted skills failed for ``reason``."""
     return replace(result, new_source=None, skills=[
         failed(s, reason) if s.status == "converted" else s for s in result.skills])

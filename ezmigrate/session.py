@@ -95,7 +95,7 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     holdpoint.reach("discovered")
     with Progress.for_stream(len(candidates)) as progress:  # gone before anything is said
         migrated = settle(candidates, index, options.jobs, options.checks, progress,
-                          options.target)
+                          options.target, refuse_unloadable=True)
     outcome = RewriteOutcome(migrated, notes)
     if not options.writes:
         return outcome

@@ -64,5 +64,6 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, ve
     with tempfile.TemporaryDirectory(prefix="ezmigrate-stdin-") as folder:
         path = Path(folder) / NAME
         path.write_bytes(data)
-        [item] = settle([Candidate(path, path.parent)], index, 1, checks, target=robot.version)
+        [item] = settle([Candidate(path, path.parent)], index, 1, checks, target=robot.version,
+                         refuse_unloadable=True)
     return data, replace(item.result, path=str(filename) if filename else "-")
