@@ -9,6 +9,7 @@ deriving files again with them. Chains across several files resolve in a few rou
 
 from __future__ import annotations
 
+import functools
 import os
 from collections.abc import Sequence
 from dataclasses import replace
@@ -28,8 +29,10 @@ MAX_ROUNDS = 4
 RUNTIME_MARKER = RUNTIME_ROOT.encode()
 
 
+@functools.cache
 def dotted(relative: str) -> str:
-    """``pkg/sub/base.py`` -> ``pkg.sub.base`` (``__init__.py`` names its package)."""
+    """``pkg/sub/base.py`` -> ``pkg.sub.base`` (``__init__.py`` names its package).
+    Cached: cross-file matching asks it of the same few thousand paths again and again."""
     path = PurePosixPath(relative)
     parts = list(path.with_suffix("").parts)
     if parts and parts[-1] == "__init__":
@@ -163,6 +166,11 @@ def _ezskiros_classes(item: Migrated) -> set[str]:
         return set()
 
 
+def _last(module: str) -> str:
+    """``pkg.sub.base`` -> ``base``."""
+    return module.rpartition(".")[2]
+
+
 def _others_at(items: Sequence[Migrated], importer: Migrated, target: str) -> list[Migrated]:
     """The files among ``items``, other than ``importer``, that module ``target`` names."""
     return [e for e in items if e is not importer and _matches(e.candidate.relative, target)]
@@ -185,10 +193,12 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
         changed = False
         exporters: dict[tuple[str, str], list[Migrated]] = {}
         described: dict[tuple[str, str], list[Migrated]] = {}
-        by_root: dict[str, list[Migrated]] = {}
+        # (root, a module's own name) -> its files: a module matches only files whose last
+        # dotted part is its own (see ``_matches``), so a base looks at those alone
+        by_module: dict[tuple[str, str], list[Migrated]] = {}
         for item in migrated:
             root = str(item.candidate.root)
-            by_root.setdefault(root, []).append(item)
+            by_module.setdefault((root, _last(dotted(item.candidate.relative))), []).append(item)
             for name in item.result.exports:
                 exporters.setdefault((root, name), []).append(item)
             for skill in item.result.skills:
@@ -215,7 +225,7 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
                     unresolved[local] = f"its base class {name} was not converted (in " \
                         f"{source})"
                     continue
-                files = _others_at(by_root.get(root, []), item, target)
+                files = _others_at(by_module.get((root, _last(target)), []), item, target)
                 if files:
                     for file in files:
                         if file.candidate.relative not in ezskiros:
