@@ -39,6 +39,8 @@ if TYPE_CHECKING:
     from .compound.analysis import Trees
     from .verify.protocol import LoadOutcome
 
+UNRESOLVED_LOAD = {"timeout": "info", "memory": "info", "crashed": "info"}
+"""Loads that failed on the sandbox's limits, not on the module: nothing is known of it."""
 KEPT_FROM_CODEMOD = frozenset({"description-in-options", "options-ignored"})
 """Codemod findings ``check`` keeps; the others are found again by the runtime's checks."""
 
@@ -158,7 +160,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     if compounds:
         from .compound.analysis import Trees
 
-        trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, pool.workers)))
+        trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, pool.workers)),
+                      named=tuple(paths), exclude=exclude)
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
                        standby, world)
@@ -209,8 +212,10 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
         path = str(candidate.path)
         where = Positions(outcome.sources[path])
         if not loaded.loaded:
-            outcome.diagnostics.append(diagnostic(path, where, "unloadable", loaded.line or 0,
-                                                  f"{loaded.status}: {loaded.message}"))
+            outcome.diagnostics.append(diagnostic(
+                path, where, "unloadable", loaded.line or 0,
+                f"{loaded.status}: {loaded.message}", severity=UNRESOLVED_LOAD.get(
+                    loaded.status)))
             continue
         outcome.skills += len(loaded.models)
         for error in loaded.errors:
@@ -240,6 +245,7 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
     from ezskiros_runtime.compound.library import SkillIndex
 
     from .compound.analysis import add_descriptions, analyse, library_candidates
+    from .compound.repository import scan_repository
 
     skills = SkillIndex.with_standard_library()
     library = library_candidates(list(libraries))
@@ -247,14 +253,17 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
         statics = [(c, r) for c, _, r in read_statically([c for c, _ in library], pool.workers,
                                                          index)]
         add_descriptions(skills, statics, [], "skill library")
+    around = scan_repository(trees.named, trees.exclude, trees.seen)
+    for info in around.descriptions:  # the files not named; the named ones' readings win
+        skills.add_description(info)
     add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],
                      "repository")
-    run = analyse(read, skills, index, pool, library, trees, standby)
+    run = analyse(read, skills, index, pool, library, trees, standby, around)
     found: dict[tuple[str, int, str, str], Diagnostic] = {}
     for path, finding in run.findings:  # a traced loop adds the same mistake once a turn
         where = Positions(sources.get(path, ""))
         item = diagnostic(path, where, finding.kind, finding.line, finding.message,
-                          finding.implementation, finding.suggestion)
+                          finding.implementation, finding.suggestion, finding.severity)
         found.setdefault((path, item.line, item.code, item.message), item)
     return list(found.values())
 

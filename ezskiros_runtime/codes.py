@@ -291,13 +291,16 @@ RULES: tuple[Rule, ...] = (
          "form.",
          ("not-equivalent", "failed")),
     Rule("EZ904", "unloadable", "error",
-         "The module could not be loaded to run the early checks (an import error, a "
-         "timeout, a crash).",
+         "The module could not be loaded to run the early checks (an exception while "
+         "importing it). A load stopped by the sandbox's limits (a timeout, the memory "
+         "limit, a crash) says nothing certain about the module: it is reported as info.",
          "Fix the error in the message; run `python -c 'import MODULE'` to reproduce.",
          ("unloadable",)),
-    Rule("EZ905", "unreadable", "error",
-         "The file could not be parsed or decoded, so nothing in it was checked.",
-         "Fix the syntax or encoding error.",
+    Rule("EZ905", "unreadable", "warning",
+         "The file could not be parsed or decoded (Python 2 syntax, an empty or truncated "
+         "file), so it was skipped and nothing in it was checked; the class names in it "
+         "still count as defined for compound skills.",
+         "Fix the syntax or encoding error (port Python 2 code to Python 3).",
          ("unreadable", "syntax-error")),
     Rule("EZ906", "lossy-rewrite", "error",
          "The migrated text would have changed or lost a line outside the migrated code (a "

@@ -25,6 +25,7 @@ from ..discover import Candidate
 from ..results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_batched
 from ..verify.protocol import LoadOutcome
+from .repository import RepositoryScan
 from .static import NeedsTrace, class_bases, implementations, read_compounds
 
 if TYPE_CHECKING:
@@ -57,6 +58,9 @@ class Trees:
     seen: set[str] = field(default_factory=set)
     on_first_trace: Callable[[], None] | None = None
     """Called when the first tree to trace turns up (``check`` starts a worker then)."""
+    named: tuple[Path, ...] = ()
+    """The paths the run was given: the repository around them joins the skill index."""
+    exclude: tuple[str, ...] = ()
 
     def add(self, candidate: Candidate, data: bytes, tree: ast.Module | None = None) -> None:
         """One file (``tree``: its syntax tree when the caller has parsed it already)."""
@@ -164,21 +168,29 @@ def add_descriptions(index: SkillIndex, results: Iterable[tuple[Candidate, FileR
 def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
             ontology: OntologyIndex | None, pool: PoolConfig,
             library_items: Sequence[tuple[Candidate, bytes]] = (),
-            read: Trees | None = None, standby: Standby | None = None) -> CompoundRun:
+            read: Trees | None = None, standby: Standby | None = None,
+            around: RepositoryScan | None = None) -> CompoundRun:
     """Read, trace and check every compound skill of ``items`` against ``index``.
 
     Compound skills of ``library_items`` join the index (a remap reaches into their trees)
     but are not reported. ``read``: what the caller's own pass already read (its files are
-    not parsed again); ``standby``: workers already starting for the tracing.
+    not parsed again); ``standby``: workers already starting for the tracing; ``around``:
+    the rest of the repository (``repository.py``), whose descriptions the caller already
+    added to ``index``.
     """
+    around = around or RepositoryScan()
     library = _read(library_items)
     _trace(library, pool)
     trees = _read(items, read)
     _trace(trees, pool, standby)
-    for label, description in [*library.labels, *trees.labels]:
+    for label, description in [*library.labels, *around.labels, *trees.labels]:
         index.add_implementation(label, description)
-    index.bases |= {base for cls, base in [*library.bases, *trees.bases]
+    index.bases |= {base for cls, base in [*library.bases, *around.bases, *trees.bases]
                     if cls in index.descriptions and base in index.descriptions}
+    index.unread = list(around.unread)
+    index.unknown_compounds |= around.untraced
+    for compound in around.compounds:
+        index.add_compound(compound)
     for _, model in [*library.models, *trees.models]:
         if isinstance(model, CompoundModel):
             index.add_compound(model)

@@ -50,9 +50,14 @@ class Positions:
 
 
 def diagnostic(path: str, positions: Positions, kind: str, line: int, message: str,
-               skill: str = "", fix: str | None = None) -> Diagnostic:
-    """The diagnostic of a finding kind, with the catalogue's code, severity and fix."""
+               skill: str = "", fix: str | None = None,
+               severity: str | None = None) -> Diagnostic:
+    """The diagnostic of a finding kind, with the catalogue's code, severity and fix.
+
+    ``severity`` lowers the code's own for one finding that rests on something the tool
+    could not resolve (a file it could not read, a name defined twice): a false error
+    costs more than a missed warning."""
     rule = rule_for(kind)
     column, end_line, end_column = positions.span(line)
-    return Diagnostic(path, max(line, 1), column, rule.code, rule.severity, message,
-                      fix or rule.fix, skill, end_line, end_column)
+    return Diagnostic(path, max(line, 1), column, rule.code, severity or rule.severity,
+                      message, fix or rule.fix, skill, end_line, end_column)

@@ -50,6 +50,8 @@ class CompoundFinding:
     implementation: str
     child: str = ""
     suggestion: str | None = None
+    severity: str | None = None
+    """Lower than the code's own when the finding rests on something not resolved."""
 
 
 def check_model(model: CompoundModel | Unanalysable, index: SkillIndex,
@@ -73,11 +75,23 @@ class _Checker:
         self.parent = index.descriptions.get(model.description or "")
 
     def add(self, kind: str, line: int, message: str, child: str = "",
-            suggestion: str | None = None) -> None:
+            suggestion: str | None = None, severity: str | None = None) -> None:
         how = OBTAINED[self.model.obtained]
         self.found.append(CompoundFinding(kind, line or self.model.expand_line,
                                           f"{message} ({how})", self.model.implementation,
-                                          child, suggestion))
+                                          child, suggestion, severity))
+
+    def _one(self, matches: list[DescriptionInfo]) -> DescriptionInfo | None:
+        """The one description a child type names, seen from this compound's file (None
+        when several match, or several files of the repository define it equally near
+        with different parameters)."""
+        if len(matches) != 1:
+            return None
+        found = self.index.nearest(matches[0], self.model.path)
+        if any(f.params != found[0].params or f.complete != found[0].complete
+               for f in found[1:]):
+            return None
+        return found[0]
 
     def run(self) -> list[CompoundFinding]:
         self._processor(self.model.processor, self.model.expand_line)
@@ -108,11 +122,15 @@ class _Checker:
             hint = f"Did you mean {close[0]!r}?" if close else None
             why = (f" ({name} is a base other descriptions derive from; the skill manager "
                    "loads only leaf descriptions)" if name in self.index.bases else "")
+            unread = self.index.unread
+            if unread:
+                why += (f"; {len(unread)} file(s) of the repository could not be read "
+                        f"({', '.join(unread[:3])}), so it may be defined there")
             self.add("unknown-child-type", node.line,
                      f"child type {node.type!r} matches no description the skill manager "
                      "could load (the repository, skiros2_std_lib, [tool.ezmigrate] "
                      f"skill-libraries){why}: the compound skill fails when it runs",
-                     node.type, hint)
+                     node.type, hint, "info" if unread else None)
             return
         if not literal:
             names = ", ".join(d.name for d in matches)
@@ -122,7 +140,19 @@ class _Checker:
                      f"Write the type name exactly: {matches[0].name!r}.")
         if len(matches) != 1:
             return
-        child = matches[0]
+        definitions = self.index.nearest(matches[0], self.model.path)
+        found = []
+        for child in definitions:  # two packages define the type: what holds for both
+            before, self.found = self.found, []
+            self._judge(node, child, others)
+            found.append(self.found)
+            self.found = before
+        self.found += [f for f in found[0] if all(
+            any((g.kind, g.message) == (f.kind, f.message) for g in other)
+            for other in found[1:])]
+
+    def _judge(self, node: SkillNode, child: DescriptionInfo,
+               others: list[Node | CallProblem]) -> None:
         self._label(node, child)
         if not child.complete:
             return
@@ -247,11 +277,12 @@ class _Checker:
                 complete &= self._below(node.children, keys, seen)
                 continue
             matches, _ = self.index.resolve(node.type)
-            if len(matches) != 1:
+            child = self._one(matches)
+            if child is None:
                 complete = False
                 continue
-            keys.update(matches[0].declared())
-            below, whole = self._descendant_keys(node, matches[0], seen)
+            keys.update(child.declared())
+            below, whole = self._descendant_keys(node, child, seen)
             keys |= below
             complete &= whole
         return complete
@@ -265,11 +296,12 @@ class _Checker:
                 continue
             keys.update(target for _, target in node.remap)
             matches, _ = self.index.resolve(node.type)
-            if len(matches) != 1 or not matches[0].complete:
+            child = self._one(matches)
+            if child is None or not child.complete:
                 complete = False
                 continue
-            keys.update(matches[0].declared())
-            below, whole = self._descendant_keys(node, matches[0])
+            keys.update(child.declared())
+            below, whole = self._descendant_keys(node, child)
             keys |= below
             complete &= whole
         return keys, complete

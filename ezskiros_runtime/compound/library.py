@@ -10,9 +10,11 @@ the list in the shared doc), and further libraries a project names
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from pathlib import PurePath
 
 from .model import CompoundModel
 
@@ -84,14 +86,54 @@ class SkillIndex:
     unknown_compounds: set[str] = field(default_factory=set)
     bases: set[str] = field(default_factory=set)
     """Descriptions other descriptions derive from: the skill manager loads only leaves."""
+    definitions: dict[str, list[DescriptionInfo]] = field(default_factory=dict)
+    """Every file of the repository defining a type, when more than one does: packages of
+    one repository reuse names, and a compound's child is read from the nearest one."""
+    unread: list[str] = field(default_factory=list)
+    """Files of the repository whose classes could not be read at all: a type not found may
+    be defined there, so "unknown child type" is then at most informational."""
 
     @classmethod
     def with_standard_library(cls) -> SkillIndex:
         return cls({d.name: d for d in STANDARD_LIBRARY})
 
     def add_description(self, info: DescriptionInfo) -> None:
-        """A repository's own description wins over a library's of the same name."""
+        """A repository's own description wins over a library's of the same name; two
+        files of the repository defining one name are both kept (``nearest``). The same
+        file read twice (scanned, then checked) keeps the later reading."""
+        known = self.descriptions.get(info.name)
+        if known is not None and known.path and info.path and known.path != info.path \
+                and known.origin.startswith("repository") \
+                and info.origin.startswith("repository"):
+            others = self.definitions.setdefault(info.name, [known])
+            others[:] = [d for d in others if d.path != info.path] + [info]
+        elif info.name in self.definitions:
+            others = self.definitions[info.name]
+            others[:] = [d for d in others if d.path != info.path] + [info]
         self.descriptions[info.name] = info
+
+    def nearest(self, info: DescriptionInfo, path: str) -> list[DescriptionInfo]:
+        """The definitions of ``info``'s type a compound skill in ``path`` may use: the only
+        one, else those whose folder shares most of ``path`` (its own package first).
+        Several when they are equally near: which one the skill manager loads is unknown,
+        and only what holds for each of them is certain."""
+        others = self.definitions.get(info.name)
+        if not others:
+            return [info]
+        if not path:
+            return list(others)
+
+        def shared(other: DescriptionInfo) -> int:
+            count = 0
+            for a, b in zip(PurePath(os.path.abspath(path)).parent.parts,
+                            PurePath(os.path.abspath(other.path)).parent.parts):
+                if a != b:
+                    break
+                count += 1
+            return count
+
+        best = max(shared(o) for o in others)
+        return [o for o in others if shared(o) == best]
 
     def add_implementation(self, label: str, description: str | None) -> None:
         if description is not None:

@@ -1,0 +1,176 @@
+"""The repository around the named files: every description, implementation and base in it.
+
+pre-commit passes only the staged files; a compound skill in one of them names children
+whose descriptions live in unstaged sibling files (or other packages of the repository).
+Judging the tree against the named files alone gives false "unknown child type" errors,
+so the skill index always covers the whole repository: the git top level of each named
+file, else its ROS package (the folder of the nearest ``package.xml``), else its folder.
+A named *directory* is its own scope (``check DIR`` asks about DIR).
+
+Files not named are read here with ``ast`` only (no codemod, no tracing): plain legacy
+descriptions with their keys, every other description class as a type whose keys are not
+judged, implementation labels, description bases, and literal trees. A file ``ast`` cannot
+parse (Python 2, a syntax error) still gives its class names, recovered by a tolerant
+``tokenize`` scan, so that its descriptions are never reported as unknown child types.
+"""
+
+from __future__ import annotations
+
+import ast
+import io
+import tokenize
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ezskiros_runtime.compound.library import DescriptionInfo
+from ezskiros_runtime.compound.model import CompoundModel
+from ezskiros_runtime.ontology.discovery import enclosing_project
+
+from ..discover import Candidate, discover
+from ..lint.plain_reader import Declined, read_plain
+from .static import NeedsTrace, class_bases, implementations, read_compounds
+
+READ_WHEN = (b"expand", b"setDescription", b"createDescription", b"SkillDescription")
+UNPARSED = "in a file Python 3 cannot parse"
+TOP_CLASS = "class@0"
+_LAYOUT = frozenset({tokenize.NL, tokenize.NEWLINE, tokenize.COMMENT, tokenize.INDENT,
+                     tokenize.DEDENT})
+
+
+@dataclass
+class RepositoryScan:
+    """What the files of the repository that were not named hold."""
+
+    descriptions: list[DescriptionInfo] = field(default_factory=list)
+    labels: list[tuple[str, str | None]] = field(default_factory=list)
+    bases: list[tuple[str, str]] = field(default_factory=list)
+    compounds: list[CompoundModel] = field(default_factory=list)
+    untraced: set[str] = field(default_factory=set)
+    """Description types whose compound implementation needs tracing (not done here)."""
+    unread: list[str] = field(default_factory=list)
+    """Files whose class names not even ``tokenize`` could recover."""
+
+
+def repository_root(path: Path) -> Path:
+    """The scope of a named path: a directory itself; for a file, its git top level, else
+    its ROS package (``enclosing_project``, as ontology discovery finds it), else its
+    folder."""
+    if path.is_dir():
+        return path
+    return enclosing_project(path) or path.resolve().parent
+
+
+def scan_repository(named: Sequence[Path], exclude: Sequence[str] = (),
+                    skip: Iterable[str] = ()) -> RepositoryScan:
+    """Descriptions, implementations, bases and literal trees of the repository around
+    ``named`` (``skip``: resolved paths the caller read itself)."""
+    roots = sorted({repository_root(p) for p in named if p.exists()})
+    roots = [r for r in roots if not any(o != r and o in r.parents for o in roots)]
+    scan = RepositoryScan()
+    if not roots:
+        return scan
+    skipped = {str(Path(p).resolve()) for p in skip}
+    candidates, _ = discover(roots, exclude)
+    for candidate in candidates:
+        if str(candidate.path.resolve()) in skipped:
+            continue
+        try:
+            data = candidate.path.read_bytes()
+        except OSError:
+            continue
+        if any(marker in data for marker in READ_WHEN):
+            _scan_file(candidate, data, scan)
+    return scan
+
+
+def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan) -> None:
+    path = str(candidate.path)
+    try:
+        tree = ast.parse(data)
+    except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
+        recovered = recover_classes(data)
+        if recovered is None:
+            scan.unread.append(candidate.relative)
+            return
+        for name, line, described in recovered:
+            if described is None:
+                scan.descriptions.append(DescriptionInfo(name, {}, f"repository ({UNPARSED})",
+                                                         path, line, complete=False))
+            else:
+                scan.labels.append((name, described))
+        return
+    scan.labels += implementations(tree)
+    scan.bases += class_bases(tree)
+    implemented = {cls for cls, _ in implementations(tree)}
+    verdict = read_plain(data, candidate.relative, tree)
+    read = {} if isinstance(verdict, Declined) else {s.name: s for s in verdict.skills}
+    from .analysis import description_of
+
+    for node in tree.body:
+        if not isinstance(node, ast.ClassDef) or node.name in implemented:
+            continue
+        if node.name in read:
+            skill = read[node.name]
+            scan.descriptions.append(description_of(node.name, skill.model, "repository",
+                                                    path, node.lineno))
+        elif _looks_described(node):
+            scan.descriptions.append(DescriptionInfo(node.name, {}, "repository", path,
+                                                     node.lineno, complete=False))
+    for found in read_compounds(tree, path):
+        if isinstance(found, NeedsTrace):
+            scan.untraced.add(found.description or found.implementation)
+        else:
+            scan.compounds.append(found)
+
+
+def _looks_described(node: ast.ClassDef) -> bool:
+    """A description class by its shape: a ``createDescription`` of its own (an
+    implementation's calls ``setDescription`` and is listed apart), or a base named
+    ``SkillDescription`` (an EzSkiROS description, or an empty legacy one)."""
+    if any(isinstance(m, ast.FunctionDef) and m.name == "createDescription"
+           for m in node.body):
+        return True
+    return any((isinstance(b, ast.Name) and b.id == "SkillDescription")
+               or (isinstance(b, ast.Attribute) and b.attr == "SkillDescription")
+               for b in node.bases)
+
+
+def recover_classes(data: bytes) -> list[tuple[str, int, str | None]] | None:
+    """``(class, line, described type or None)`` of a module's top-level classes, read with
+    ``tokenize`` where ``ast`` fails (``print x``, ``except E, e:``): a class whose body
+    calls ``setDescription(Type(), ...)`` is an implementation of ``Type``, one with
+    ``createDescription`` and no such call a description (None); other classes are left
+    out. None when not even the tokens can be read."""
+    classes: list[_Recovered] = []
+    current: _Recovered | None = None
+    previous: list[str] = ["", ""]
+    try:
+        for token in tokenize.tokenize(io.BytesIO(data).readline):
+            if token.type == tokenize.NAME and previous[-1] == TOP_CLASS:
+                current = _Recovered(token.string, token.start[0])
+                classes.append(current)
+            elif token.type == tokenize.NAME and token.start[1] == 0:
+                current = None  # a top-level statement ends the class before it
+            elif current is not None and token.type == tokenize.NAME:
+                if token.string == "createDescription":
+                    current.creates = True
+                elif previous == ["setDescription", "("] and current.described is None:
+                    current.described = token.string
+            if token.type not in _LAYOUT:
+                top = token.string == "class" and token.start[1] == 0
+                previous = [previous[-1], TOP_CLASS if top else token.string]
+    except (tokenize.TokenError, SyntaxError, UnicodeError, LookupError):
+        if not classes:
+            return None
+    return [(c.name, c.line, c.described) for c in classes if c.described or c.creates]
+
+
+@dataclass
+class _Recovered:
+    """One class seen by ``recover_classes``."""
+
+    name: str
+    line: int
+    creates: bool = False
+    described: str | None = None

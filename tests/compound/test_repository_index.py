@@ -1,0 +1,155 @@
+"""The skill index covers the whole repository, whatever files a run names (issue 21,
+patterns 1 and 7): children defined in unstaged siblings, in files Python 3 cannot parse,
+or in two packages of one repository are never reported as errors on a guess.
+
+Real files in git repositories made in a temporary folder, the real check core (compound
+pass, static reader), no mocks.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import textwrap
+from pathlib import Path
+
+from ezmigrate.check import run_check
+from ezmigrate.compound.repository import recover_classes, repository_root
+from ezmigrate.lint.diagnostic import Diagnostic
+from ezmigrate.verify.pool import PoolConfig
+
+HEADER = """\
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+from skiros2_skill.core.skill import SkillBase
+"""
+
+
+def description(name: str, *keys: str) -> str:
+    body = "".join(f'        self.addParam("{k}", Element("skiros:Location"), '
+                   "ParamTypes.Required)\n" for k in keys) or "        pass\n"
+    return f"\n\nclass {name}(SkillDescription):\n    def createDescription(self):\n{body}"
+
+
+def compound(child: str, specify: str = "") -> str:
+    extra = f", specify={{{specify!r}: 1.0}}" if specify else ""
+    return textwrap.dedent(f'''
+
+
+        class Task(SkillDescription):
+            def createDescription(self):
+                pass
+
+
+        class task(SkillBase):
+            def createDescription(self):
+                self.setDescription(Task(), self.__class__.__name__)
+
+            def expand(self, skill):
+                skill(self.skill("{child}", ""{extra}))
+        ''')
+
+
+def write(root: Path, files: dict[str, str]) -> Path:
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8")
+    subprocess.run(["git", "init", "-q", str(root)], check=True)
+    return root
+
+
+def ez3(paths: list[Path]) -> list[Diagnostic]:
+    outcome = run_check(paths, None, PoolConfig(workers=1))
+    return [d for d in outcome.diagnostics if d.code.startswith("EZ3")]
+
+
+def brief(found: list[Diagnostic]) -> set[tuple[str, int, str, str]]:
+    return {(Path(d.path).name, d.line, d.code, d.severity) for d in found}
+
+
+def test_a_child_in_an_unstaged_sibling_is_known_when_one_file_is_named(tmp_path: Path):
+    repo = write(tmp_path / "repo", {
+        "pkg/descriptions.py": HEADER + description("Navigate", "Target"),
+        "pkg/tasks.py": HEADER + compound("Navigate", "Target"),
+    })
+    assert ez3([repo / "pkg" / "tasks.py"]) == []
+    # near miss: a child defined nowhere in the repository is still an error
+    (repo / "pkg" / "tasks.py").write_text(HEADER + compound("Navigat"), encoding="utf-8")
+    found = ez3([repo / "pkg" / "tasks.py"])
+    assert brief(found) == {("tasks.py", 18, "EZ301", "error")}
+
+
+def test_one_named_file_gets_exactly_the_findings_of_the_repository_run(tmp_path: Path):
+    repo = write(tmp_path / "repo", {
+        "a/descriptions.py": HEADER + description("Navigate", "Target"),
+        "b/tasks.py": HEADER + compound("Navigate", "Targt"),
+        "b/other.py": HEADER + compound("Nowhere").replace("Task", "Other").replace(
+            "task", "other"),
+    })
+    alone = brief(ez3([repo / "b" / "tasks.py"]))
+    whole = {f for f in brief(ez3([repo])) if f[0] == "tasks.py"}
+    assert alone == whole == {("tasks.py", 18, "EZ307", "error")}
+
+
+def test_descriptions_of_a_python_2_file_are_recovered_not_reported(tmp_path: Path):
+    py2 = description("Scan", "Area") + "\n\ndef legacy():\n    print 'python 2'\n"
+    repo = write(tmp_path / "repo", {"pkg/old.py": HEADER + py2,
+                                     "pkg/tasks.py": HEADER + compound("Scan", "Nope")})
+    assert ez3([repo / "pkg" / "tasks.py"]) == []  # the type exists; its keys are unknown
+    assert ez3([repo]) == []
+    # near miss: the same file parsable, the wrong specify key is certain
+    (repo / "pkg" / "old.py").write_text(HEADER + description("Scan", "Area"),
+                                         encoding="utf-8")
+    assert {f[2] for f in brief(ez3([repo / "pkg" / "tasks.py"]))} == {"EZ307"}
+
+
+def test_an_unreadable_file_makes_an_unknown_child_informational(tmp_path: Path):
+    repo = write(tmp_path / "repo", {"pkg/tasks.py": HEADER + compound("Scan")})
+    (repo / "pkg" / "broken.py").write_bytes(b"\xff\xfeclass Scan(SkillDescription):\n")
+    found = ez3([repo / "pkg" / "tasks.py"])
+    assert brief(found) == {("tasks.py", 18, "EZ301", "info")}
+    assert "broken.py" in found[0].message and "could not be read" in found[0].message
+
+
+def test_a_type_defined_in_two_packages_is_read_from_its_own(tmp_path: Path):
+    repo = write(tmp_path / "repo", {
+        "arm/descriptions.py": HEADER + description("Scan", "Area"),
+        "arm/tasks.py": HEADER + compound("Scan", "Zone"),
+        "base/descriptions.py": HEADER + description("Scan", "Zone"),
+    })
+    assert {f[2] for f in brief(ez3([repo]))} == {"EZ307"}  # arm's Scan has no Zone
+    (repo / "arm" / "tasks.py").write_text(HEADER + compound("Scan", "Area"),
+                                           encoding="utf-8")
+    assert ez3([repo]) == []
+
+
+def test_a_type_defined_twice_equally_near_is_judged_only_where_both_agree(tmp_path: Path):
+    repo = write(tmp_path / "repo", {
+        "pkg/one.py": HEADER + description("Scan", "Area"),
+        "pkg/two.py": HEADER + description("Scan", "Zone"),
+        "pkg/tasks.py": HEADER + compound("Scan", "Zone"),
+    })
+    assert ez3([repo]) == []  # one of the two declares Zone: not certain
+    (repo / "pkg" / "tasks.py").write_text(HEADER + compound("Scan", "Speed"),
+                                           encoding="utf-8")
+    assert {f[2] for f in brief(ez3([repo]))} == {"EZ307"}  # neither declares Speed
+
+
+def test_recover_classes_reads_python_2_modules(tmp_path: Path):
+    source = (b"class Wave(SkillDescription):\n    def createDescription(self):\n"
+              b"        print 'x'\n\nclass wave(SkillBase):\n    def createDescription(self):\n"
+              b"        self.setDescription(Wave(), 'wave')\n\nclass Helper(object):\n"
+              b"    pass\n")
+    assert recover_classes(source) == [("Wave", 1, None), ("wave", 5, "Wave")]
+
+
+def test_the_scope_of_a_named_file_is_its_git_top_level_else_its_package(tmp_path: Path):
+    package = tmp_path / "ws" / "pkg"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text("<package/>", encoding="utf-8")
+    (package / "src" / "a.py").write_text("", encoding="utf-8")
+    assert repository_root(package / "src" / "a.py") == package.resolve()
+    subprocess.run(["git", "init", "-q", str(tmp_path / "ws")], check=True)
+    assert repository_root(package / "src" / "a.py") == (tmp_path / "ws").resolve()
+    assert repository_root(package) == package
