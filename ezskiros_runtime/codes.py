@@ -75,7 +75,9 @@ RULES: tuple[Rule, ...] = (
          "Declare the parameter, or fix the key's spelling in the condition.",
          ("undeclared-parameter", "undeclared-key")),
     Rule("EZ105", "uninferable", "warning",
-         "An Inferred parameter that no pre-condition mentions can never be inferred.",
+         "An Inferred Element parameter that no pre-condition mentions: SkiROS2 grounds it "
+         "by its type alone, to the first matching element of the world model, which is "
+         "arbitrary when several elements fit.",
          "Add a pre-condition that relates it to a known parameter, or make it Required.",
          ("uninferable",)),
     Rule("EZ106", "default-type", "error",
@@ -190,9 +192,10 @@ RULES: tuple[Rule, ...] = (
          "(Wait given Time instead of Duration).",
          "Use the child's parameter name after remapping (see the suggestion).",
          ("specify-key-unknown",)),
-    Rule("EZ308", "remap-dangling", "error",
+    Rule("EZ308", "remap-dangling", "warning",
          "A remap value that no parameter of the compound skill and no other node of its "
-         "tree declares: the child's parameter connects to nothing.",
+         "tree declares: the child's parameter connects to nothing, unless something "
+         "outside the tree writes that blackboard key (a warning, not an error).",
          "Remap onto a parameter of the compound skill (see the suggestion) or one that "
          "another child writes.",
          ("remap-dangling",)),
@@ -206,9 +209,10 @@ RULES: tuple[Rule, ...] = (
          "a branch's or a fork's own).",
          "Use an upstream processor, or accept the dependency on the fork.",
          ("processor-not-upstream",)),
-    Rule("EZ311", "remap-disjoint", "error",
+    Rule("EZ311", "remap-disjoint", "warning",
          "A remap between element parameters whose classes can never hold the same element "
-         "(disjoint in the class hierarchy).",
+         "(disjoint in the class hierarchy). A warning: passing an element between "
+         "parameters of different classes is a blackboard idiom real trees use on purpose.",
          "Remap onto a parameter of a compatible class, or fix one of the two types.",
          ("remap-disjoint",)),
     Rule("EZ312", "remap-narrower", "info",
@@ -221,6 +225,13 @@ RULES: tuple[Rule, ...] = (
          "model, a branch on a value): it is not checked, not clean.",
          "Nothing to fix; simplify expand if you want it checked.",
          ("compound-unanalysable",)),
+    Rule("EZ314", "remap-key-remapped-below", "error",
+         "A remap key that the node below declaring it already remapped: SkiROS2 refuses "
+         "the second remap there (\"Key K already remapped\") and does not pass it "
+         "further, so the value never reaches that node.",
+         "Remap the key's new name (the one the node below gave it), or drop one of the two "
+         "remaps.",
+         ("remap-key-remapped-below",)),
     # EZ4xx: the world model (scenes, and what post-conditions leave in it)
     Rule("EZ401", "double-place", "warning",
          "The pre-conditions require a single-valued relation (a spatial parent, skiros:at) "

@@ -182,11 +182,20 @@ class _Checker:
                 renamed[key] = target
                 self._element_types(node, child, key, target)
                 continue
-            below, complete = self._descendant_keys(node, child)
-            if key in below:
+            _, complete = self._descendant_keys(node, child)
+            reached, taken = self._reach(node, child)
+            if key in reached:
                 self.add("remap-key-descendant", node.line,
                          f"remap key {key!r} is declared not by {child.name} but below it; "
                          "SkiROS2 passes the remap down to it", node.type)
+            elif key in taken:
+                self.add("remap-key-remapped-below", node.line,
+                         f"remap key {key!r}: the node below {child.name} that declares it "
+                         f"already remapped it ({taken[key]!r}), so SkiROS2 refuses this "
+                         "second remap there (\"already remapped\") and the value never "
+                         "reaches it", node.type,
+                         f"Remap {taken[key]!r} instead, the name it has after the remap "
+                         "below.")
             elif complete:
                 self.add("remap-key-unknown", node.line,
                          f"remap key {key!r}: neither {child.name} nor anything below it "
@@ -266,6 +275,48 @@ class _Checker:
         for tree in self.index.compounds.get(child.name, ()):
             complete &= self._below(tree.children, keys, seen)
         return keys, complete
+
+    def _reach(self, node: SkillNode, child: DescriptionInfo,
+               seen: frozenset[str] = frozenset()) -> tuple[set[str], dict[str, str]]:
+        """Keys below ``node`` that a remap passed down would still rename, and keys a node
+        below already remapped (key -> its new name): SkiROS2 drops a second remap of a
+        key at the node that remapped it first, and does not pass it further down."""
+        reached: set[str] = set()
+        taken: dict[str, str] = {}
+        if child.name in seen or len(seen) > _MAX_DEPTH or not child.complete:
+            return reached, taken
+        seen = seen | {child.name}
+        nodes: list[Node | CallProblem] = list(node.children)
+        for tree in self.index.compounds.get(child.name, ()):
+            nodes += tree.children
+        for below in nodes:
+            self._reach_node(below, reached, taken, seen)
+        return reached, taken
+
+    def _reach_node(self, node: Node | CallProblem, reached: set[str],
+                    taken: dict[str, str], seen: frozenset[str]) -> None:
+        if isinstance(node, CallProblem):
+            return
+        keys: set[str] = set()
+        if isinstance(node, ProcessorNode):
+            for inner in node.children:
+                self._reach_node(inner, keys, taken, seen)
+        else:
+            matches, _ = self.index.resolve(node.type)
+            child = self._one(matches)
+            if child is None:
+                return
+            keys = child.declared()
+            deeper, deeper_taken = self._reach(node, child, seen)
+            keys |= deeper
+            for key, target in deeper_taken.items():
+                taken.setdefault(key, target)
+        for key, target in node.remap:
+            if key in keys:
+                keys.discard(key)
+                keys.add(target)
+                taken.setdefault(key, target)
+        reached |= keys
 
     def _below(self, nodes: Iterable[Node | CallProblem], keys: set[str],
                seen: frozenset[str]) -> bool:

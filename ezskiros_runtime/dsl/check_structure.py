@@ -1,8 +1,8 @@
 """Checks on the description's own structure, independent of ontology types.
 
 - a default that does not fit its annotation (the DSL promises type-exact defaults);
-- an INFERRED parameter that no pre-condition mentions: the skill manager infers parameters
-  by reasoning over pre-conditions, so such a parameter can never be filled in;
+- an INFERRED Element parameter that no pre-condition mentions: the skill manager then
+  grounds it by type alone, to the first matching element (arbitrary when several fit);
 - a condition on a key the description never declares (SkiROS2 keeps it silently);
 - the same condition required to hold and not to hold in one list, a property wanted equal
   to two values, or numeric bounds no value fits (none of these can ever be met).
@@ -32,19 +32,29 @@ def check_defaults(ctx: CheckContext) -> None:
 
 
 def check_inferable(ctx: CheckContext) -> None:
-    """Every INFERRED parameter is mentioned by some pre-condition (Robot aside: SkiROS2's
-    skill manager binds the executing robot itself)."""
+    """Every INFERRED Element parameter is mentioned by some pre-condition (Robot aside:
+    SkiROS2's skill manager binds the executing robot itself).
+
+    SkiROS2 does not fail on one that is not: it grounds any non-Optional Element
+    parameter by its type alone, to the first matching element of the world model. That
+    is right when one element fits and arbitrary when several do, which is what the
+    finding says. A parameter that is no Element is never grounded this way: not judged.
+    """
     mentioned = {key for record in ctx.trace.recorded if record.which == "pre"
                  for key in record.condition.param_keys()}
     for key, spec in ctx.params.items():
-        if spec.kind != "Inferred" or key == ROBOT_KEY or key in mentioned:
+        if spec.kind != "Inferred" or key == ROBOT_KEY or key in mentioned \
+                or not spec.is_element:
             continue
-        if spec.is_element and _MENTIONING_OPTIONS.intersection(spec.options):
+        if _MENTIONING_OPTIONS.intersection(spec.options):
             continue
         file, line = ctx.param_location(spec.name)
+        kind = spec.element_type or "any type"
         ctx.add("uninferable",
-                f"INFERRED parameter {key} is mentioned by no pre-condition, so SkiROS2 can "
-                "never infer it (add a pre-condition relating it, or make it REQUIRED)",
+                f"INFERRED parameter {key} is mentioned by no pre-condition, so SkiROS2 "
+                f"grounds it by type alone, to the first element of {kind} in the world "
+                "model: ambiguous when several elements fit (add a pre-condition relating "
+                "it to another parameter, or make it REQUIRED)",
                 file, line, param=key)
 
 

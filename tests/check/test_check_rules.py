@@ -81,7 +81,9 @@ CASES: dict[str, tuple[str, str]] = {
                                                                '"middle_impl")')),
     "EZ304": (tree('self.skill("Child", "", remap={"Goal": "Box"})'),
               tree(f'self.skill("Child", "", {TARGET})')),
-    "EZ305": (tree('self.skill("Middle", "", remap={"Target": "Box"})'),
+    "EZ305": (tree('self.skill("Middle", "", remap={"Speed": "Box"})'),
+              tree('self.skill("Middle", "", remap={"Spot": "Box"})')),
+    "EZ314": (tree('self.skill("Middle", "", remap={"Target": "Box"})'),  # middle_impl's own
               tree('self.skill("Middle", "", remap={"Spot": "Box"})')),
     "EZ306": (tree('self.skill("Child", "", remap={"Target": "Speed"})'),
               tree(f'self.skill("Child", "", {TARGET})')),

@@ -61,6 +61,8 @@ CASES = [  # (code, triggering node, near miss)
      SkillNode("Navigate", "", (("Target", "Shelf"),))),
     ("EZ305", SkillNode("Fetch", "", (("Object", "Part"),)),
      SkillNode("Fetch", "", (("Shelf", "Shelf"),))),
+    ("EZ314", SkillNode("Fetch", "", (("Target", "Part"),)),  # Fetch's Navigate remapped it
+     SkillNode("Fetch", "", (("Shelf", "Shelf"),))),
     ("EZ306", SkillNode("Pick", "", (("Object", "Speed"),)),
      SkillNode("Pick", "", (("Object", "Part"),))),
     ("EZ307", SkillNode("Wait", "", (), (("Time", 1.0),)),

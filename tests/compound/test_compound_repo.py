@@ -40,7 +40,7 @@ def _markers() -> set[tuple[str, int, str]]:
 
 def test_every_marked_mistake_and_nothing_else_is_reported() -> None:
     expected = _markers()
-    assert {code for _, _, code in expected} >= {f"EZ3{n:02d}" for n in range(1, 14)} - {
+    assert {code for _, _, code in expected} >= {f"EZ3{n:02d}" for n in range(1, 15)} - {
         "EZ300"}, "the fixture has a case for every compound check"
     found = _check(REPO, "--select", "EZ3")
     reported = {(Path(str(d["path"])).name, int(str(d["line"])), str(d["code"]))
@@ -63,16 +63,18 @@ def test_the_compound_findings_say_where_what_and_how_to_fix() -> None:
 
 def test_compound_errors_on_the_other_fixture_repositories_are_real() -> None:
     """Each folder is its own repository (their descriptions share names such as ``Wait``,
-    as unrelated repositories do). One real mistake, in both versions of one file:
+    as unrelated repositories do). No error; one warning, in both versions of one file:
     ``empty_bin`` remaps its vacuum cup (``rparts:VacuumEffectorSingleCup``) onto
     ``Place``'s ``Gripper`` (``rparts:GripperEffector``), classes no element can belong to
     at once."""
     others = [p for p in (ROOT / "fixtures").iterdir() if p.is_dir() and p != REPO]
     found = [d for other in others for d in _check(other, "--select", "EZ3")]
-    errors = {(Path(str(d["path"])).parent.name, Path(str(d["path"])).name, d["line"],
-               d["code"]) for d in found if d["severity"] == "error"}
-    assert errors == {("legacy", "mixed_impl.py", 103, "EZ311"),
-                      ("migrated", "mixed_impl.py", 104, "EZ311")}
+    shown = {(Path(str(d["path"])).parent.name, Path(str(d["path"])).name, d["line"],
+              d["code"], d["severity"]) for d in found}
+    assert {s for s in shown if s[4] == "error"} == set()
+    assert {s for s in shown if s[3] == "EZ311"} == {
+        ("legacy", "mixed_impl.py", 103, "EZ311", "warning"),
+        ("migrated", "mixed_impl.py", 104, "EZ311", "warning")}
 
 
 def test_the_clean_tasks_use_the_standard_library_and_stay_silent() -> None:
@@ -80,7 +82,7 @@ def test_the_clean_tasks_use_the_standard_library_and_stay_silent() -> None:
     assert '"Wait"' in source and '"WmSetRelation"' in source
     found = _check(REPO / "lab_tasks" / "src" / "lab_tasks" / "tasks.py",
                    REPO / "lab_descriptions", "--select", "EZ3")
-    assert [(d["line"], d["code"]) for d in found] == [(59, "EZ305")]
+    assert [(d["line"], d["code"]) for d in found] == []
 
 
 def test_findings_say_how_the_tree_was_obtained() -> None:
@@ -140,7 +142,8 @@ class patrol(SkillBase):
 def test_skill_libraries_of_the_project_join_the_index(tmp_path: Path) -> None:
     """``Scan`` and ``Survey`` live in a library folder: without it both children are
     unknown; with ``[tool.ezmigrate] skill-libraries`` they resolve, the misspelt specify
-    key is found, and a remap key only the library's compound tree declares is info."""
+    key is found, and a remap of a key the library's compound tree already remapped (Scan's
+    ``Area``, to ``Zone``) is the error SkiROS2 logs as "already remapped"."""
     (tmp_path / "lib").mkdir()
     (tmp_path / "lib" / "library.py").write_text(LIBRARY)
     project = tmp_path / "project"
@@ -150,7 +153,7 @@ def test_skill_libraries_of_the_project_join_the_index(tmp_path: Path) -> None:
     assert alone == {(17, "EZ301"), (18, "EZ301")}
     (project / "pyproject.toml").write_text('[tool.ezmigrate]\nskill-libraries = ["../lib"]\n')
     found = {(d["line"], d["code"]) for d in _check(project, "--select", "EZ3")}
-    assert found == {(17, "EZ307"), (18, "EZ305")}
+    assert found == {(17, "EZ307"), (18, "EZ314")}
 
 
 def test_no_compound_error_on_generated_repositories(tmp_path: Path) -> None:

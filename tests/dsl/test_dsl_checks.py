@@ -383,7 +383,16 @@ def test_an_inferred_parameter_no_pre_condition_mentions_is_reported():
                                                                "Place")
     assert finding.line == line_of("Place: INFERRED[skiros.Location],", HERE)
     assert finding.message.startswith("INFERRED parameter Place is mentioned by no "
-                                      "pre-condition, so SkiROS2 can never infer it")
+                                      "pre-condition, so SkiROS2 grounds it by type alone")
+    assert "skiros:Location" in finding.message and "several elements" in finding.message
+
+
+def test_an_inferred_parameter_that_is_no_element_is_not_judged():
+    class Skill(SkillDescription):
+        def description(self, Place: INFERRED[skiros.Location], Speed: INFERRED[float] = 0.5):
+            self.pre_conditions += Place.is_specified()
+
+    assert [f.kind for f in check(Skill)] == []
 
 
 def test_the_same_condition_wanted_and_unwanted_in_one_list_is_a_contradiction():
