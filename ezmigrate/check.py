@@ -26,6 +26,7 @@ from .lint.diagnostic import Diagnostic, Positions, diagnostic
 from .lint.legacy import legacy_hits
 from .lint.plain_reader import Declined, read_plain
 from .lint.world_model import SCENE_SUFFIX, WorldRun, scene_files, world_diagnostics
+from .load_cache import LoadCache, cached_loads
 from .prefilter import may_hold_descriptions
 from .progress import Progress
 from .project import settle
@@ -143,7 +144,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               progress: Callable[[str], None] | None = None,
               skill_libraries: tuple[Path, ...] = (), compounds: bool = True,
               world: WorldRun | None = None,
-              include_vendored: bool = False) -> CheckOutcome:
+              include_vendored: bool = False,
+              cache_dir: Path | None = None) -> CheckOutcome:
     """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
     the compound skills' trees against every description found (unless ``compounds`` is
     False: no EZ3 code is selected, so their reading and tracing would be thrown away),
@@ -164,7 +166,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
                       named=tuple(paths), exclude=exclude)
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
-                       standby, world)
+                       standby, world, cache_dir)
         outcome.files += len(world.scenes)
         return outcome
     finally:
@@ -175,7 +177,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyIndex | None,
          pool: PoolConfig, progress: Callable[[str], None] | None,
          skill_libraries: tuple[Path, ...], trees: Trees | None,
-         standby: list[Standby], world: WorldRun) -> CheckOutcome:
+         standby: list[Standby], world: WorldRun,
+         cache_dir: Path | None = None) -> CheckOutcome:
     """``run_check`` once its compound pass (``trees``) is set up."""
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
@@ -201,8 +204,13 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
                 loadable.append(candidate)
     if loadable and progress is not None:
         progress(f"loading {len(loadable)} EzSkiROS files")
-    outcomes = run_jobs([job_for(c.path, None, c.root) for c in loadable],
-                        pool) if loadable else []
+    cache = None if cache_dir is None else LoadCache.for_run(
+        cache_dir, [(str(c.path), data) for c, data in read],
+        index.fingerprint if index is not None else "", pool.python)
+    data_of = {c.path: data for c, data in read}
+    outcomes = cached_loads([job_for(c.path, None, c.root) for c in loadable],
+                            [data_of[c.path] for c in loadable],
+                            lambda jobs: run_jobs(jobs, pool), cache)
     if trees is not None:
         outcome.diagnostics += _compound(read, results, list(zip(loadable, outcomes,
                                                                  strict=True)),

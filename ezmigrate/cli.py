@@ -26,9 +26,12 @@ from .config import ConfigError, load_project_config
 from .diffs import colour, unified_diff
 from .discover import excluded_under
 from .options import CommandLine, Options
+from .paths import from_repository, in_report, scrub
+from .paths import shown as shown_path
 from .report import MarkdownOptions, Summary, json_report, markdown_report, relaxed
 from .results import FileResult
 from .target import robot_python, target_for, verified_with
+from .written_lines import as_written
 
 EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
 EXIT_BROKEN_PIPE = 128 + 13  # as a shell reports a process ended by SIGPIPE
@@ -141,8 +144,8 @@ def _report_path(path: Path | None) -> Path | None:
 
 def _write_report(path: Path, results: list[FileResult], options: MarkdownOptions) -> None:
     markdown = path.suffix.lower() == ".md"
-    text = markdown_report(results, options) if markdown else json_report(results,
-                                                                          options=options)
+    text = scrub(markdown_report(results, options) if markdown
+                 else json_report(results, options=options))  # no path of this machine
     # a file name that is not valid UTF-8 reaches us as lone surrogates (caf\udce9.py), which
     # UTF-8 cannot encode: written as the text \udce9, which in JSON is the escape of that
     # very surrogate (json.load and os.fsencode give back the file's real bytes)
@@ -230,8 +233,9 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         if not (dry_run or check):  # whatever happened, stdout gets a whole file
             new = result.new_source
             sys.stdout.buffer.write(new if isinstance(new, bytes) else data)
-        _finish([result], report, not (dry_run or check), check, strict, [],
-                 MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used))
+        _finish([as_written(replace(result, path=in_report(result.path)), data)], report,
+                not (dry_run or check), check, strict, [],
+                MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used))
     from .session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
 
     index, ontology_files, used = _load_index(ontology, start, paths, options)
@@ -249,10 +253,12 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     outcome = run_rewrite(request, index)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
-    for item in outcome.migrated:  # the bytes of a file that does not change stay on disk
-        _print_result(str(item.candidate.path), item.candidate.relative,
-                      item.original if item.result.changed else b"", item.result, dry_run,
-                      check, color, debug)
+    results = _as_written(outcome.migrated)
+    for item, result in zip(outcome.migrated, results, strict=True):  # unchanged: bytes stay
+        _print_result(shown_path(item.candidate.path),
+                      from_repository(item.candidate.path, item.candidate.relative),
+                      item.original if result.changed else b"", result, dry_run, check, color,
+                      debug)
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
     declared = _declare_runtime(outcome, request, color) if package_xml and not output_dir \
@@ -266,10 +272,19 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
             options.pool(ontology_files))
         scenes = _scene_section(paths, options.exclude, index)
-    _finish([m.result for m in outcome.migrated], report, request.writes, check, strict,
+    _finish(results, report, request.writes, check, strict,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
                                              compounds=compounds, verifier=verifier,
                                              scenes=scenes, notes=declared))
+
+
+def _as_written(migrated: Sequence[Any]) -> list[FileResult]:
+    """Each file's result as stderr and the report show it: named relative to the working
+    directory (no absolute path in a report), lines those of the file written, with the
+    legacy line beside them (``written_lines``)."""
+    return [as_written(replace(m.result, path=in_report(m.candidate.path,
+                                                        m.candidate.relative)), m.original)
+            for m in migrated]
 
 
 def _scene_section(paths: tuple[Path, ...], exclude: tuple[str, ...], index: Any) -> list[str]:
@@ -278,6 +293,17 @@ def _scene_section(paths: tuple[Path, ...], exclude: tuple[str, ...], index: Any
     from .scene_diagram import markdown_section
 
     return markdown_section(scene_files(list(paths), exclude), index)
+
+
+def _cache_dir(paths: Sequence[Path], options: Options) -> Path:
+    """Where ``check`` keeps its cache: in the project (the ``pyproject.toml`` folder),
+    else the git checkout or ROS package of the first path, else the working directory."""
+    from ezskiros_runtime.ontology.discovery import enclosing_project
+
+    from .load_cache import FOLDER
+
+    base = options.project or enclosing_project(paths[0]) or Path.cwd()
+    return base / FOLDER
 
 
 def _declare_runtime(outcome: Any, request: Any, color: bool | None) -> list[str]:
@@ -439,6 +465,9 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 @click.option("--include-vendored", is_flag=True,
               help="Also go into vendored copies of SkiROS2's own packages (skiros2_common, "
                    "skiros2_std_skills, ...), which are skipped with a note by default.")
+@click.option("--no-cache", is_flag=True,
+              help="Load every EzSkiROS file again instead of reusing what an earlier run "
+                   "of an unchanged repository loaded (kept in .ezmigrate_cache).")
 @click.option("--quiet", "-q", is_flag=True, help="Only errors; no summary.")
 @click.option("--scene", type=click.Path(path_type=Path, exists=True, dir_okay=False),
               help="A world-model scene (*.turtle): say which skills cannot start from it "
@@ -448,7 +477,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
           ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
           statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
           python: str | None, exclude: tuple[str, ...], include_vendored: bool, quiet: bool,
-          scene: Path | None, debug: bool, fix: bool = False,
+          scene: Path | None, debug: bool, no_cache: bool = False, fix: bool = False,
           show_diff: bool = False) -> None:
     """Lint SkiROS2 and EzSkiROS descriptions under PATHS (codes: docs/rules.md).
 
@@ -479,10 +508,12 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
                         options.skill_libraries,
                         compounds=any(c.startswith("EZ3") for c in selection.codes()),
                         world=_world_run(paths, options.exclude, scene),
-                        include_vendored=include_vendored)
+                        include_vendored=include_vendored,
+                        cache_dir=None if no_cache else _cache_dir(paths, options))
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
-    found = apply(outcome.diagnostics, outcome.sources, selection)
+    found = [replace(d, path=shown_path(d.path))  # relative to the working directory
+             for d in apply(outcome.diagnostics, outcome.sources, selection)]
     if fix or show_diff:
         from .fixes import fix_findings
 

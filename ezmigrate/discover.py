@@ -34,7 +34,7 @@ _PACKAGE_NAME = re.compile(rb"<name>\s*([A-Za-z0-9_]+)\s*</name>")
 
 ALWAYS_EXCLUDED = frozenset({".git", ".hg", ".svn", "__pycache__", ".venv", "venv", ".tox",
                              ".mypy_cache", ".ruff_cache", ".pytest_cache", "node_modules",
-                             "build", "dist", ".eggs"})
+                             "build", "dist", ".eggs", ".ezmigrate_cache"})
 
 
 @dataclass(frozen=True)

@@ -125,10 +125,13 @@ def ezskiros_double_places(path: str, source: str, models: Iterable[SkillModel],
 def _post_lines(source: str) -> dict[str, list[tuple[int, str]]]:
     """``{class: [(line, text of the added condition)]}`` for every
     ``self.post_conditions += ...`` in a module."""
+    if "post_conditions" not in source:
+        return {}
     try:
         tree = ast.parse(source)
     except (SyntaxError, ValueError):
         return {}
+    lines = source.splitlines()
     found: dict[str, list[tuple[int, str]]] = {}
     for node in ast.walk(tree):
         if not isinstance(node, ast.ClassDef):
@@ -136,9 +139,17 @@ def _post_lines(source: str) -> dict[str, list[tuple[int, str]]]:
         for stmt in ast.walk(node):
             if isinstance(stmt, ast.AugAssign) and isinstance(stmt.target, ast.Attribute) \
                     and stmt.target.attr == "post_conditions":
-                text = ast.get_source_segment(source, stmt.value) or ""
-                found.setdefault(node.name, []).append((stmt.lineno, text))
+                found.setdefault(node.name, []).append((stmt.lineno,
+                                                        _text_from(lines, stmt.value)))
     return found
+
+
+def _text_from(lines: list[str], node: ast.expr) -> str:
+    """The source of ``node`` from its start to the end of its last line. Not
+    ``ast.get_source_segment``, which splits the whole module again for every node (most
+    of ``check``'s time on a migrated repository went there)."""
+    first = lines[node.lineno - 1].encode()[node.col_offset:].decode(errors="replace")
+    return "\n".join([first, *lines[node.lineno:node.end_lineno or node.lineno]])
 
 
 def _line_of(lines: list[tuple[int, str]], use: RelationUse) -> int:

@@ -1,0 +1,66 @@
+"""The runs a lab repeats: ``rewrite`` on a tree it already migrated, and ``check`` twice.
+
+A generated repository (``generate_repo.py``) is migrated once; then, each timed as a whole
+command (wall clock, median of ``--runs``):
+- ``rewrite --no-verify`` again: nothing to do, so it should cost about a read and a parse
+  of each skill file, less than the migration did;
+- ``check`` with an empty cache, then again with the cache it left (the second run on an
+  unchanged repository), and with ``--no-cache``.
+
+    .venv/bin/python bench/bench_second_run.py --files 1000 --runs 3
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+
+
+def _timed(args: list[str], cwd: Path) -> float:
+    started = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "ezmigrate", *args], cwd=cwd, check=False,
+                   capture_output=True, timeout=3600)
+    return time.perf_counter() - started
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--files", type=int, default=1000)
+    parser.add_argument("--skill-share", type=float, default=0.3)
+    parser.add_argument("--runs", type=int, default=3)
+    options = parser.parse_args()
+    with tempfile.TemporaryDirectory(prefix="ezmigrate-second-") as folder:
+        repo = Path(folder) / "repo"
+        subprocess.run([sys.executable, str(HERE / "generate_repo.py"), str(repo), "--files",
+                        str(options.files), "--skill-share", str(options.skill_share)],
+                       check=True, capture_output=True)
+        subprocess.run(["git", "init", "-q", str(repo)], check=True)
+        migration = _timed(["rewrite", "--no-verify", "."], repo)
+        rows = {"rewrite --no-verify (the migration)": [migration]}
+        for _ in range(options.runs):
+            rows.setdefault("rewrite --no-verify again (no-op)", []).append(
+                _timed(["rewrite", "--no-verify", "."], repo))
+            shutil.rmtree(repo / ".ezmigrate_cache", ignore_errors=True)
+            rows.setdefault("check, empty cache", []).append(
+                _timed(["check", "--exit-zero", "."], repo))
+            rows.setdefault("check again, cache of the first", []).append(
+                _timed(["check", "--exit-zero", "."], repo))
+            rows.setdefault("check --no-cache", []).append(
+                _timed(["check", "--exit-zero", "--no-cache", "."], repo))
+    print(f"| whole command ({options.files} files, skill share {options.skill_share}) "
+          "| median s |")
+    print("|---|---:|")
+    for name, times in rows.items():
+        print(f"| {name} | {statistics.median(times):.2f} |")
+
+
+if __name__ == "__main__":
+    main()
