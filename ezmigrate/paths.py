@@ -4,13 +4,14 @@ Why: ruff and black print paths relative to the working directory when the file 
 it (what a user can paste into their editor or shell), and a unified diff names files
 relative to the repository root (``a/pkg/x.py``) so that ``git apply`` from the root takes
 it. A report lands in a pull request, so it must never carry a path of the machine that
-made it: a file outside the working directory is named relative to its repository, else by
-its name alone.
+made it: a file outside the working directory is named relative to its repository, else
+relative to the PATH it was found under.
 """
 
 from __future__ import annotations
 
 import os
+import re
 from functools import lru_cache
 from pathlib import Path
 
@@ -28,25 +29,28 @@ def shown(path: Path | str) -> str:
     return text
 
 
-def in_report(path: Path | str) -> str:
-    """``path`` for a report: ``shown``, unless that is absolute (then relative to its
-    repository, or its name alone): no report names a folder of the machine that wrote it."""
+def in_report(path: Path | str, fallback: str | None = None) -> str:
+    """``path`` for a report: ``shown``, unless that is absolute (then ``from_repository``):
+    no report names a folder of the machine that wrote it."""
     text = shown(path)
     if not os.path.isabs(text):
         return text
-    return from_repository(text)
+    return from_repository(text, fallback)
 
 
-def from_repository(path: Path | str) -> str:
+def from_repository(path: Path | str, fallback: str | None = None) -> str:
     """``path`` relative to the root of the git repository holding it (the names of a
     diff's ``a/``/``b/`` headers), else relative to the working directory when inside it,
-    else its name."""
+    else ``fallback`` (the path relative to the PATH argument it was found under), else its
+    name."""
     absolute = Path(os.path.abspath(path))
     root = repository_root(absolute.parent)
     if root is not None:
         return absolute.relative_to(root).as_posix()
     text = shown(absolute)
-    return text if not os.path.isabs(text) else absolute.name
+    if not os.path.isabs(text):
+        return text
+    return fallback if fallback is not None and not os.path.isabs(fallback) else absolute.name
 
 
 @lru_cache(maxsize=256)
@@ -57,3 +61,19 @@ def repository_root(folder: Path) -> Path | None:
         if (candidate / ".git").exists():
             return candidate
     return None
+
+
+_ABSOLUTE = re.compile(r"(?<![\w.~/-])/[^\s\"'`,;:()\[\]<>|*]+")
+"""An absolute POSIX path inside a text (not ``m/s``, not the ``/s`` of ``1 /s``)."""
+
+
+def scrub(text: str) -> str:
+    """``text`` with every absolute path that names a file or folder of this machine (an
+    ontology file, the interpreter, a traceback's file) written as ``in_report`` writes it:
+    what a report says must not depend on where it was made."""
+    def relative(match: re.Match[str]) -> str:
+        found = match.group(0).rstrip(".")
+        if not os.path.exists(found):
+            return match.group(0)
+        return in_report(found) + match.group(0)[len(found):]
+    return _ABSOLUTE.sub(relative, text)

@@ -81,7 +81,8 @@ class MarkdownOptions:
 
 def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
     data: dict[str, Any] = {
-        "file": file.path, "class": skill.name, "line": skill.line, "status": skill.status,
+        "file": file.path, "class": skill.name, "line": skill.line,
+        "legacy_line": skill.legacy_line, "status": skill.status,
         "code": skill.code, "reason": skill.reason,
         "findings": [f.to_json() for f in skill.findings],
         "equivalent": skill.equivalent,
@@ -133,6 +134,11 @@ def _verdict(skill: SkillResult) -> str:
     return f"{skill.status} ({skill.code})" if skill.code else skill.status
 
 
+def _where(line: int, legacy: int | None) -> str:
+    """``line 12`` in the written file, with ``legacy line 10`` beside it when they differ."""
+    return f"line {line}" + (f", legacy line {legacy}" if legacy not in (None, line) else "")
+
+
 def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> str:
     """A review report: summary table, then each file and skill with its verdict."""
     s = Summary.of(results)
@@ -160,7 +166,8 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
             head, _, body = note.partition("\n")
             out += [f"- {head}"] + (["", "```text", body, "```", ""] if body else [])
         for skill in file.skills:
-            out.append(f"- **{skill.name}** (line {skill.line}): {_verdict(skill)}")
+            out.append(f"- **{skill.name}** ({_where(skill.line, skill.legacy_line)}): "
+                       f"{_verdict(skill)}")
             if skill.reason:
                 out.append(f"  - reason: {skill.reason}")
             for d in skill.diff or ():
@@ -170,7 +177,7 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
                 if d.get("after") is not None:
                     out.append(f"    - migrated: `{d['after']}`")
             for f in skill.findings:
-                where = f"line {f.line}" if f.line else "skill"
+                where = _where(f.line, f.legacy_line) if f.line else "skill"
                 findings.append(f"- `{file.path}` {skill.name} ({where}) **{f.code}** "
                                 f"{f.kind}: {f.message}")
         out.append("")

@@ -28,6 +28,8 @@ class ReviewFinding:
     kind: str
     line: int
     message: str
+    legacy_line: int | None = None
+    """The line in the legacy file when ``line`` is the written file's (``written_lines``)."""
 
     @property
     def code(self) -> str:
@@ -52,6 +54,8 @@ class SkillResult:
     diff: list[dict[str, Any]] | None = None
     static: StaticDescription | None = None
     """What a converted legacy description declares, for ``check``'s static early checks."""
+    legacy_line: int | None = None
+    """The line in the legacy file when ``line`` is the written file's (``written_lines``)."""
 
     @property
     def code(self) -> str | None:

@@ -13,7 +13,8 @@ from verify_support import LATE_CONSTANT, LEGACY, PAPER_AXIOMS, cli, tree
 
 from ezskiros_runtime.codes import code_for
 
-SKILL_KEYS = {"file", "class", "line", "status", "code", "reason", "findings", "equivalent"}
+SKILL_KEYS = {"file", "class", "line", "legacy_line", "status", "code", "reason", "findings",
+              "equivalent"}
 LEGACY_SIDE = "addParam('Speed', 1.0, ParamTypes.Optional)"
 MIGRATED_SIDE = "addParam('Speed', 0.5, ParamTypes.Optional)"
 
@@ -49,7 +50,7 @@ def test_json_report_follows_the_schema(reports):
         assert isinstance(skill["line"], int) and skill["line"] > 0
         assert skill["code"] == {"skipped": "EZ902", "failed": "EZ903"}.get(skill["status"])
         for finding in skill["findings"]:
-            assert set(finding) == {"kind", "line", "message", "code"}, finding
+            assert set(finding) == {"kind", "line", "legacy_line", "message", "code"}, finding
             assert finding["code"] == code_for(finding["kind"]), finding
 
 
@@ -82,14 +83,15 @@ def test_markdown_report_for_code_review(reports):
     table = lines.index("| files | skills | converted | skipped | failed | unchanged |")
     assert lines[table + 2] == "| 4 | 20 | 9 | 10 | 1 | 0 |"
     late = _section(text, "## `late_constant.py`")
-    assert "- **Move** (line 8): failed (EZ903)" in late
+    # lines of the written file (imports changed above), the legacy line beside them
+    assert "- **Move** (line 10, legacy line 8): failed (EZ903)" in late
     assert f"    - legacy: `{LEGACY_SIDE}`" in late
     assert f"    - migrated: `{MIGRATED_SIDE}`" in late
-    assert "- **Stop** (line 14): converted, equivalent" in late
+    assert "- **Stop** (line 16, legacy line 14): converted, equivalent" in late
     skipped = _section(text, "## `not_convertible.py`")
     assert "- **FollowWaypoints** (line 20): skipped (EZ902)\n  - reason: a loop at line 23" \
         in skipped
-    assert "- **Navigate** (line 11): converted, equivalent" in text
+    assert "- **Navigate** (line 10, legacy line 11): converted, equivalent" in text
 
 
 def test_markdown_lists_findings_apart_from_equivalence(reports):
