@@ -25,7 +25,7 @@ from ezskiros_runtime.model import SkillModel
 from .core.classes import DescriptionClass, description_classes, inert_classes
 from .core.context import ExtractContext, StatementLines, module_constants, positions_of
 from .core.cst_facts import facts_of
-from .core.emit import DEFAULT_TARGET, DSL_NAMES, EmitContext
+from .core.emit import DEFAULT_TARGET, DSL_NAMES, EmitContext, quote_style
 from .core.function import build_description, emitted_params
 from .core.guard import encoding_of, lost_line, refuse
 from .core.holes import Holes, stand_in
@@ -441,7 +441,8 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         emit = EmitContext(index=settings.index, rules=RULES, self_name=ctx.self_name,
                            aliases=aliases,
                            reserved=_reserved(skill, settings.index, ctx.self_name),
-                           column=create.column + 4, target=settings.target)
+                           column=create.column + 4, target=settings.target,
+                           quotes=quote_style(cls.node))
         plan.new_function = build_description(func, skill, params, emit,
                                               module.config_for_parsing)
         effective[cls.name] = skill.operations

@@ -22,6 +22,10 @@ import re
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
+import libcst as cst
+
+from .tree_walk import walk
+
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
@@ -45,9 +49,24 @@ LINE_LIMIT = 99
 _QNAME = re.compile(r"([A-Za-z][A-Za-z0-9_]*):([A-Za-z][A-Za-z0-9_]*)\Z")
 
 
-def quote(text: str) -> str:
-    """A double-quoted Python string literal for ``text``."""
-    return json.dumps(text, ensure_ascii=False)
+def quote(text: str, quotes: str = '"') -> str:
+    """A Python string literal for ``text``, in ``quotes`` (``"`` or ``'``) unless the text
+    holds that quote and not the other (black's rule: the fewer escapes)."""
+    double = json.dumps(text, ensure_ascii=False)
+    if quotes != "'" or "'" in text:
+        return double
+    return "'" + double[1:-1].replace('\\"', '"') + "'"
+
+
+def quote_style(node: cst.CSTNode) -> str:
+    """The quote the code under ``node`` uses most for one-line strings (``'`` or ``"``; a
+    tie is ``"``): the emitted strings follow the file's own style, not ours. Why per class:
+    the strings a migration writes replace those of its ``createDescription``."""
+    counts = {"'": 0, '"': 0}
+    for found in walk(node):
+        if isinstance(found, cst.SimpleString) and found.quote in counts:
+            counts[found.quote] += 1
+    return "'" if counts["'"] > counts['"'] else '"'
 
 
 @dataclass
@@ -66,6 +85,12 @@ class EmitContext:
     """Width of the body's indentation, for wrapping long lines."""
     target: tuple[int, int] = DEFAULT_TARGET
     """The oldest Python the written code must run on (see ``list_type``)."""
+    quotes: str = '"'
+    """The quote the file uses (``quote_style``): every string written is spelt with it."""
+
+    def quote(self, text: str) -> str:
+        """A string literal for ``text`` in the file's own quote style."""
+        return quote(text, self.quotes)
 
     def use(self, name: str) -> str:
         """Note that ``name`` must be imported from ``ezskiros_runtime``; its local name."""
@@ -86,7 +111,7 @@ class EmitContext:
     def subject(self, key: str) -> str:
         """The expression for a key inside ``description``: its parameter, else ``self.param``."""
         name = self.param_names.get(key)
-        return name if name is not None else f"{self.self_name}.param({quote(key)})"
+        return name if name is not None else f"{self.self_name}.param({self.quote(key)})"
 
     def _qname(self, text: str) -> tuple[str, str, str] | None:
         """``(prefix, local, iri)`` when ``text`` is a plain ``prefix:Local`` the index knows."""

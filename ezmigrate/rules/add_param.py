@@ -17,7 +17,7 @@ from collections.abc import Callable
 import libcst as cst
 
 from ..core.context import ExtractContext, bind_arguments
-from ..core.emit import EmitContext, quote
+from ..core.emit import EmitContext
 from ..core.ir import (
     ElementValue,
     ExtractedSkill,
@@ -171,11 +171,11 @@ def annotation(op: ParamOp, python_name: str, ctx: EmitContext) -> tuple[str, st
     """
     extras: list[str] = []
     if op.description:
-        extras.append(f"{ctx.use('DESC')}({op.description_code or quote(op.description)})")
+        extras.append(f"{ctx.use('DESC')}({op.description_code or ctx.quote(op.description)})")
     if isinstance(op.value, ElementValue):
         extras += [ctx.use(o) for o in op.options]
     if python_name != op.key:
-        extras.append(f"{ctx.use('KEY')}({quote(op.key)})")
+        extras.append(f"{ctx.use('KEY')}({ctx.quote(op.key)})")
     marker = MARKERS[op.kind]
     if isinstance(op.value, OpaqueValue) and op.value.known is None:
         if extras:
@@ -195,7 +195,7 @@ def _type_and_default(op: ParamOp, ctx: EmitContext) -> tuple[str, str | None]:
             return f"{ctx.use('ELEMENT')}()", None
         assert value.type_string is not None
         ref = ctx.class_ref(value.type_string)
-        return (ref or f"{ctx.use('ELEMENT')}({quote(value.type_string)})"), None
+        return (ref or f"{ctx.use('ELEMENT')}({ctx.quote(value.type_string)})"), None
     if isinstance(value, TypeValue):
         return value.name, None
     if isinstance(value, OpaqueValue):

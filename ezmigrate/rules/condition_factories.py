@@ -22,7 +22,7 @@ import libcst as cst
 from ezskiros_runtime.labels import conventional_label
 
 from ..core.context import ExtractContext, bind_arguments
-from ..core.emit import EmitContext, quote
+from ..core.emit import EmitContext
 from ..core.ir import CondSpec, Literal, Unsupported
 from ..core.registry import condition_emitter, condition_replayer
 from ..core.replay import literal_value as lit
@@ -123,7 +123,7 @@ def emit_relation(spec: CondSpec, ctx: EmitContext) -> str:
     subject, obj = ctx.subject(spec.subject), ctx.subject(spec.object)
     short = ctx.short_property(spec.vocabulary)
     text = (f"{subject}.{short}({obj})" if short
-            else f"{subject}.relation({quote(spec.vocabulary)}, {obj})")
+            else f"{subject}.relation({ctx.quote(spec.vocabulary)}, {obj})")
     text = with_label(spec, text, ctx)
     if spec.kind == "abstract_relation":
         text = f"{ctx.use('abstract')}({text})"
@@ -139,7 +139,7 @@ def emit_property(spec: CondSpec, ctx: EmitContext) -> str:
     if short and spec.operator in OPERATORS:
         text = f"({subject}.{short} {OPERATORS[spec.operator]} {spec.value.code})"
     else:
-        text = (f"{subject}.property({quote(spec.vocabulary)}, {quote(spec.operator)}, "
+        text = (f"{subject}.property({ctx.quote(spec.vocabulary)}, {ctx.quote(spec.operator)}, "
                 f"{spec.value.code})")
     return negated(spec, with_label(spec, text, ctx))
 
@@ -147,7 +147,7 @@ def emit_property(spec: CondSpec, ctx: EmitContext) -> str:
 @condition_emitter("has_property")
 def emit_has_property(spec: CondSpec, ctx: EmitContext) -> str:
     assert spec.vocabulary is not None and spec.subject is not None
-    ref = ctx.property_ref(spec.vocabulary) or quote(spec.vocabulary)
+    ref = ctx.property_ref(spec.vocabulary) or ctx.quote(spec.vocabulary)
     return negated(spec, with_label(spec, f"{ctx.subject(spec.subject)}.has({ref})", ctx))
 
 
@@ -161,7 +161,7 @@ def emit_state(spec: CondSpec, ctx: EmitContext) -> str:
 @condition_emitter("on_type")
 def emit_on_type(spec: CondSpec, ctx: EmitContext) -> str:
     assert spec.vocabulary is not None and spec.subject is not None
-    ref = ctx.class_ref(spec.vocabulary) or quote(spec.vocabulary)
+    ref = ctx.class_ref(spec.vocabulary) or ctx.quote(spec.vocabulary)
     return with_label(spec, f"{ctx.subject(spec.subject)}.is_a({ref})", ctx)
 
 
