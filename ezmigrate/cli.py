@@ -28,7 +28,7 @@ from .discover import excluded_under
 from .options import CommandLine, Options
 from .paths import from_repository, in_report, scrub
 from .paths import shown as shown_path
-from .report import MarkdownOptions, Summary, json_report, markdown_report, relaxed
+from .report import MarkdownOptions, Summary, counted, json_report, markdown_report, relaxed
 from .results import FileResult
 from .target import robot_python, target_for, verified_with
 from .written_lines import as_written
@@ -439,7 +439,11 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 
 
 @main.command()
-@click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path, exists=True))
+@click.argument("paths", nargs=-1, required=True,
+                type=click.Path(path_type=Path, allow_dash=True, exists=True))
+@click.option("--stdin-filename", type=click.Path(path_type=Path, dir_okay=False),
+              help="With PATH '-': the file stdin stands for (as ruff's flag): its project's "
+                   "configuration and ontology apply, and findings name it.")
 @click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
               help="Ontology file or folder (repeatable).")
 @click.option("--select", multiple=True, metavar="CODES",
@@ -477,7 +481,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
           ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
           statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
           python: str | None, exclude: tuple[str, ...], include_vendored: bool, quiet: bool,
-          scene: Path | None, debug: bool, no_cache: bool = False, fix: bool = False,
+          scene: Path | None, debug: bool, no_cache: bool = False,
+          stdin_filename: Path | None = None, fix: bool = False,
           show_diff: bool = False) -> None:
     """Lint SkiROS2 and EzSkiROS descriptions under PATHS (codes: docs/rules.md).
 
@@ -489,7 +494,18 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     from .output_formats import FORMATS
     from .output_formats import statistics as count
 
-    options = _options(paths[0], CommandLine(
+    shown_as: dict[str, str] = {}  # the stdin file's private copy -> the name it stands for
+    roots: Sequence[Path] = paths
+    anchor = paths[0]
+    if [str(p) for p in paths] == ["-"]:
+        from .stdin import stdin_file, stdin_roots
+
+        if fix or show_diff:
+            raise click.UsageError("--fix and --diff work on files, not on stdin")
+        copy = stdin_file(stdin_filename)
+        shown_as[str(copy)] = str(stdin_filename) if stdin_filename else "-"
+        paths, roots, anchor = (copy,), stdin_roots(stdin_filename), stdin_filename or Path.cwd()
+    options = _options(anchor, CommandLine(
         exclude=exclude, jobs=jobs, timeout=timeout, python=python, select=select or None,
         ignore=ignore, extend_select=extend_select))
     try:
@@ -500,7 +516,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
             extend_select=parse_selectors(options.extend_select, "--extend-select"))
     except SelectorError as error:
         raise click.UsageError(str(error)) from None
-    index, ontology_files, _ = _load_index(ontology, paths[0], paths, options)
+    index, ontology_files, _ = _load_index(ontology, anchor, roots, options)
     pool = options.pool(ontology_files)
     progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
         if sys.stderr.isatty() and not quiet else None
@@ -512,7 +528,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
                         cache_dir=None if no_cache else _cache_dir(paths, options))
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
-    found = [replace(d, path=shown_path(d.path))  # relative to the working directory
+    found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it
              for d in apply(outcome.diagnostics, outcome.sources, selection)]
     if fix or show_diff:
         from .fixes import fix_findings
@@ -525,8 +541,10 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     click.echo(count(shown) if statistics else FORMATS[output_format](shown), nl=False)
     errors = sum(1 for d in found if d.severity == "error")
     if not quiet:
-        click.echo(f"ezmigrate: {outcome.files} files checked, {outcome.skills} skills, "
-                   f"{errors} errors, {len(found) - errors} other findings", err=True)
+        others = len(found) - errors
+        click.echo(f"ezmigrate: {counted(outcome.files, 'file')} checked, "
+                   f"{counted(outcome.skills, 'skill')}, {counted(errors, 'error')}, "
+                   f"{others} other {'finding' if others == 1 else 'findings'}", err=True)
     sys.exit(EXIT_OK if exit_zero or not errors else EXIT_ATTENTION)
 
 

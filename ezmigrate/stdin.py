@@ -11,6 +11,8 @@ as for ``rewrite PATH``; ``--ignore-order`` and ``--ignore-labels`` do too.
 
 from __future__ import annotations
 
+import atexit
+import shutil
 import sys
 import tempfile
 from dataclasses import replace
@@ -26,6 +28,16 @@ if TYPE_CHECKING:
 
 NAME = "stdin_module.py"
 """What the one file of the project is called on disk while it is migrated and loaded."""
+
+
+def stdin_file(filename: Path | None) -> Path:
+    """Stdin's bytes in a private folder (removed when the process ends), named as the file
+    it stands for (``check -``: findings are then mapped back to that name)."""
+    folder = Path(tempfile.mkdtemp(prefix="ezmigrate-stdin-"))
+    atexit.register(shutil.rmtree, folder, True)
+    path = folder / (filename.name if filename is not None else NAME)
+    path.write_bytes(sys.stdin.buffer.read())
+    return path
 
 
 def stdin_roots(filename: Path | None) -> list[Path]:

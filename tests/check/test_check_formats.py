@@ -117,7 +117,7 @@ def test_exit_codes(tmp_path: Path):
 def test_progress_is_not_written_when_stderr_is_no_terminal(tmp_path: Path):
     run = cli(".", cwd=write(tmp_path, UNKNOWN))
     assert "checking" not in run.stderr
-    assert run.stderr.strip().splitlines()[-1].startswith("ezmigrate: 1 files checked")
+    assert run.stderr.strip().splitlines()[-1].startswith("ezmigrate: 1 file checked")
 
 
 def test_select_ignore_extend_select(tmp_path: Path):
