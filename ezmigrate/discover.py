@@ -23,6 +23,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from .paths import shown
 from .writing import is_temporary_name
 
 UPSTREAM_PACKAGES = frozenset({
@@ -135,6 +136,7 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
     """
     notes: list[str] = []
     found: dict[str, Candidate] = {}
+    named_files: set[str] = set()  # real paths of files named on the command line
     for given in paths:
         if not given.exists() and not given.is_symlink():
             notes.append(f"{given}: no such file or directory")
@@ -144,6 +146,7 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
         if given.is_file():
             if not any(_excluded(name, exclude) for name in _spellings(given, project, named=True)):
                 found.setdefault(os.path.realpath(given), Candidate(given, root))
+                named_files.add(os.path.realpath(given))
                 if stale is not None:
                     stale.extend(_temporaries_of(given))
             continue
@@ -159,6 +162,8 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
     ordered = sorted(found.items(), key=lambda pair: str(pair[1].path))
     if respect_gitignore:
         ignored = _git_ignored([real for real, _ in ordered])
+        notes += [f"{shown(c.path)}: skipped, git ignores it (.gitignore)"  # named: say so
+                  for real, c in ordered if real in ignored and real in named_files]
         ordered = [(real, c) for real, c in ordered if real not in ignored]
     return [c for _, c in ordered], notes
 
