@@ -200,9 +200,13 @@ RULES: tuple[Rule, ...] = (
          "another child writes.",
          ("remap-dangling",)),
     Rule("EZ309", "compound-call-shape", "error",
-         "A call SkiROS2 cannot use: self.skill(self.skill(...), ...), or a first argument "
-         "that is neither a type name nor a processor; nothing is attached.",
-         "Call the node with its children: self.skill(...)(child, ...).",
+         "A call SkiROS2 cannot use: self.skill(self.skill(...), ...), a first argument "
+         "that is neither a type name nor a processor (nothing is attached), or a call that "
+         "raises a TypeError when expand runs (a keyword typo such as specfiy=, a "
+         "non-empty string as remap). Checked from the syntax even when the tree cannot "
+         "be traced.",
+         "Call a node with its children (self.skill(...)(child, ...)); spell the keywords "
+         "as SkiROS2's self.skill(stype, slabel, remap, specify, preconditions).",
          ("compound-call-shape",)),
     Rule("EZ310", "processor-not-upstream", "warning",
          "A processor that upstream SkiROS2 does not have (RetryOnFail, Loop, InferInvalid: "
@@ -232,6 +236,11 @@ RULES: tuple[Rule, ...] = (
          "Remap the key's new name (the one the node below gave it), or drop one of the two "
          "remaps.",
          ("remap-key-remapped-below",)),
+    Rule("EZ315", "specify-parameter-object", "error",
+         "A specify value that is the parameter object self.params[\"X\"] rather than "
+         "its value: SkiROS2 logs an error and leaves the child's parameter unset.",
+         "Write self.params[\"X\"].value.",
+         ("specify-parameter-object",)),
     # EZ4xx: the world model (scenes, and what post-conditions leave in it)
     Rule("EZ401", "double-place", "warning",
          "The pre-conditions require a single-valued relation (a spatial parent, skiros:at) "

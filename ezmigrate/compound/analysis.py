@@ -26,7 +26,7 @@ from ..results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_batched
 from ..verify.protocol import LoadOutcome
 from .repository import RepositoryScan
-from .static import NeedsTrace, class_bases, implementations, read_compounds
+from .static import NeedsTrace, class_bases, expand_findings, implementations, read_compounds
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -58,6 +58,9 @@ class Trees:
     seen: set[str] = field(default_factory=set)
     on_first_trace: Callable[[], None] | None = None
     """Called when the first tree to trace turns up (``check`` starts a worker then)."""
+    syntax: dict[tuple[str, str], list[tuple[str, int, str]]] = field(default_factory=dict)
+    """``(path, class)`` -> mistakes its ``self.skill`` calls show in the syntax alone
+    (``static.expand_findings``): reported when the tree can be neither read nor traced."""
     named: tuple[Path, ...] = ()
     """The paths the run was given: the repository around them joins the skill index."""
     exclude: tuple[str, ...] = ()
@@ -75,6 +78,8 @@ class Trees:
                 return  # the static pass reports the file
         self.labels += implementations(tree)
         self.bases += class_bases(tree)
+        for cls, mistakes in expand_findings(tree).items():
+            self.syntax[(path, cls)] = mistakes
         pending = []
         for found in read_compounds(tree, path):
             if isinstance(found, NeedsTrace):
@@ -199,6 +204,10 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
     run = CompoundRun(models=trees.models)
     for path, model in trees.models:
         run.findings += [(path, f) for f in check_model(model, index, ontology)]
+        if isinstance(model, Unanalysable):
+            run.findings += [(path, CompoundFinding(kind, line, message, model.implementation))
+                             for kind, line, message in trees.syntax.get(
+                                 (path, model.implementation), ())]
     return run
 
 

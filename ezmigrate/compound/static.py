@@ -22,7 +22,12 @@ from ezskiros_runtime.compound.model import (
     ProcessorNode,
     SkillNode,
 )
-from ezskiros_runtime.compound.trace import ARGUMENTS
+from ezskiros_runtime.compound.trace import (
+    ARGUMENTS,
+    PARAMETER_OBJECT,
+    call_problem,
+    parameter_object_message,
+)
 
 from ..core.legacy_names import ast_dotted_name
 
@@ -177,9 +182,12 @@ class _Reader:
 
     def _skill(self, call: ast.Call, children: tuple[Node | CallProblem, ...]
                ) -> Node | CallProblem:
-        if any(isinstance(a, ast.Starred) for a in call.args) or len(call.args) > 5 \
+        if any(isinstance(a, ast.Starred) for a in call.args) \
                 or any(k.arg is None for k in call.keywords):
             raise _Computed(f"line {call.lineno} passes computed arguments")
+        problem = syntax_problem(call)
+        if problem is not None:
+            return CallProblem(problem, call.lineno)
         bound: dict[str, ast.expr] = dict(zip(ARGUMENTS, call.args, strict=False))
         for keyword in call.keywords:
             if keyword.arg not in ARGUMENTS or keyword.arg in bound:
@@ -217,8 +225,8 @@ class _Reader:
         return f"{base}({self._processor(node.args[0])})" if node.args else base
 
     def _pairs(self, node: ast.expr | None, call: ast.Call) -> tuple[tuple[str, Any], ...]:
-        if node is None:
-            return ()
+        if node is None or _empty(node):
+            return ()  # SkiROS2 iterates them: remap="" or [] is none
         if not isinstance(node, ast.Dict) or any(k is None for k in node.keys):
             raise _Computed(f"line {call.lineno} passes a computed remap or specify")
         pairs = []
@@ -233,7 +241,11 @@ class _Reader:
         return tuple(pairs)
 
     def _value(self, node: ast.expr, call: ast.Call) -> Any:
-        """A literal, or ``{"param": "X"}`` for ``self.params["X"].value``."""
+        """A literal, ``{"param": "X"}`` for ``self.params["X"].value``, or
+        ``{"parameter_object": "X"}`` for ``self.params["X"]`` (a mistake checks report)."""
+        key = _params_key(node, self.self_name)
+        if key is not None:
+            return {PARAMETER_OBJECT: key}
         if isinstance(node, ast.Attribute) and node.attr == "value" \
                 and isinstance(node.value, ast.Subscript) \
                 and isinstance(node.value.value, ast.Attribute) \
@@ -254,3 +266,78 @@ class _Reader:
         if isinstance(value, (tuple, set, bytes, complex)):
             raise _Computed(f"line {call.lineno} passes a value JSON cannot hold")
         return value
+
+
+def _empty(node: ast.expr) -> bool:
+    """``""``, ``[]``, ``()``, ``{}``, ``set()``: iterables SkiROS2 reads as no remap."""
+    if isinstance(node, ast.Constant):
+        return node.value in ("", b"")
+    if isinstance(node, (ast.List, ast.Tuple, ast.Set)):
+        return not node.elts
+    if isinstance(node, ast.Dict):
+        return not node.keys
+    return isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
+        and node.func.id in ("set", "dict", "list", "tuple") and not node.args \
+        and not node.keywords
+
+
+def _params_key(node: ast.expr, self_name: str) -> str | None:
+    """``X`` for ``self.params["X"]`` (the parameter object, not its value)."""
+    if isinstance(node, ast.Subscript) and isinstance(node.value, ast.Attribute) \
+            and node.value.attr == "params" and isinstance(node.value.value, ast.Name) \
+            and node.value.value.id == self_name:
+        key = node.slice
+        if isinstance(key, ast.Constant) and isinstance(key.value, str):
+            return key.value
+        return ast.unparse(key)
+    return None
+
+
+def syntax_problem(call: ast.Call) -> str | None:
+    """What makes this ``self.skill(...)`` call raise whatever ``expand`` computes: the
+    tracer's ``call_problem``, read from the syntax (keywords, argument count, a literal
+    string as remap or specify)."""
+    keywords = {k.arg: k.value for k in call.keywords if k.arg is not None}
+    bound: dict[str, Any] = {}
+    for name, value in [*zip(ARGUMENTS, call.args, strict=False), *keywords.items()]:
+        if isinstance(value, ast.Constant):
+            bound[name] = value.value
+    return call_problem(keywords, bound, len(call.args))
+
+
+def expand_findings(tree: ast.Module) -> dict[str, list[tuple[str, int, str]]]:
+    """``{class: [(kind, line, message)]}``: mistakes in every ``self.skill(...)`` call of a
+    compound class's ``expand``, read from the syntax alone, so that they are reported even
+    when the tree can be neither read nor traced (a branch on the world model). Readable
+    trees report the same mistakes from their model."""
+    found: dict[str, list[tuple[str, int, str]]] = {}
+    for cls in compound_classes(tree):
+        expand = [m for m in cls.body if isinstance(m, ast.FunctionDef)
+                  and m.name == "expand"][-1]
+        if not expand.args.args:
+            continue
+        me = expand.args.args[0].arg
+        for node in ast.walk(expand):
+            if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                    and node.func.attr == "skill" and isinstance(node.func.value, ast.Name)
+                    and node.func.value.id == me):
+                continue
+            problem = syntax_problem(node)
+            if problem is not None:
+                found.setdefault(cls.name, []).append(("compound-call-shape", node.lineno,
+                                                       problem))
+            for key in _specified_objects(node, me):
+                found.setdefault(cls.name, []).append(
+                    ("specify-parameter-object", node.lineno, parameter_object_message(key)))
+    return found
+
+
+def _specified_objects(call: ast.Call, me: str) -> list[str]:
+    """Keys of ``self.params[...]`` given as ``specify`` values without ``.value``."""
+    given = [k.value for k in call.keywords if k.arg == "specify"] + call.args[3:4]
+    found = []
+    for value in given:
+        if isinstance(value, ast.Dict):
+            found += [k for k in (_params_key(v, me) for v in value.values) if k is not None]
+    return found
+

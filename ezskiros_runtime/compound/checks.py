@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 from .library import ROBOT, DescriptionInfo, SkillIndex, type_name
 from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
-from .trace import Unanalysable
+from .trace import PARAMETER_OBJECT, Unanalysable, parameter_object_message
 
 if TYPE_CHECKING:
     from ..ontology.index import OntologyIndex
@@ -207,7 +207,11 @@ class _Checker:
                  renamed: dict[str, str]) -> None:
         keys = {renamed.get(k, k) for k in child.declared()}
         specified = {k for k, _ in node.specify}
-        for key, _ in node.specify:
+        for key, value in node.specify:
+            if isinstance(value, dict) and PARAMETER_OBJECT in value:
+                self.add("specify-parameter-object", node.line,
+                         parameter_object_message(str(value[PARAMETER_OBJECT])), node.type,
+                         f"Write self.params[{value[PARAMETER_OBJECT]!r}].value.")
             if key not in keys:
                 why = f" (remapped, it is called {renamed[key]!r})" if key in renamed else ""
                 self.add("specify-key-unknown", node.line,

@@ -16,6 +16,7 @@ does, in its verification sandbox).
 
 from __future__ import annotations
 
+import difflib
 import sys
 from dataclasses import dataclass
 from typing import Any
@@ -24,6 +25,9 @@ from ..legacy.skill import SkillWrapper
 from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
 
 ARGUMENTS = ("stype", "slabel", "remap", "specify", "preconditions")
+PARAMETER_OBJECT = "parameter_object"
+"""A ``specify`` value that is the parameter object ``self.params["X"]``, not its value:
+``{"parameter_object": "X"}`` in a tree's JSON."""
 
 
 @dataclass(frozen=True)
@@ -36,13 +40,30 @@ class Unanalysable:
 
 
 class ParamRef:
-    """``self.params["X"].value`` while tracing: the value is not known, its source is."""
+    """``self.params["X"].value`` while tracing: the value is not known, its source is.
 
-    def __init__(self, key: str) -> None:
+    Attributes and calls on it (``.value.label``, ``.value.getProperty("p")``) give further
+    symbols, as an element's properties would; branching or iterating on one raises, since
+    only the running skill knows it. Its ``repr`` is the expression the user wrote: no
+    message ever shows the name of this class."""
+
+    def __init__(self, key: str, path: str = ".value") -> None:
         self.key = key
+        self.path = path
 
     def __repr__(self) -> str:
-        return f"self.params[{self.key!r}].value"
+        return f"self.params[{self.key!r}]{self.path}"
+
+    def __getattr__(self, name: str) -> ParamRef:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        return ParamRef(self.key, f"{self.path}.{name}")
+
+    def __call__(self, *args: Any, **kwargs: Any) -> ParamRef:
+        return ParamRef(self.key, f"{self.path}(...)")
+
+    def __getitem__(self, index: Any) -> ParamRef:
+        return ParamRef(self.key, f"{self.path}[{index!r}]")
 
     def __bool__(self) -> bool:
         raise TypeError(f"expand branches on {self!r}, which is known only when the skill "
@@ -53,12 +74,21 @@ class ParamRef:
 
 
 class _Param:
+    """``self.params["X"]``: the parameter object (``.value``, ``.values``, ``.key``)."""
+
     def __init__(self, key: str) -> None:
         self.key = key
         self.value = ParamRef(key)
+        self.values = ParamRef(key, ".values")
+
+    def __repr__(self) -> str:
+        return f"self.params[{self.key!r}]"
 
     def getValue(self) -> ParamRef:
         return self.value
+
+    def getValues(self) -> ParamRef:
+        return self.values
 
 
 class _Params:
@@ -71,6 +101,17 @@ class _Params:
         return _Param(str(key))
 
 
+class _WorldModel:
+    """``self.wmi`` while tracing: any query ends the trace with a readable reason (what
+    the world model holds is known only on the robot)."""
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        raise TypeError(f"expand queries the world model (self.wmi.{name}), which is known "
+                        "only when the skill runs")
+
+
 class Recorded(SkillWrapper):
     """A node while ``expand`` builds it: the call's arguments, then its children, and the
     line of the call (the backend's wrapper records the rest)."""
@@ -79,6 +120,9 @@ class Recorded(SkillWrapper):
         super().__init__(*args, **kwargs)
         self.line = line
 
+    def __repr__(self) -> str:
+        return f"the node of self.skill(...) at line {self.line}"
+
 
 def _record(_self: Any, *args: Any, **kwargs: Any) -> Recorded:
     return Recorded(args, kwargs, sys._getframe(1).f_lineno)
@@ -86,6 +130,8 @@ def _record(_self: Any, *args: Any, **kwargs: Any) -> Recorded:
 
 def processor_name(processor: Any) -> str:
     """``SerialStar`` for ``SerialStar()``; ``NoFail(Sequential)`` for a wrapping one."""
+    if isinstance(processor, (ParamRef, _Param)):
+        raise TypeError(f"the processor is {processor!r}, known only when the skill runs")
     name = type(processor).__name__
     inner = [a for a in getattr(processor, "args", ()) if not isinstance(a, (str, int, float))]
     return f"{name}({processor_name(inner[0])})" if inner else name
@@ -93,13 +139,15 @@ def processor_name(processor: Any) -> str:
 
 def _is_processor(value: Any) -> bool:
     return not isinstance(value, (str, bytes, int, float, bool, dict, list, tuple, Recorded,
-                                  type(None), ParamRef))
+                                  type(None), ParamRef, _Param))
 
 
 def _plain(value: Any) -> Any:
     """A ``specify`` value as JSON-ready data (symbols as ``{"param": key}``)."""
     if isinstance(value, ParamRef):
-        return {"param": value.key}
+        return {"param": value.key} if value.path == ".value" else repr(value)
+    if isinstance(value, _Param):
+        return {PARAMETER_OBJECT: value.key}
     if isinstance(value, (list, tuple)):
         return [_plain(v) for v in value]
     if isinstance(value, dict):
@@ -110,11 +158,47 @@ def _plain(value: Any) -> Any:
 
 
 def _pairs(value: Any, what: str) -> tuple[tuple[str, Any], ...]:
-    if value is None:
+    """``remap``/``specify`` as SkiROS2 reads them (``for k in remap: remap[k]``): any
+    empty iterable, ``""`` included, is none."""
+    if value is None or (isinstance(value, (str, list, tuple, set, frozenset)) and not value):
         return ()
     if not isinstance(value, dict):
         raise TypeError(f"{what} is {type(value).__name__}, not a dict")
     return tuple((str(k), _plain(v)) for k, v in value.items())
+
+
+def call_problem(kwargs: Any, bound: dict[str, Any], positional: int) -> str | None:
+    """What makes a ``self.skill(...)`` call raise when ``expand`` runs, or None: a keyword
+    SkiROS2's ``skill(stype, slabel, remap, specify, preconditions)`` does not take
+    (``specfiy=``), too many arguments, a non-empty string as ``remap``/``specify``
+    (``for k in remap: remap[k]`` indexes a string with a string)."""
+    unknown = sorted(k for k in kwargs if k not in ARGUMENTS)
+    if unknown:
+        close = [difflib.get_close_matches(k, ARGUMENTS, 1, 0.6) for k in unknown]
+        hint = "".join(f" (did you mean {c[0]}=?)" for c in close if c)
+        return (f"self.skill(...) takes no keyword {unknown[0]}={hint}: the call raises a "
+                "TypeError when expand runs, and the compound skill fails")
+    if positional > len(ARGUMENTS):
+        return (f"self.skill(...) is given {positional} positional arguments, at most "
+                f"{len(ARGUMENTS)}: the call raises a TypeError when expand runs")
+    for what in ("remap", "specify"):
+        if isinstance(bound.get(what), str) and bound[what]:
+            return (f"{what} is the string {bound[what]!r}, not a dict: SkiROS2 iterates it "
+                    "and raises a TypeError when expand runs")
+    return None
+
+
+def parameter_object_message(key: str) -> str:
+    """The message of a ``specify`` value that is a parameter object (read or traced)."""
+    return (f"specify value self.params[{key!r}] is the parameter object, not its value: "
+            "SkiROS2 logs an error and leaves the child's parameter unset (write "
+            f"self.params[{key!r}].value)")
+
+
+def _remapped(value: Any) -> str:
+    if not isinstance(value, str):
+        raise TypeError(f"a remap value is {value!r}, known only when the skill runs")
+    return value
 
 
 def node_of(recorded: Any) -> Node | CallProblem:
@@ -124,13 +208,18 @@ def node_of(recorded: Any) -> Node | CallProblem:
                            "by self.skill(...)")
     bound = dict(zip(ARGUMENTS, recorded.args))
     bound.update(recorded.kwargs)
+    problem = call_problem(recorded.kwargs, bound, len(recorded.args))
+    if problem is not None:
+        return CallProblem(problem, recorded.line)
     first = bound.get("stype")
+    if isinstance(first, (ParamRef, _Param)):
+        raise TypeError(f"the child type is {first!r}, known only when the skill runs")
     children = tuple(node_of(c) for c in recorded.children)
     if isinstance(first, Recorded):
         return CallProblem("self.skill(self.skill(...), ...) passes a node where SkiROS2 "
                            "wants a type name or a processor; call the node instead: "
                            "self.skill(...)(child, ...)", recorded.line)
-    remap = tuple((k, str(v)) for k, v in _pairs(bound.get("remap"), "remap"))
+    remap = tuple((k, _remapped(v)) for k, v in _pairs(bound.get("remap"), "remap"))
     specify = _pairs(bound.get("specify"), "specify")
     if isinstance(first, str):
         label = bound.get("slabel", "")
@@ -167,7 +256,7 @@ def trace(cls: type, path: str = "", line: int = 0) -> CompoundModel | Unanalysa
     if expand is None:
         return Unanalysable(name, "the class has no expand method", line)
     stand_in = type(name, (cls,), {"skill": _record, "params": _Params(),
-                                   "__init__": lambda self: None})
+                                   "wmi": _WorldModel(), "__init__": lambda self: None})
     description, label = described(stand_in(), cls)
     root = Recorded((), {}, 0)
     try:

@@ -85,6 +85,8 @@ CASES: dict[str, tuple[str, str]] = {
               tree('self.skill("Middle", "", remap={"Spot": "Box"})')),
     "EZ314": (tree('self.skill("Middle", "", remap={"Target": "Box"})'),  # middle_impl's own
               tree('self.skill("Middle", "", remap={"Spot": "Box"})')),
+    "EZ315": (tree('self.skill("Child", "", specify={"Speed": self.params["Box"]})'),
+              tree('self.skill("Child", "", specify={"Speed": self.params["Box"].value})')),
     "EZ306": (tree('self.skill("Child", "", remap={"Target": "Speed"})'),
               tree(f'self.skill("Child", "", {TARGET})')),
     "EZ307": (tree('self.skill("Child", "", specify={"Sped": 1.0})'),

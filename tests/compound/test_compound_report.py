@@ -60,7 +60,8 @@ def test_each_compound_skill_is_drawn_with_its_findings(tmp_path: Path) -> None:
     assert '    n1{{"RetryOnFail(Sequential)"}}' in fork and "    class n1 warning" in fork
 
     assert "tree traced by running expand" in report.split("### `kit_clear_all`")[1]
-    assert "Not analysed: running expand raised AttributeError" in report.split(
+    assert "Not analysed: running expand raised TypeError: expand queries the world model " \
+        "(self.wmi.get_element)" in report.split(
         "### `kit_from_world`")[1]
 
 

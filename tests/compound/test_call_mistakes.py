@@ -1,0 +1,110 @@
+"""Mistakes in ``self.skill(...)`` calls that SkiROS2 fails on when ``expand`` runs, found
+whether the tree is read statically, traced, or neither (issue 21, patterns 3 and 4), and
+the tracer's stand-ins for what real ``expand`` bodies use. Real files, the real check core
+(static reader, child process for tracing), no mocks.
+"""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from ezmigrate.check import run_check
+from ezmigrate.lint.diagnostic import Diagnostic
+from ezmigrate.verify.pool import PoolConfig
+
+MODULE = '''\
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+from skiros2_skill.core.skill import SkillBase
+
+
+class Task(SkillDescription):
+    def createDescription(self):
+        self.addParam("Pause", 1.0, ParamTypes.Optional)
+        self.addParam("Spot", Element("skiros:Location"), ParamTypes.Required)
+
+
+class task(SkillBase):
+    def createDescription(self):
+        self.setDescription(Task(), self.__class__.__name__)
+
+    def expand(self, skill):
+{body}
+'''
+
+
+def ez3(tmp_path: Path, body: str) -> list[Diagnostic]:
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    path = tmp_path / "task.py"
+    path.write_text(MODULE.format(body=textwrap.indent(textwrap.dedent(body).strip(),
+                                                       " " * 8)), encoding="utf-8")
+    outcome = run_check([path], None, PoolConfig(workers=1))
+    return [d for d in outcome.diagnostics if d.code.startswith("EZ3")]
+
+
+def codes(found: list[Diagnostic]) -> list[tuple[str, str]]:
+    return sorted((d.code, d.severity) for d in found)
+
+
+LOOP = 'for key in ("Duration",):\n    '
+WORLD = 'here = self.wmi.get_element(self.params["Spot"].value)\n'
+
+CASES = [  # (code, trigger, near miss): literal, traced and untraceable trees
+    ("EZ309", 'skill(self.skill("Wait", "", specfiy={"Duration": 1.0}))',
+     'skill(self.skill("Wait", "", specify={"Duration": 1.0}))'),
+    ("EZ309", LOOP + 'skill(self.skill("Wait", "", specfiy={key: 1.0}))',
+     LOOP + 'skill(self.skill("Wait", "", specify={key: 1.0}))'),
+    ("EZ309", 'skill(self.skill("Wait", "", remap="Duration"))',
+     'skill(self.skill("Wait", "", remap=""))'),
+    ("EZ315", 'skill(self.skill("Wait", "", specify={"Duration": self.params["Pause"]}))',
+     'skill(self.skill("Wait", "", specify={"Duration": self.params["Pause"].value}))'),
+    ("EZ315", LOOP + 'skill(self.skill("Wait", "", specify={key: self.params["Pause"]}))',
+     LOOP + 'skill(self.skill("Wait", "", specify={key: self.params["Pause"].value}))'),
+]
+
+
+@pytest.mark.parametrize(("code", "trigger", "near_miss"), CASES,
+                         ids=[f"{c}-{i}" for i, (c, _, _) in enumerate(CASES)])
+def test_a_call_mistake_is_an_error_and_its_near_miss_is_clean(tmp_path: Path, code: str,
+                                                               trigger: str, near_miss: str):
+    assert (code, "error") in codes(ez3(tmp_path / "hit", trigger))
+    assert ez3(tmp_path / "miss", near_miss) == []
+
+
+def test_call_mistakes_are_found_in_a_tree_that_cannot_be_traced(tmp_path: Path):
+    found = ez3(tmp_path / "hit", WORLD + 'skill(self.skill("Wait", "", specfiy={"Duration": '
+                                  'self.params["Pause"]}))')
+    assert codes(found) == [("EZ309", "error"), ("EZ313", "info")]
+    typo = next(d for d in found if d.code == "EZ309")
+    assert "specfiy" in typo.message and "specify=" in typo.message
+    near = ez3(tmp_path / "miss", WORLD + 'skill(self.skill("Wait", "", specify={"Duration": '
+                                  'self.params["Pause"]}))')
+    assert codes(near) == [("EZ313", "info"), ("EZ315", "error")]
+    assert "self.wmi.get_element" in next(d.message for d in near if d.code == "EZ313")
+
+
+def test_empty_remaps_are_none_and_the_rest_of_the_tree_is_still_checked(tmp_path: Path):
+    found = ez3(tmp_path, 'skill(self.skill("Wait", "", remap="", specify={"Time": 1.0}),\n'
+                          '      self.skill("Wait", "", remap=[], specify={}))')
+    assert codes(found) == [("EZ307", "error")]
+
+
+def test_the_stand_ins_have_the_api_expand_bodies_use(tmp_path: Path):
+    body = (LOOP + 'skill(self.skill("Wait", "", specify={key: self.params["Spot"].value.label}'
+            '),\n          self.skill("Wait", "", specify={key: self.params["Pause"].values}))')
+    assert ez3(tmp_path, body) == []
+
+
+def test_no_message_names_the_tracers_own_classes(tmp_path: Path):
+    bodies = ['skill(self.skill(self.params["Pause"].value))',
+              'skill(self.skill(self.params["Pause"]))',
+              LOOP + 'skill(self.params["Pause"])',
+              LOOP + 'skill(self.skill("Wait", "", remap={key: self.params["Spot"].value}))']
+    for number, body in enumerate(bodies):
+        for found in ez3(tmp_path / str(number), body):
+            assert not any(name in found.message + found.fix for name in
+                           ("_Param", "ParamRef", "Recorded", "object at 0x")), found
