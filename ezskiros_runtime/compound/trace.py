@@ -23,6 +23,7 @@ from typing import Any
 
 from ..legacy.skill import SkillWrapper
 from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
+from .stable_ids import stable_ids
 
 ARGUMENTS = ("stype", "slabel", "remap", "specify", "preconditions")
 PARAMETER_OBJECT = "parameter_object"
@@ -257,10 +258,12 @@ def trace(cls: type, path: str = "", line: int = 0) -> CompoundModel | Unanalysa
         return Unanalysable(name, "the class has no expand method", line)
     stand_in = type(name, (cls,), {"skill": _record, "params": _Params(),
                                    "wmi": _WorldModel(), "__init__": lambda self: None})
-    description, label = described(stand_in(), cls)
+    with stable_ids():  # a label made with id(self) is the same on every run
+        description, label = described(stand_in(), cls)
     root = Recorded((), {}, 0)
     try:
-        expand(stand_in(), root)
+        with stable_ids():
+            expand(stand_in(), root)
         children = tuple(node_of(c) for c in root.children)
     except Exception as error:
         frame = error.__traceback__

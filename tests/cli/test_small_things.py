@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -27,3 +28,34 @@ def test_a_gitignored_file_named_explicitly_is_skipped_with_a_word(tmp_path: Pat
         assert "ezmigrate: pkg/generated.py: skipped, git ignores it (.gitignore)\n" \
             in run.stderr, command
     assert (tmp_path / "pkg" / "generated.py").read_bytes() == legacy
+
+
+TAGGED = '''
+
+class fetch_tagged(SkillBase):
+    """Labels its children after the instance, as real code does to tell runs apart."""
+
+    def createDescription(self):
+        self.setDescription(FetchPart(), "fetch_tagged_%d" % id(self))
+
+    def expand(self, skill):
+        skill.setProcessor(SerialStar())
+        skill(
+            self.skill("Navigate", "navigate_%x" % id(self), remap={"Target": "Shelf"}),
+            self.skill("Pick", "pick_%s" % hex(id(skill)), remap={"Container": "Shelf"}),
+        )
+'''
+
+
+def test_the_report_is_the_same_on_every_run_when_expand_uses_id(tmp_path: Path):
+    repo = tmp_path / "repo"
+    shutil.copytree(FIXTURES / "compound_repo", repo)
+    with (repo / "lab_tasks" / "src" / "lab_tasks" / "tasks.py").open("a") as tasks:
+        tasks.write(TAGGED)
+    reports = []
+    for run in (1, 2):
+        done = ezmigrate(tmp_path, "rewrite", "--dry-run", "repo", "--report", f"r{run}.md")
+        assert done.returncode == 0, done.stderr
+        reports.append((tmp_path / f"r{run}.md").read_text(encoding="utf-8"))
+    assert reports[0] == reports[1]
+    assert "navigate_1</i>" in reports[0] and "pick_0x2</i>" in reports[0]
