@@ -26,7 +26,14 @@ from ..results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_batched
 from ..verify.protocol import LoadOutcome
 from .repository import RepositoryScan
-from .static import NeedsTrace, class_bases, expand_findings, implementations, read_compounds
+from .static import (
+    NeedsTrace,
+    class_bases,
+    expand_findings,
+    implementations,
+    modified_params,
+    read_compounds,
+)
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -55,6 +62,8 @@ class Trees:
     labels: list[tuple[str, str | None]] = field(default_factory=list)
     bases: list[tuple[str, str]] = field(default_factory=list)
     """``(class, base)`` for every top-level class deriving from a named class."""
+    modified: list[tuple[str, str, str | None, bool]] = field(default_factory=list)
+    """Parameters implementations add in ``modifyDescription`` (``static.modified_params``)."""
     seen: set[str] = field(default_factory=set)
     on_first_trace: Callable[[], None] | None = None
     """Called when the first tree to trace turns up (``check`` starts a worker then)."""
@@ -78,6 +87,7 @@ class Trees:
                 return  # the static pass reports the file
         self.labels += implementations(tree)
         self.bases += class_bases(tree)
+        self.modified += modified_params(tree)
         for cls, mistakes in expand_findings(tree).items():
             self.syntax[(path, cls)] = mistakes
         pending = []
@@ -192,6 +202,9 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
         index.add_implementation(label, description)
     index.bases |= {base for cls, base in [*library.bases, *around.bases, *trees.bases]
                     if cls in index.descriptions and base in index.descriptions}
+    for description, key, element, on_wrapper in [*library.modified, *around.modified,
+                                                  *trees.modified]:
+        index.add_modified(description, key, element, on_wrapper)
     index.unread = list(around.unread)
     index.unknown_compounds |= around.untraced
     for compound in around.compounds:

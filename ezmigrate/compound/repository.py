@@ -29,7 +29,7 @@ from ezskiros_runtime.ontology.discovery import enclosing_project
 
 from ..discover import Candidate, discover
 from ..lint.plain_reader import Declined, read_plain
-from .static import NeedsTrace, class_bases, implementations, read_compounds
+from .static import NeedsTrace, class_bases, implementations, modified_params, read_compounds
 
 READ_WHEN = (b"expand", b"setDescription", b"createDescription", b"SkillDescription")
 UNPARSED = "in a file Python 3 cannot parse"
@@ -45,6 +45,7 @@ class RepositoryScan:
     descriptions: list[DescriptionInfo] = field(default_factory=list)
     labels: list[tuple[str, str | None]] = field(default_factory=list)
     bases: list[tuple[str, str]] = field(default_factory=list)
+    modified: list[tuple[str, str, str | None, bool]] = field(default_factory=list)
     compounds: list[CompoundModel] = field(default_factory=list)
     untraced: set[str] = field(default_factory=set)
     """Description types whose compound implementation needs tracing (not done here)."""
@@ -102,6 +103,7 @@ def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan) -> None:
         return
     scan.labels += implementations(tree)
     scan.bases += class_bases(tree)
+    scan.modified += modified_params(tree)
     implemented = {cls for cls, _ in implementations(tree)}
     verdict = read_plain(data, candidate.relative, tree)
     read = {} if isinstance(verdict, Declined) else {s.name: s for s in verdict.skills}

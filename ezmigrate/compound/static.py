@@ -99,6 +99,46 @@ def implementations(tree: ast.Module) -> list[tuple[str, str | None]]:
     return found
 
 
+def modified_params(tree: ast.Module) -> list[tuple[str, str, str | None, bool]]:
+    """``(description, key, element type, on the wrapper)`` for each literal ``addParam``
+    in an implementation's ``modifyDescription(self, skill)``.
+
+    SkiROS2's ``SkillWrapper.setInstance`` calls ``instance.modifyDescription(wrapper)``:
+    what is added to ``skill`` (the wrapper) is declared like the description's own
+    parameters; what is added to ``self`` is not on the wrapper, so a ``specify`` of it is
+    dropped."""
+    found: list[tuple[str, str, str | None, bool]] = []
+    for node in tree.body:
+        if not isinstance(node, ast.ClassDef):
+            continue
+        description, _ = _described(node)
+        for member in node.body:
+            if not (isinstance(member, ast.FunctionDef) and member.name == "modifyDescription"
+                    and len(member.args.args) == 2 and description is not None):
+                continue
+            me, wrapper = member.args.args[0].arg, member.args.args[1].arg
+            for call in ast.walk(member):
+                if not (isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute)
+                        and call.func.attr == "addParam" and call.args
+                        and isinstance(call.func.value, ast.Name)
+                        and call.func.value.id in (me, wrapper)
+                        and isinstance(call.args[0], ast.Constant)
+                        and isinstance(call.args[0].value, str)):
+                    continue
+                found.append((description, call.args[0].value, _element_type(call),
+                              call.func.value.id == wrapper))
+    return found
+
+
+def _element_type(call: ast.Call) -> str | None:
+    value = call.args[1] if len(call.args) > 1 else None
+    if isinstance(value, ast.Call) and ast_dotted_name(value.func) in ("Element",) \
+            and value.args and isinstance(value.args[0], ast.Constant) \
+            and isinstance(value.args[0].value, str):
+        return value.args[0].value
+    return None
+
+
 def _described(cls: ast.ClassDef) -> tuple[str | None, str]:
     """``self.setDescription(Desc(), label)`` in the class's ``createDescription``
     (``self.__class__.__name__`` or anything computed counts as the class's name). Only the

@@ -214,6 +214,9 @@ class _Checker:
                          f"Write self.params[{value[PARAMETER_OBJECT]!r}].value.")
             if key not in keys:
                 why = f" (remapped, it is called {renamed[key]!r})" if key in renamed else ""
+                if key in self.index.self_added.get(child.name, ()):
+                    why = (" (an implementation adds it in modifyDescription to itself, "
+                           "self.addParam, not to the wrapper the tree holds, skill.addParam)")
                 self.add("specify-key-unknown", node.line,
                          f"specify key {key!r}: {child.name} has no such parameter after "
                          f"remapping{why}, so SkiROS2 drops the value", node.type,

@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import PurePath
 
 from .model import CompoundModel
@@ -89,6 +89,9 @@ class SkillIndex:
     definitions: dict[str, list[DescriptionInfo]] = field(default_factory=dict)
     """Every file of the repository defining a type, when more than one does: packages of
     one repository reuse names, and a compound's child is read from the nearest one."""
+    self_added: dict[str, set[str]] = field(default_factory=dict)
+    """Keys implementations add to themselves in ``modifyDescription`` (not to the wrapper
+    the tree holds), by description type: a ``specify`` of them is dropped."""
     unread: list[str] = field(default_factory=list)
     """Files of the repository whose classes could not be read at all: a type not found may
     be defined there, so "unknown child type" is then at most informational."""
@@ -134,6 +137,19 @@ class SkillIndex:
 
         best = max(shared(o) for o in others)
         return [o for o in others if shared(o) == best]
+
+    def add_modified(self, description: str, key: str, element: str | None,
+                     on_wrapper: bool) -> None:
+        """A parameter an implementation of ``description`` adds in ``modifyDescription``:
+        to the wrapper (``skill.addParam``: declared like the description's own), or to
+        itself (``self.addParam``: not on the wrapper)."""
+        if not on_wrapper:
+            self.self_added.setdefault(description, set()).add(key)
+            return
+        info = self.descriptions.get(description)
+        if info is not None and key not in info.params:
+            self.descriptions[description] = replace(info, params={**info.params,
+                                                                   key: element})
 
     def add_implementation(self, label: str, description: str | None) -> None:
         if description is not None:

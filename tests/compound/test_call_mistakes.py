@@ -108,3 +108,51 @@ def test_no_message_names_the_tracers_own_classes(tmp_path: Path):
         for found in ez3(tmp_path / str(number), body):
             assert not any(name in found.message + found.fix for name in
                            ("_Param", "ParamRef", "Recorded", "object at 0x")), found
+
+
+MODIFIED = '''\
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_skill.core.skill import PrimitiveBase, SkillBase
+
+
+class Spray(SkillDescription):
+    def createDescription(self):
+        self.addParam("Colour", str, ParamTypes.Required)
+
+
+class spray(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Spray(), self.__class__.__name__)
+
+    def modifyDescription(self, skill):
+        {owner}.addParam("Pressure", 2.0, ParamTypes.Optional)
+
+
+class Paint(SkillDescription):
+    def createDescription(self):
+        pass
+
+
+class paint(SkillBase):
+    def createDescription(self):
+        self.setDescription(Paint(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill(self.skill("Spray", "", specify={{"Colour": "red", "Pressure": 3.0}}))
+'''
+
+
+def test_parameters_modify_description_adds_to_the_wrapper_are_declared(tmp_path: Path):
+    """SkiROS2 calls ``instance.modifyDescription(wrapper)``: ``skill.addParam`` declares
+    on the wrapper; ``self.addParam`` does not, and the specify is dropped."""
+    (tmp_path / "wrapper").mkdir()
+    (tmp_path / "wrapper" / "paint.py").write_text(MODIFIED.format(owner="skill"))
+    found = run_check([tmp_path / "wrapper"], None, PoolConfig(workers=1)).diagnostics
+    assert [d for d in found if d.code.startswith("EZ3")] == []
+    (tmp_path / "itself").mkdir()
+    (tmp_path / "itself" / "paint.py").write_text(MODIFIED.format(owner="self"))
+    found = run_check([tmp_path / "itself"], None, PoolConfig(workers=1)).diagnostics
+    [dropped] = [d for d in found if d.code.startswith("EZ3")]
+    assert dropped.code == "EZ307" and "'Pressure'" in dropped.message
+    assert "modifyDescription to itself" in dropped.message
