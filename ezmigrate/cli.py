@@ -491,9 +491,11 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     """
     from .check import run_check
     from .lint.select import Selection, SelectorError, apply, parse_selectors
-    from .output_formats import FORMATS
-    from .output_formats import statistics as count
+    from .output_formats import FORMATS, STATISTICS
 
+    if statistics and output_format not in STATISTICS:
+        raise click.UsageError(f"--statistics has no {output_format} form (it has "
+                               f"{' and '.join(STATISTICS)}): drop one of the two options")
     shown_as: dict[str, str] = {}  # the stdin file's private copy -> the name it stands for
     roots: Sequence[Path] = paths
     anchor = paths[0]
@@ -538,7 +540,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
         if show_diff:
             sys.exit(EXIT_ATTENTION if fixable else EXIT_OK)
     shown = [d for d in found if d.severity == "error"] if quiet else found
-    click.echo(count(shown) if statistics else FORMATS[output_format](shown), nl=False)
+    click.echo((STATISTICS if statistics else FORMATS)[output_format](shown), nl=False)
     errors = sum(1 for d in found if d.severity == "error")
     if not quiet:
         others = len(found) - errors

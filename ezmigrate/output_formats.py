@@ -7,9 +7,11 @@ step can redirect it to a file (``--output-format sarif > check.sarif``).
 from __future__ import annotations
 
 import json
+import os
 from collections import Counter
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from urllib.parse import quote
 from xml.etree import ElementTree
 
 from ezskiros_runtime.codes import BY_CODE
@@ -35,15 +37,31 @@ def as_json(diagnostics: Sequence[Diagnostic]) -> str:
         "message": d.text, "fix": d.fix} for d in diagnostics], indent=2) + "\n"
 
 
-def _uri(path: str) -> str:
-    """A relative path with ``/`` (GitHub resolves it against the checkout), else a URI."""
-    candidate = Path(path)
-    if candidate.is_absolute():
-        try:
-            candidate = candidate.relative_to(Path.cwd())
-        except ValueError:
-            return candidate.as_uri()
-    return candidate.as_posix()
+SRCROOT = "SRCROOT"
+"""The ``uriBaseId`` of every location: the repository root, named in ``originalUriBaseIds``."""
+
+
+def _base(diagnostics: Sequence[Diagnostic]) -> Path:
+    """The repository root the SARIF locations are relative to: the git top level (else the
+    ROS package) of the first file, else the working directory. A CI uploads the log from
+    anywhere in the checkout; GitHub resolves locations against the repository root."""
+    from ezskiros_runtime.ontology.discovery import enclosing_project
+
+    for d in diagnostics:
+        root = enclosing_project(Path(os.path.abspath(d.path)))
+        if root is not None:
+            return root
+    return Path.cwd().resolve()
+
+
+def _uri(path: str, base: Path) -> tuple[str, bool]:
+    """``(percent-encoded URI, relative to base)``: relative to ``base`` when the file is
+    inside it (``my%20skill.py``), else an absolute ``file:`` URI."""
+    absolute = Path(os.path.realpath(os.path.abspath(path)))
+    try:
+        return quote(absolute.relative_to(base.resolve()).as_posix()), True
+    except ValueError:
+        return absolute.as_uri(), False
 
 
 def sarif(diagnostics: Sequence[Diagnostic]) -> str:
@@ -56,11 +74,12 @@ def sarif(diagnostics: Sequence[Diagnostic]) -> str:
         "helpUri": "https://github.com/ezskiros/ezmigrate/blob/main/docs/rules.md",
         "defaultConfiguration": {"level": _SARIF_LEVEL[BY_CODE[code].severity]},
     } for code in codes]
+    base = _base(diagnostics)
     results = [{
         "ruleId": d.code, "ruleIndex": codes.index(d.code), "level": _SARIF_LEVEL[d.severity],
         "message": {"text": f"{d.text} (fix: {d.fix})"},
         "locations": [{"physicalLocation": {
-            "artifactLocation": {"uri": _uri(d.path)},
+            "artifactLocation": _artifact(d.path, base),
             "region": {"startLine": d.line, "startColumn": d.column,
                        "endLine": d.end_line or d.line,
                        "endColumn": max(d.end_column, d.column)}}}],
@@ -69,8 +88,14 @@ def sarif(diagnostics: Sequence[Diagnostic]) -> str:
         "tool": {"driver": {"name": "ezmigrate", "version": __version__,
                             "informationUri": "https://github.com/ezskiros/ezmigrate",
                             "rules": rules}},
+        "originalUriBaseIds": {SRCROOT: {"uri": base.resolve().as_uri() + "/"}},
         "results": results}]}
     return json.dumps(log, indent=2) + "\n"
+
+
+def _artifact(path: str, base: Path) -> dict[str, str]:
+    uri, relative = _uri(path, base)
+    return {"uri": uri, "uriBaseId": SRCROOT} if relative else {"uri": uri}
 
 
 def _escape(value: str, properties: bool) -> str:
@@ -88,10 +113,12 @@ def github(diagnostics: Sequence[Diagnostic]) -> str:
 
 
 def junit(diagnostics: Sequence[Diagnostic]) -> str:
-    """JUnit XML: a test suite per file, a failing test case per diagnostic."""
+    """JUnit XML: a test suite per file, a test case per diagnostic; only error-severity
+    findings fail (what fails ``check``'s exit code fails the CI's test report too), the
+    others pass with their text as output."""
+    errors = sum(1 for d in diagnostics if d.severity == "error")
     root = ElementTree.Element("testsuites", name="ezmigrate check",
-                               tests=str(max(len(diagnostics), 1)),
-                               failures=str(len(diagnostics)))
+                               tests=str(max(len(diagnostics), 1)), failures=str(errors))
     by_file: dict[str, list[Diagnostic]] = {}
     for d in diagnostics:
         by_file.setdefault(d.path, []).append(d)
@@ -100,13 +127,18 @@ def junit(diagnostics: Sequence[Diagnostic]) -> str:
                                        failures="0")
         ElementTree.SubElement(suite, "testcase", name="check", classname="ezmigrate")
     for path, found in by_file.items():
-        suite = ElementTree.SubElement(root, "testsuite", name=path, tests=str(len(found)),
-                                       failures=str(len(found)))
+        suite = ElementTree.SubElement(
+            root, "testsuite", name=path, tests=str(len(found)),
+            failures=str(sum(1 for d in found if d.severity == "error")))
         for d in found:
             case = ElementTree.SubElement(suite, "testcase", classname=path,
                                           name=f"{d.code} {d.path}:{d.line}:{d.column}")
-            failure = ElementTree.SubElement(case, "failure", type=d.code, message=d.text)
-            failure.text = f"{d.path}:{d.line}:{d.column}: {d.code} {d.text}\nfix: {d.fix}"
+            text = f"{d.path}:{d.line}:{d.column}: {d.code} {d.text}\nfix: {d.fix}"
+            if d.severity == "error":
+                failure = ElementTree.SubElement(case, "failure", type=d.code, message=d.text)
+                failure.text = text
+            else:
+                ElementTree.SubElement(case, "system-out").text = f"{d.severity}: {text}"
     ElementTree.indent(root)
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ElementTree.tostring(
         root, encoding="unicode") + "\n"
@@ -119,6 +151,20 @@ def statistics(diagnostics: Sequence[Diagnostic]) -> str:
     return "".join(f"{n:>{width}}  {code}  {BY_CODE[code].name}\n"
                    for code, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0])))
 
+
+def statistics_json(diagnostics: Sequence[Diagnostic]) -> str:
+    """``--statistics --output-format json``: the counts as a JSON list, most frequent
+    first (``[{"code": "EZ209", "name": "unknown-vocabulary", "count": 12}]``)."""
+    counts = Counter(d.code for d in diagnostics)
+    return json.dumps([{"code": code, "name": BY_CODE[code].name, "count": n}
+                       for code, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0]))],
+                      indent=2) + "\n"
+
+
+STATISTICS: dict[str, Callable[[Sequence[Diagnostic]], str]] = {
+    "text": statistics, "json": statistics_json,
+}
+"""The formats ``--statistics`` has; with another one it is a usage error."""
 
 FORMATS: dict[str, Callable[[Sequence[Diagnostic]], str]] = {
     "text": text, "json": as_json, "sarif": sarif, "github": github, "junit": junit,

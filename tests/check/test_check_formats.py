@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import re
 from pathlib import Path
+from urllib.parse import unquote
 from xml.etree import ElementTree
 
 import pytest
@@ -57,12 +58,14 @@ def test_sarif_has_what_github_code_scanning_requires(runs):
     assert len(ids) == len(set(ids)) and all(r["shortDescription"]["text"] for r in rules)
     results = run["results"]
     assert results and {r["ruleId"] for r in results} == set(ids)
+    assert run["originalUriBaseIds"]["SRCROOT"]["uri"] == ROOT.as_uri() + "/"
     for result in results:
         assert ids[result["ruleIndex"]] == result["ruleId"]
         (location,) = result["locations"]
         physical = location["physicalLocation"]
         uri = physical["artifactLocation"]["uri"]
-        assert uri.startswith("fixtures/") and (ROOT / uri).is_file()
+        assert uri.startswith("fixtures/") and (ROOT / unquote(uri)).is_file()
+        assert physical["artifactLocation"]["uriBaseId"] == "SRCROOT"
         assert physical["region"]["startLine"] >= 1
         assert result["level"] in ("error", "warning", "note")
 
@@ -80,8 +83,38 @@ def test_junit_xml(runs):
     assert root.tag == "testsuites"
     cases = root.findall("./testsuite/testcase")
     failures = root.findall("./testsuite/testcase/failure")
-    assert len(cases) == len(failures) == len(json.loads(runs["json"][1]))
+    found = json.loads(runs["json"][1])
+    errors = [d for d in found if d["severity"] == "error"]
+    assert len(cases) == len(found) and len(failures) == len(errors) < len(found)
+    assert root.get("failures") == str(len(errors))
     assert all(re.fullmatch(r"EZ\d{3}", f.get("type", "")) for f in failures)
+    passed = [c for c in cases if c.find("failure") is None]
+    assert all(c.findtext("system-out", "").startswith(("warning: ", "info: "))
+               for c in passed)
+
+
+def test_sarif_uris_are_relative_to_the_repository_root_and_encoded(tmp_path: Path):
+    repo = tmp_path / "lab repo"
+    write(repo / "pkg", UNKNOWN)
+    (repo / "pkg" / "skill.py").rename(repo / "pkg" / "my skill.py")
+    (repo / ".git").mkdir()  # the marker of a git top level
+    run = cli("my skill.py", "--output-format", "sarif", cwd=repo / "pkg")
+    log = json.loads(run.stdout)
+    (result,) = log["runs"][0]["results"]
+    artifact = result["locations"][0]["physicalLocation"]["artifactLocation"]
+    assert artifact == {"uri": "pkg/my%20skill.py", "uriBaseId": "SRCROOT"}
+    assert log["runs"][0]["originalUriBaseIds"]["SRCROOT"]["uri"] == \
+        repo.resolve().as_uri() + "/"
+
+
+def test_statistics_has_a_json_form_and_no_sarif_one(tmp_path: Path):
+    folder = write(tmp_path, UNKNOWN)
+    run = cli(".", "--statistics", "--output-format", "json", cwd=folder)
+    assert json.loads(run.stdout) == [{"code": "EZ209", "name": "unknown-vocabulary",
+                                       "count": 1}]
+    refused = cli(".", "--statistics", "--output-format", "sarif", cwd=folder)
+    assert refused.returncode == 2 and refused.stdout == ""
+    assert "--statistics has no sarif form" in refused.stderr
 
 
 def write(folder: Path, text: str, pyproject: str | None = None) -> Path:
