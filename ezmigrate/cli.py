@@ -272,19 +272,25 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
             options.pool(ontology_files))
         scenes = _scene_section(paths, options.exclude, index)
+    from .earlier import whole_tree  # earlier runs' descriptions: the report covers all
+
     _finish(results, report, request.writes, check, strict,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
                                              compounds=compounds, verifier=verifier,
-                                             scenes=scenes, notes=declared))
+                                             scenes=scenes, notes=declared),
+            reported=_as_written(outcome.migrated, whole_tree(outcome.migrated))
+            if report else None)
 
 
-def _as_written(migrated: Sequence[Any]) -> list[FileResult]:
-    """Each file's result as stderr and the report show it: named relative to the working
-    directory (no absolute path in a report), lines those of the file written, with the
-    legacy line beside them (``written_lines``)."""
-    return [as_written(replace(m.result, path=in_report(m.candidate.path,
-                                                        m.candidate.relative)), m.original)
-            for m in migrated]
+def _as_written(migrated: Sequence[Any],
+                results: Sequence[FileResult] | None = None) -> list[FileResult]:
+    """Each file's result (``results``, one per file, else its own) as stderr and the
+    report show it: named relative to the working directory (no absolute path in a
+    report), lines those of the file written, with the legacy line beside them
+    (``written_lines``)."""
+    return [as_written(replace(r, path=in_report(m.candidate.path, m.candidate.relative)),
+                       m.original)
+            for m, r in zip(migrated, results or [m.result for m in migrated], strict=True)]
 
 
 def _scene_section(paths: tuple[Path, ...], exclude: tuple[str, ...], index: Any) -> list[str]:
@@ -362,10 +368,12 @@ def _print_result(shown: str, relative: str, original: bytes, result: FileResult
 
 
 def _finish(results: list[FileResult], report: Path | None, writes: bool, check: bool,
-            strict: bool, refused: list[str], options: MarkdownOptions) -> NoReturn:
-    """The report, the summary line, and the exit code every ``rewrite`` ends with."""
+            strict: bool, refused: list[str], options: MarkdownOptions,
+            reported: list[FileResult] | None = None) -> NoReturn:
+    """The report (of ``reported``, the whole tree, when given), the summary line, and the
+    exit code every ``rewrite`` ends with."""
     if report is not None:
-        _write_report(report, results, options)
+        _write_report(report, results if reported is None else reported, options)
     summary = Summary.of(results)
     click.echo(f"ezmigrate: {summary.line(dry=not writes)}", err=True)
     would_change = summary.changed_files > 0 and check

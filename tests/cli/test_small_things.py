@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
+import json
+import os
 import shutil
+import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
@@ -59,3 +63,42 @@ def test_the_report_is_the_same_on_every_run_when_expand_uses_id(tmp_path: Path)
         reports.append((tmp_path / f"r{run}.md").read_text(encoding="utf-8"))
     assert reports[0] == reports[1]
     assert "navigate_1</i>" in reports[0] and "pick_0x2</i>" in reports[0]
+
+
+def test_after_an_interrupted_run_the_reruns_report_covers_the_whole_tree(tmp_path: Path):
+    """The first run is stopped (SIGINT) once it wrote one file; the rerun's report lists
+    that file's descriptions too, as migrated by an earlier run."""
+    tree = tmp_path / "tree"
+    tree.mkdir()
+    for name in ("pick_and_place.py", "descriptions.py"):
+        shutil.copy(FIXTURES / "legacy" / name, tree / name)
+    hold = tmp_path / "hold"
+    hold.mkdir()
+    env = {**os.environ, "EZMIGRATE_HOLD_DIR": str(hold), "EZMIGRATE_HOLD_AT": "written:1"}
+    first = subprocess.Popen([sys.executable, "-m", "ezmigrate", "rewrite", "--no-verify",
+                              "tree"], cwd=tmp_path, env=env, stdin=subprocess.DEVNULL,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        while not (hold / "written:1.reached").exists():  # the run holds there until "go"
+            assert first.poll() is None, first.communicate()[1]
+            time.sleep(0.005)
+        first.send_signal(signal.SIGINT)
+        (hold / "written:1.go").touch()
+        _, stderr = first.communicate(timeout=300)
+    finally:
+        (hold / "written:1.go").touch()
+        if first.poll() is None:
+            first.kill()
+            first.wait()
+    assert first.returncode == 128 + signal.SIGINT, stderr
+    second = ezmigrate(tmp_path, "rewrite", "--no-verify", "--report", "r.json", "tree")
+    assert second.returncode == 0, second.stderr
+    skills = json.loads((tmp_path / "r.json").read_text(encoding="utf-8"))["skills"]
+    by_file: dict[str, set[str]] = {}
+    for skill in skills:
+        by_file.setdefault(skill["file"], set()).add(skill["status"])
+    assert by_file == {"tree/descriptions.py": {"unchanged"},  # written by the first run
+                       "tree/pick_and_place.py": {"converted"}}, by_file
+    earlier = [s for s in skills if s["status"] == "unchanged"]
+    assert all(s["reason"] == "already an EzSkiROS description (migrated by an earlier run)"
+               for s in earlier)
