@@ -203,7 +203,8 @@ class _Workers:
         """One more file done (``item``: one the core migrated, whose skills count)."""
         if self.progress is not None:
             self.progress.advance(1, 0 if item is None else sum(
-                1 for s in item.result.skills if s.status == "converted"))
+                1 for s in item.result.skills if s.status == "converted"),
+                skill_file=item is not None)
 
     def close(self) -> None:
         if self.pool is not None:
@@ -228,6 +229,8 @@ def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                 item = Migrated(candidate, data, content_digest(data),
                                 FileResult(candidate.relative))
                 done.append(item)
+                if progress is not None:  # the estimate is weighted by skill files
+                    progress.queued()
                 workers.add(item, data)
                 if workers.pool is not None:  # forked workers are busy with the others
                     holdpoint.reach("migrating")

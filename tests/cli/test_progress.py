@@ -306,3 +306,37 @@ def test_check_shows_the_line_on_a_terminal(tmp_path: Path) -> None:
         os.close(master)
         child.wait(timeout=60)
     assert re.search(r"\rezmigrate: [23]/3 files, \d+ skills found", text), text
+
+
+def test_time_left_is_weighted_by_skill_files() -> None:
+    """Issue 22: the quick files come first (skill files wait for a worker), so a rate over
+    files said "about 1 s left" while nearly all the work was still to do. The estimate is
+    the measured time per skill file times the skill files left; none before there is one."""
+    progress, clock, out = make(total=10)
+    progress.queued(2)  # two skill files read, waiting for a worker
+    step(progress, clock, 1.5, files=8)  # the eight other files: read and passed over
+    assert drawn(out) == ["ezmigrate: 8/10 files, 0 skills converted"]  # no rate: no guess
+    clock.now = 4.0
+    progress.advance(1, 3, skill_file=True)  # one skill file in 4 s: the other takes 4 s
+    assert drawn(out)[-1] == "ezmigrate: 9/10 files, 3 skills converted, about 4 s left"
+
+
+def test_unread_files_count_at_the_share_of_skill_files_seen() -> None:
+    progress, clock, _ = make(total=100)
+    progress.queued(5)
+    step(progress, clock, 1.0, files=5)  # 10 files read: 5 skill files, 5 others
+    clock.now = 2.0
+    progress.advance(5, 0, skill_file=True)  # 5 skill files in 2 s; 90 unread, half of them
+    assert progress.seconds_left(2.0) == pytest.approx(2.0 * 45 / 5)
+
+
+def test_the_runner_announces_and_finishes_each_skill_file(tmp_path: Path) -> None:
+    from ezmigrate.discover import Candidate
+    from ezmigrate.runner import migrate_all
+
+    shutil.copy(REPO / "fixtures" / "legacy" / "pick_and_place.py", tmp_path / "skills.py")
+    (tmp_path / "util.py").write_text("def helper():\n    return 1\n", encoding="utf-8")
+    progress = Progress(2, io.StringIO(), active=False)
+    migrate_all([Candidate(tmp_path / n, tmp_path) for n in ("skills.py", "util.py")],
+                None, 1, progress)
+    assert (progress.files, progress.skill_files, progress.skill_files_done) == (2, 1, 1)
