@@ -60,4 +60,11 @@ def diagnostic(path: str, positions: Positions, kind: str, line: int, message: s
     rule = rule_for(kind)
     column, end_line, end_column = positions.span(line)
     return Diagnostic(path, max(line, 1), column, rule.code, severity or rule.severity,
-                      message, fix or rule.fix, skill, end_line, end_column)
+                      message, fix or without_suggestion(rule.fix), skill, end_line,
+                      end_column)
+
+
+def without_suggestion(fix: str) -> str:
+    """A rule's fix for a finding that has no suggestion of its own: never "see the
+    suggestion" when there is none to see."""
+    return fix.replace(" (see the suggestion)", "")

@@ -118,7 +118,9 @@ class _Checker:
         matches, literal = self.index.resolve(node.type)
         if not matches:
             name = type_name(node.type)
-            close = difflib.get_close_matches(name, list(self.index.names()), 1, 0.6)
+            own = {self.model.description, self.model.implementation}
+            close = difflib.get_close_matches(  # a description type, never this compound's
+                name, [n for n in self.index.names() if n not in own], 1, 0.6)
             hint = f"Did you mean {close[0]!r}?" if close else None
             why = (f" ({name} is a base other descriptions derive from; the skill manager "
                    "loads only leaf descriptions)" if name in self.index.bases else "")
