@@ -326,8 +326,8 @@ def test_unread_files_count_at_the_share_of_skill_files_seen() -> None:
     progress.queued(5)
     step(progress, clock, 1.0, files=5)  # 10 files read: 5 skill files, 5 others
     clock.now = 2.0
-    progress.advance(5, 0, skill_file=True)  # 5 skill files in 2 s; 90 unread, half of them
-    assert progress.seconds_left(2.0) == pytest.approx(2.0 * 45 / 5)
+    progress.advance(2, 0, skill_file=True)  # 2 skill files in 2 s; 3 queued, 90 unread
+    assert progress.seconds_left(2.0) == pytest.approx(2.0 * (3 + 90 * 5 / 10) / 2)
 
 
 def test_the_runner_announces_and_finishes_each_skill_file(tmp_path: Path) -> None:
