@@ -44,7 +44,7 @@ def from_repository(path: Path | str, fallback: str | None = None) -> str:
     else ``fallback`` (the path relative to the PATH argument it was found under), else its
     name."""
     absolute = Path(os.path.abspath(path))
-    root = repository_root(absolute.parent)
+    root = git_root(absolute.parent)
     if root is not None:
         return absolute.relative_to(root).as_posix()
     text = shown(absolute)
@@ -54,7 +54,7 @@ def from_repository(path: Path | str, fallback: str | None = None) -> str:
 
 
 @lru_cache(maxsize=256)
-def repository_root(folder: Path) -> Path | None:
+def git_root(folder: Path) -> Path | None:
     """The nearest folder at or above ``folder`` holding ``.git`` (a folder, or the file of
     a worktree or submodule), or ``None``."""
     for candidate in (folder, *folder.parents):

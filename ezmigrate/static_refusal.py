@@ -12,7 +12,6 @@ user code executed, and a rejected skill is held as it was, with the verified ru
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from ezskiros_runtime.dsl.check_context import CheckContext
@@ -20,7 +19,7 @@ from ezskiros_runtime.dsl.checking import CHECKS
 
 from .lint.legacy import trace_of
 from .results import SkillResult
-from .verify.verdicts import rejects
+from .verify.verdicts import rejected, rejects
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -39,15 +38,6 @@ def static_rejections(skill: SkillResult, path: str, index: OntologyIndex | None
     return list(dict.fromkeys(
         found.message + (f" (line {found.line})" if found.line else "")
         for found in ctx.findings if rejects(found)))
-
-
-def rejected(skill: SkillResult, found: list[str]) -> SkillResult:
-    """``skill`` skipped because the runtime would refuse it, worded as the verified run
-    words it (``verify.verdicts._rejected``)."""
-    return replace(skill, status="skipped", equivalent=None, reason=(
-        "EzSkiROS rejects this skill when it loads: " + "; ".join(found) + ". The legacy "
-        "code has the same problem (SkiROS2 accepted it silently); fix the description or "
-        "the ontology, then migrate"))
 
 
 def refuse_statically(migrated: Sequence[Migrated], index: OntologyIndex | None) -> None:
@@ -76,4 +66,4 @@ def refuse_statically(migrated: Sequence[Migrated], index: OntologyIndex | None)
                                       "back")
 
 
-__all__ = ["refuse_statically", "rejected", "static_rejections"]
+__all__ = ["refuse_statically", "static_rejections"]

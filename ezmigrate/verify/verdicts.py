@@ -133,8 +133,12 @@ def _rejected(skill: SkillResult, after: LoadOutcome) -> SkillResult | None:
     stays as is the one that gives the same finding once migrated.
     """
     found = rejections(skill.name, after, "line {} once migrated")
-    if not found:
-        return None
+    return rejected(skill, found) if found else None
+
+
+def rejected(skill: SkillResult, found: list[str]) -> SkillResult:
+    """``skill`` skipped because the runtime refuses it for the ``found`` findings: worded
+    once for the verified run and ``--no-verify``'s static refusal."""
     return replace(skill, status="skipped", equivalent=None, reason=(
         "EzSkiROS rejects this skill when it loads: " + "; ".join(found) + ". The legacy "
         "code has the same problem (SkiROS2 accepted it silently); fix the description or "
