@@ -328,9 +328,9 @@ def _declare_runtime(outcome: Any, request: Any, color: bool | None) -> list[str
         new = with_exec_depend(old)
         if new is None:
             continue
-        shown = os.path.relpath(xml)
-        if request.dry_run:
-            diff = unified_diff(shown, old, new)
+        shown = shown_path(xml)
+        if request.dry_run:  # applies from the repository root, as the files' diffs do
+            diff = unified_diff(from_repository(xml, shown), old, new)
             use_colour = sys.stdout.isatty() if color is None else color
             click.echo(colour(diff) if use_colour else diff, nl=False)
         elif request.check:

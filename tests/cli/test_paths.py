@@ -49,13 +49,28 @@ def repository(tmp_path: Path) -> Path:
     return folder / "drive.py"
 
 
+PACKAGE = """<?xml version="1.0"?>
+<package format="2">
+  <name>pkg</name>
+  <version>0.1.0</version>
+  <description>skills</description>
+  <maintainer email="lab@example.org">lab</maintainer>
+  <license>MIT</license>
+  <buildtool_depend>catkin</buildtool_depend>
+</package>
+"""
+
+
 def test_dry_run_diffs_apply_from_the_repository_root(tmp_path: Path):
     path = repository(tmp_path)
+    (path.parent / "package.xml").write_text(PACKAGE, encoding="utf-8")  # a ROS package
     run = ezmigrate(path.parent, "rewrite", "--dry-run", "--no-verify", ".")  # from deep inside
     assert run.stdout.startswith("--- a/src/pkg/drive.py\n+++ b/src/pkg/drive.py\n"), run.stdout
+    assert "\n--- a/src/pkg/package.xml\n+++ b/src/pkg/package.xml\n" in run.stdout
     (tmp_path / "m.diff").write_text(run.stdout, encoding="utf-8")
     subprocess.run(["git", "apply", "m.diff"], cwd=tmp_path, check=True)
     assert "def description(self," in path.read_text(encoding="utf-8")
+    assert "<exec_depend>" in (path.parent / "package.xml").read_text(encoding="utf-8")
 
 
 def test_stderr_report_and_check_use_one_base_and_no_absolute_path(tmp_path: Path):
