@@ -22,9 +22,11 @@ from ezskiros_runtime.model import SkillModel
 from . import holdpoint
 from .cross_file import RUNTIME_MARKER
 from .discover import Candidate, discover
+from .launch import Launch, with_init_scene
 from .lint.diagnostic import Diagnostic, Positions, diagnostic
 from .lint.legacy import legacy_hits
 from .lint.plain_reader import Declined, read_plain
+from .lint.robot_vocabulary import as_the_robot_resolves, scene_classes
 from .lint.world_model import SCENE_SUFFIX, WorldRun, scene_files, world_diagnostics
 from .load_cache import LoadCache, cached_loads
 from .prefilter import may_hold_descriptions
@@ -145,13 +147,14 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               skill_libraries: tuple[Path, ...] = (), compounds: bool = True,
               world: WorldRun | None = None,
               include_vendored: bool = False,
-              cache_dir: Path | None = None) -> CheckOutcome:
+              cache_dir: Path | None = None, launch: Launch | None = None) -> CheckOutcome:
     """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
     the compound skills' trees against every description found (unless ``compounds`` is
     False: no EZ3 code is selected, so their reading and tracing would be thrown away),
     then the world model (EZ4xx: ``world``, or the defaults and the scenes under ``paths``;
     scenes named in ``paths`` are scenes, not Python files)."""
     world = world or WorldRun(scenes=tuple(scene_files(paths, exclude)))
+    world = with_init_scene(world, launch)
     candidates, notes = discover([p for p in paths if p.suffix != SCENE_SUFFIX], exclude,
                                  include_vendored=include_vendored)
     outcome = CheckOutcome(files=len(candidates), notes=notes)
@@ -168,6 +171,9 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
                        standby, world, cache_dir)
         outcome.files += len(world.scenes)
+        outcome.diagnostics = as_the_robot_resolves(
+            outcome.diagnostics, scene_classes(world.scenes),
+            launch.workspace_unresolved if launch is not None else None)
         return outcome
     finally:
         for workers in standby:

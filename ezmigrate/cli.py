@@ -484,6 +484,11 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 @click.option("--scene", type=click.Path(path_type=Path, exists=True, dir_okay=False),
               help="A world-model scene (*.turtle): say which skills cannot start from it "
                    "(EZ409, info).")
+@click.option("--launch", "launch_file",
+              type=click.Path(path_type=Path, exists=True, dir_okay=False),
+              help="The SkiROS2 launch file the robot starts with (.launch or .launch.py): "
+                   "its workspace_dir, init_scene and skill_list are used (default: the "
+                   "only one in the repository).")
 @click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
 def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str, ...],
           ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
@@ -491,7 +496,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
           python: str | None, exclude: tuple[str, ...], include_vendored: bool, quiet: bool,
           scene: Path | None, debug: bool, no_cache: bool = False,
           stdin_filename: Path | None = None, fix: bool = False,
-          show_diff: bool = False) -> None:
+          show_diff: bool = False, launch_file: Path | None = None) -> None:
     """Lint SkiROS2 and EzSkiROS descriptions under PATHS (codes: docs/rules.md).
 
     Suppress a finding on its line with `# ezskiros: ignore[EZ209]` (or `ignore[EZ209,EZ201]`).
@@ -535,7 +540,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
                         compounds=any(c.startswith("EZ3") for c in selection.codes()),
                         world=_world_run(paths, options.exclude, scene),
                         include_vendored=include_vendored,
-                        cache_dir=None if no_cache else _cache_dir(paths, options))
+                        cache_dir=None if no_cache else _cache_dir(paths, options),
+                        launch=_launch(anchor, launch_file, quiet))
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
     found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it
@@ -556,6 +562,26 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
                    f"{counted(outcome.skills, 'skill')}, {counted(errors, 'error')}, "
                    f"{others} other {'finding' if others == 1 else 'findings'}", err=True)
     sys.exit(EXIT_OK if exit_zero or not errors else EXIT_ATTENTION)
+
+
+def _launch(anchor: Path, chosen: Path | None, quiet: bool) -> Any:
+    """The SkiROS2 launch file of the run's repository (``launch.project_launch``), said
+    on stderr with what it sets."""
+    from ezskiros_runtime.ontology.discovery import enclosing_project
+
+    from .launch import project_launch
+
+    root = enclosing_project(anchor) or (anchor if anchor.is_dir() else anchor.parent)
+    launch, note = project_launch(root, chosen)
+    if not quiet and note is not None:
+        click.echo(f"ezmigrate: {note}", err=True)
+    if not quiet and launch is not None and launch.values:
+        said = ", ".join(f"{k}={v}" for k, v in sorted(launch.values.items()))
+        click.echo(f"ezmigrate: launch: {shown_path(str(launch.path))} ({said})", err=True)
+        if "init_scene" in launch.values and launch.scene() is None:
+            click.echo(f"ezmigrate: init_scene {launch.values['init_scene']} is neither beside "
+                       "the launch file nor in the workspace_dir: not checked", err=True)
+    return launch
 
 
 def _world_run(paths: tuple[Path, ...], exclude: tuple[str, ...], scene: Path | None) -> Any:

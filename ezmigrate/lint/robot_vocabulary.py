@@ -1,0 +1,77 @@
+"""Unknown vocabulary (EZ209) judged as the robot resolves it.
+
+Most "unknown class" findings on real repositories are classes the robot does know: the
+world model loads the init scene, whose individuals are typed with the lab's classes, and
+matches elements by exact type; or the ontology lives in a ``workspace_dir`` the launch
+file names in another package, which this run cannot read. So:
+
+- a class that a scene of the run types an individual with is known (no finding);
+- with a launch file whose ``workspace_dir`` cannot be read, an unknown class or property
+  is ``info``, and says which folder was not read;
+- a prefix the ontology does not define is one finding per project (at its first use),
+  with its count of uses, instead of one per use.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import replace
+from pathlib import Path
+
+from ezskiros_runtime.codes import code_for
+
+from .diagnostic import Diagnostic
+
+UNKNOWN = code_for("unknown-vocabulary")
+_CLASS = re.compile(r"\bclass (\S+?)(?::? is not in|: prefix |: \S+ is )")
+_PREFIX = re.compile(r"prefix '([^']+)' is not defined by the loaded ontology")
+
+
+def scene_classes(scenes: Iterable[Path]) -> set[str]:
+    """Classes the individuals of these scenes are typed with, as the scene writes them
+    (``lab:Widget``) and as full IRIs."""
+    from ezskiros_runtime.world.scene import SceneError, read_scene
+
+    found: set[str] = set()
+    for path in scenes:
+        try:
+            scene = read_scene(path)
+        except (SceneError, OSError, UnicodeError):
+            continue
+        for element in scene.elements.values():
+            for kind in element.types:
+                found |= {kind, scene.compact(kind)}
+    return found
+
+
+def as_the_robot_resolves(diagnostics: Sequence[Diagnostic], typed: set[str],
+                          unread_workspace: str | None) -> list[Diagnostic]:
+    """``diagnostics`` with EZ209 judged as described in the module doc."""
+    out: list[Diagnostic] = []
+    prefixes: dict[str, list[int]] = {}
+    for d in diagnostics:
+        if d.code != UNKNOWN:
+            out.append(d)
+            continue
+        term = _CLASS.search(d.message)
+        if term is not None and term.group(1) in typed:
+            continue  # the scene types individuals with it: the world model matches it
+        prefix = _PREFIX.search(d.message)
+        if prefix is not None:
+            uses = prefixes.setdefault(prefix.group(1), [])
+            uses.append(len(out))
+            if len(uses) > 1:
+                continue
+        if unread_workspace is not None:
+            d = replace(d, severity="info", message=(
+                f"{d.message} (the launch file's workspace_dir {unread_workspace} could not "
+                "be read by this run: it may define it)"))
+        out.append(d)
+    for name, uses in prefixes.items():
+        if len(uses) > 1:
+            first = out[uses[0]]
+            out[uses[0]] = replace(first, message=(
+                f"{first.message} ({len(uses)} uses of prefix {name!r} in the project, "
+                "reported once, here)"))
+    return out
