@@ -165,8 +165,10 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     if compounds:
         from .compound.analysis import Trees
 
+        listed = launch.listed("skill_list") if launch is not None else None
         trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, pool.workers)),
-                      named=tuple(paths), exclude=exclude)
+                      named=tuple(paths), exclude=exclude,
+                      launched=frozenset(listed) if listed is not None else None)
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
                        standby, world, cache_dir)

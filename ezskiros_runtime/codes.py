@@ -241,6 +241,12 @@ RULES: tuple[Rule, ...] = (
          "its value: SkiROS2 logs an error and leaves the child's parameter unset.",
          "Write self.params[\"X\"].value.",
          ("specify-parameter-object",)),
+    Rule("EZ316", "child-not-launched", "info",
+         "A child type whose implementations the launch file's skill_list does not load "
+         "(the launch file may not be the one the robot uses: info).",
+         "Add an implementation of the type to skill_list, or pass the launch file the "
+         "robot starts with (--launch).",
+         ("child-not-launched",)),
     # EZ4xx: the world model (scenes, and what post-conditions leave in it)
     Rule("EZ401", "double-place", "warning",
          "The pre-conditions require a single-valued relation (a spatial parent, skiros:at) "

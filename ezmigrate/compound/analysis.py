@@ -70,6 +70,8 @@ class Trees:
     syntax: dict[tuple[str, str], list[tuple[str, int, str]]] = field(default_factory=dict)
     """``(path, class)`` -> mistakes its ``self.skill`` calls show in the syntax alone
     (``static.expand_findings``): reported when the tree can be neither read nor traced."""
+    launched: frozenset[str] | None = None
+    """The launch file's ``skill_list`` (None: no launch file, or no list in it)."""
     named: tuple[Path, ...] = ()
     """The paths the run was given: the repository around them joins the skill index."""
     exclude: tuple[str, ...] = ()
@@ -206,6 +208,7 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
                                                   *trees.modified]:
         index.add_modified(description, key, element, on_wrapper)
     index.unread = list(around.unread)
+    index.launched = read.launched if read is not None else None
     index.unknown_compounds |= around.untraced
     for compound in around.compounds:
         index.add_compound(compound)

@@ -156,6 +156,12 @@ class _Checker:
     def _judge(self, node: SkillNode, child: DescriptionInfo,
                others: list[Node | CallProblem]) -> None:
         self._label(node, child)
+        unlaunched = self.index.launched_implementations(child.name)
+        if unlaunched is not None and child.origin.startswith("repository"):
+            self.add("child-not-launched", node.line,
+                     f"child type {child.name} is implemented by {', '.join(unlaunched)}, "
+                     "none of which the launch file's skill_list loads: the skill manager "
+                     "would not find it", node.type)
         if not child.complete:
             return
         renamed = self._remaps(node, child)

@@ -92,6 +92,8 @@ class SkillIndex:
     self_added: dict[str, set[str]] = field(default_factory=dict)
     """Keys implementations add to themselves in ``modifyDescription`` (not to the wrapper
     the tree holds), by description type: a ``specify`` of them is dropped."""
+    launched: frozenset[str] | None = None
+    """The skills the launch file's ``skill_list`` loads (None: not known)."""
     unread: list[str] = field(default_factory=list)
     """Files of the repository whose classes could not be read at all: a type not found may
     be defined there, so "unknown child type" is then at most informational."""
@@ -150,6 +152,15 @@ class SkillIndex:
         if info is not None and key not in info.params:
             self.descriptions[description] = replace(info, params={**info.params,
                                                                    key: element})
+
+    def launched_implementations(self, description: str) -> list[str] | None:
+        """The labels implementing ``description``, when none is in the launch file's
+        ``skill_list`` (None when one is, or nothing is known)."""
+        if self.launched is None:
+            return None
+        labels = sorted(label for label, described in self.implementations.items()
+                        if described == description)
+        return labels if labels and not self.launched.intersection(labels) else None
 
     def add_implementation(self, label: str, description: str | None) -> None:
         if description is not None:

@@ -173,6 +173,8 @@ CASES: dict[str, tuple[str, str]] = {
 }
 NOT_FROM_CHECK = {
     "EZ100": "tested with the suppression comments (test_check_formats.py)",
+    "EZ316": "needs a launch file's skill_list: its trigger and near miss are in "
+             "tests/check/test_launch.py",
     "EZ903": "a verification verdict: `rewrite` and `verify` report it, `check` never verifies",
     "EZ906": "the line guard's verdict on a bug of ezmigrate, which no input triggers: "
              "tests/migrate/test_guard.py installs a lossy transform and checks it through "

@@ -144,3 +144,38 @@ def test_find_resolves_to_a_ros_package_of_the_repository():
     alone = read_launch(launch.path)  # no package known: $(find paint_cell) stays unresolved
     assert alone.folder("workspace_dir") is None
     assert alone.workspace_unresolved == "$(find paint_cell)/owl"
+
+
+TASK = legacy('self.addParam("Spot", Element("skiros:Location"), ParamTypes.Required)') + '''
+
+from skiros2_skill.core.skill import PrimitiveBase, SkillBase
+
+
+class Scan(SkillDescription):
+    def createDescription(self):
+        self.addParam("Area", Element("skiros:Location"), ParamTypes.Required)
+
+
+class scan_lidar(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Scan(), self.__class__.__name__)
+
+
+class survey(SkillBase):
+    def createDescription(self):
+        self.setDescription(Skill(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill(self.skill("Scan", "", remap={"Area": "Spot"}))
+'''
+
+
+def test_a_child_whose_implementations_the_skill_list_does_not_load_is_said(tmp_path: Path):
+    def launched(folder: Path, skills: str) -> list[tuple[str, str, str]]:
+        launch = LAUNCH.format(workspace="/nowhere", scene="x.turtle").replace(
+            "[pick_widget]", skills)
+        return found(repo(folder, {"pkg/task.py": TASK, "launch/robot.launch": launch}),
+                     "--select", "EZ3")
+
+    assert launched(tmp_path / "a", "[survey]") == [("task.py", "EZ316", "info")]
+    assert launched(tmp_path / "b", "[survey, scan_lidar]") == []
