@@ -168,7 +168,9 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         listed = launch.listed("skill_list") if launch is not None else None
         trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, pool.workers)),
                       named=tuple(paths), exclude=exclude,
-                      launched=frozenset(listed) if listed is not None else None)
+                      launched=frozenset(listed) if listed is not None else None,
+                      libraries=frozenset(launch.listed("libraries_list") or ())
+                      if launch is not None else frozenset())
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
                        standby, world, cache_dir)

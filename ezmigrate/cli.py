@@ -571,7 +571,7 @@ def _launch(anchor: Path, chosen: Path | None, quiet: bool) -> Any:
 
     from .launch import project_launch
 
-    root = enclosing_project(anchor) or (anchor if anchor.is_dir() else anchor.parent)
+    root = anchor if anchor.is_dir() else enclosing_project(anchor) or anchor.parent
     launch, note = project_launch(root, chosen)
     if not quiet and note is not None:
         click.echo(f"ezmigrate: {note}", err=True)

@@ -208,9 +208,10 @@ RULES: tuple[Rule, ...] = (
          "Call a node with its children (self.skill(...)(child, ...)); spell the keywords "
          "as SkiROS2's self.skill(stype, slabel, remap, specify, preconditions).",
          ("compound-call-shape",)),
-    Rule("EZ310", "processor-not-upstream", "warning",
-         "A processor that upstream SkiROS2 does not have (RetryOnFail, Loop, InferInvalid: "
-         "a branch's or a fork's own).",
+    Rule("EZ310", "processor-not-upstream", "info",
+         "A processor that SkiROS2's master and ros2 branches do not have (RetryOnFail is "
+         "the ros2_roscon24_workshop branch's; Loop, InferInvalid are forks'). Reported "
+         "once per project, naming where it exists.",
          "Use an upstream processor, or accept the dependency on the fork.",
          ("processor-not-upstream",)),
     Rule("EZ311", "remap-disjoint", "warning",

@@ -10,6 +10,7 @@ ones statically, EzSkiROS ones loaded), the standard library's, and those of the
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -72,6 +73,8 @@ class Trees:
     (``static.expand_findings``): reported when the tree can be neither read nor traced."""
     launched: frozenset[str] | None = None
     """The launch file's ``skill_list`` (None: no launch file, or no list in it)."""
+    libraries: frozenset[str] = frozenset()
+    """The launch file's ``libraries_list``."""
     named: tuple[Path, ...] = ()
     """The paths the run was given: the repository around them joins the skill index."""
     exclude: tuple[str, ...] = ()
@@ -209,6 +212,7 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
         index.add_modified(description, key, element, on_wrapper)
     index.unread = list(around.unread)
     index.launched = read.launched if read is not None else None
+    index.launched_libraries = read.libraries if read is not None else frozenset()
     index.unknown_compounds |= around.untraced
     for compound in around.compounds:
         index.add_compound(compound)
@@ -217,6 +221,13 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
             index.add_compound(model)
         else:
             index.unknown_compounds.add(_described_type(model, trees, library))
+    for candidate, data in items:
+        if MARKER in data:
+            flavour, package = ros_package_of(candidate.path, data)
+            if flavour == "ros2":
+                index.ros2_paths.add(str(candidate.path))
+            if package is not None:
+                index.package_names[str(candidate.path)] = package
     run = CompoundRun(models=trees.models)
     for path, model in trees.models:
         run.findings += [(path, f) for f in check_model(model, index, ontology)]
@@ -224,7 +235,55 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
             run.findings += [(path, CompoundFinding(kind, line, message, model.implementation))
                              for kind, line, message in trees.syntax.get(
                                  (path, model.implementation), ())]
+    run.findings = once_per_project(run.findings)
     return run
+
+
+def once_per_project(findings: list[tuple[str, CompoundFinding]]
+                     ) -> list[tuple[str, CompoundFinding]]:
+    """A processor that upstream lacks is one finding per project (at its first use, with
+    its count of uses), not one per tree that uses it."""
+    uses: dict[str, list[int]] = {}
+    kept: list[tuple[str, CompoundFinding]] = []
+    for path, finding in findings:
+        if finding.kind == "processor-not-upstream":
+            seen = uses.setdefault(finding.child, [])
+            seen.append(len(kept))
+            if len(seen) > 1:
+                continue
+        kept.append((path, finding))
+    for name, at in uses.items():
+        if len(at) > 1:
+            path, first = kept[at[0]]
+            kept[at[0]] = (path, replace(first, message=f"{first.message}; {len(at)} uses of "
+                                                        f"{name} in the project, reported once"))
+    return kept
+
+
+def ros_package_of(path: Path, data: bytes) -> tuple[str | None, str | None]:
+    """``(ros1/ros2, package name)`` of a file: its ROS package's ``package.xml`` (the
+    buildtool, catkin or ament, and the name), else its own ``rospy``/``rclpy`` imports for
+    the flavour; None for what neither says."""
+    from xml.etree import ElementTree
+
+    from ezskiros_runtime.ontology.discovery import package_root
+
+    from ..target import ros_flavour
+
+    package = package_root(path.resolve())
+    flavour, name = None, None
+    if package is not None:
+        flavour = ros_flavour(package / "package.xml")
+        try:
+            name = (ElementTree.parse(package / "package.xml").findtext("name") or "").strip()
+        except (ElementTree.ParseError, OSError):
+            name = None
+    if flavour is None:
+        if re.search(rb"^\s*(?:import|from)\s+rclpy\b", data, re.MULTILINE):
+            flavour = "ros2"
+        elif re.search(rb"^\s*(?:import|from)\s+rospy\b", data, re.MULTILINE):
+            flavour = "ros1"
+    return flavour, name or None
 
 
 def _described_type(model: Unanalysable, *trees: Trees) -> str:

@@ -25,6 +25,9 @@ if TYPE_CHECKING:
 UPSTREAM_PROCESSORS = frozenset({"NoProcessor", "Serial", "SerialStar", "Sequential",
                                  "Selector", "SelectorStar", "ParallelFf", "ParallelFs",
                                  "NoFail"})
+ELSEWHERE = {"RetryOnFail": "the upstream branch ros2_roscon24_workshop (the ROSCon 2024 "
+                            "workshop's, which the public pyrobosim skill library targets)"}
+"""Where a processor that upstream's other branches lack does exist (shared doc §3)."""
 _MAX_DEPTH = 16
 OBTAINED = {"static": "tree read statically", "traced": "tree traced by running expand"}
 """How the tree a finding is about was obtained, as every finding says it."""
@@ -108,9 +111,11 @@ class _Checker:
     def _processor(self, name: str, line: int) -> None:
         for part in name.replace(")", "").split("("):
             if part and part not in UPSTREAM_PROCESSORS:
+                where = ELSEWHERE.get(part, "forks of SkiROS2 only")
                 self.add("processor-not-upstream", line,
-                         f"processor {part} is not in upstream SkiROS2 (a fork's or a branch's "
-                         "own); the tree runs only where that fork is installed")
+                         f"processor {part} is not on SkiROS2's master and ros2 branches; it "
+                         f"exists on {where}: the tree runs only where that is installed",
+                         part)
 
     # -- one child ----------------------------------------------------------------------
 
@@ -156,7 +161,7 @@ class _Checker:
     def _judge(self, node: SkillNode, child: DescriptionInfo,
                others: list[Node | CallProblem]) -> None:
         self._label(node, child)
-        unlaunched = self.index.launched_implementations(child.name)
+        unlaunched = self.index.launched_implementations(child.name, self.model.path)
         if unlaunched is not None and child.origin.startswith("repository"):
             self.add("child-not-launched", node.line,
                      f"child type {child.name} is implemented by {', '.join(unlaunched)}, "

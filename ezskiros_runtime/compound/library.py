@@ -69,6 +69,14 @@ STANDARD_LIBRARY: tuple[DescriptionInfo, ...] = (
 )
 """``skiros2_std_lib``'s descriptions (master), from legacy-compound-skills.md §3."""
 
+STANDARD_LIBRARY_ROS2: dict[str, DescriptionInfo] = {
+    "WmSetRelation": _std("WmSetRelation", {
+        "Src": "sumo:Object", "Relation": None, "Dst": "sumo:Object", "RelationState": None,
+        "OldDstToRemove": "sumo:Object", "OldSrcToRemove": "sumo:Object"}),
+}
+"""Where the standard library's ``ros2`` branch (the ROS 2 port) differs from master: its
+``WmSetRelation`` adds two optional Element parameters (legacy-compound-skills.md §3)."""
+
 
 @dataclass
 class SkillIndex:
@@ -92,8 +100,15 @@ class SkillIndex:
     self_added: dict[str, set[str]] = field(default_factory=dict)
     """Keys implementations add to themselves in ``modifyDescription`` (not to the wrapper
     the tree holds), by description type: a ``specify`` of them is dropped."""
+    ros2_paths: set[str] = field(default_factory=set)
+    """Files of ROS 2 packages: their standard-library children are the ros2 branch's."""
     launched: frozenset[str] | None = None
     """The skills the launch file's ``skill_list`` loads (None: not known)."""
+    launched_libraries: frozenset[str] = frozenset()
+    """The launch file's ``libraries_list``: only a compound of one of these packages is
+    judged against its ``skill_list`` (another launch file may start the others)."""
+    package_names: dict[str, str] = field(default_factory=dict)
+    """File -> the name of the ROS package it belongs to."""
     unread: list[str] = field(default_factory=list)
     """Files of the repository whose classes could not be read at all: a type not found may
     be defined there, so "unknown child type" is then at most informational."""
@@ -122,6 +137,8 @@ class SkillIndex:
         one, else those whose folder shares most of ``path`` (its own package first).
         Several when they are equally near: which one the skill manager loads is unknown,
         and only what holds for each of them is certain."""
+        if info.origin == "skiros2_std_lib" and path in self.ros2_paths:
+            return [STANDARD_LIBRARY_ROS2.get(info.name, info)]
         others = self.definitions.get(info.name)
         if not others:
             return [info]
@@ -153,10 +170,12 @@ class SkillIndex:
             self.descriptions[description] = replace(info, params={**info.params,
                                                                    key: element})
 
-    def launched_implementations(self, description: str) -> list[str] | None:
+    def launched_implementations(self, description: str, path: str) -> list[str] | None:
         """The labels implementing ``description``, when none is in the launch file's
-        ``skill_list`` (None when one is, or nothing is known)."""
-        if self.launched is None:
+        ``skill_list`` and the launch file loads the library of ``path`` (None when one
+        is, or nothing is known)."""
+        if self.launched is None \
+                or self.package_names.get(path) not in self.launched_libraries:
             return None
         labels = sorted(label for label, described in self.implementations.items()
                         if described == description)

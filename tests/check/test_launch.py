@@ -80,7 +80,7 @@ def test_vocabulary_of_a_workspace_this_run_cannot_read_is_info(tmp_path: Path):
     files = {"pkg/skill.py": SKILL}
     elsewhere = repo(tmp_path / "a", {**files, "launch/cell.launch": LAUNCH.format(
         workspace="$(find lab_world)/owl", scene="cell.turtle")})
-    [(name, code, severity)] = found(elsewhere)
+    [(_, code, severity)] = found(elsewhere)
     assert (code, severity) == ("EZ209", "info")
     run = cli(".", "--output-format", "json", cwd=elsewhere)
     assert "workspace_dir $(find lab_world)/owl could not be read" in run.stdout
@@ -146,6 +146,7 @@ def test_find_resolves_to_a_ros_package_of_the_repository():
     assert alone.workspace_unresolved == "$(find paint_cell)/owl"
 
 
+PACKAGE = "<package><name>lab_skills</name><buildtool_depend>catkin</buildtool_depend></package>"
 TASK = legacy('self.addParam("Spot", Element("skiros:Location"), ParamTypes.Required)') + '''
 
 from skiros2_skill.core.skill import PrimitiveBase, SkillBase
@@ -173,9 +174,14 @@ class survey(SkillBase):
 def test_a_child_whose_implementations_the_skill_list_does_not_load_is_said(tmp_path: Path):
     def launched(folder: Path, skills: str) -> list[tuple[str, str, str]]:
         launch = LAUNCH.format(workspace="/nowhere", scene="x.turtle").replace(
-            "[pick_widget]", skills)
-        return found(repo(folder, {"pkg/task.py": TASK, "launch/robot.launch": launch}),
-                     "--select", "EZ3")
+            "[pick_widget]", skills) + f"<!-- {libraries} -->"
+        launch = launch.replace('<arg name="skill_list"', f'<arg name="libraries_list" '
+                                f'value="{libraries}"/>\n    <arg name="skill_list"')
+        return found(repo(folder, {"pkg/task.py": TASK, "launch/robot.launch": launch,
+                                   "pkg/package.xml": PACKAGE}), "--select", "EZ3")
 
+    libraries = "[lab_skills]"
     assert launched(tmp_path / "a", "[survey]") == [("task.py", "EZ316", "info")]
     assert launched(tmp_path / "b", "[survey, scan_lidar]") == []
+    libraries = "[other_lab]"  # the launch file does not load this package: not judged
+    assert launched(tmp_path / "c", "[survey]") == []
