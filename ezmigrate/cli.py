@@ -127,8 +127,9 @@ def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
         index, source = load_source(source)
         for warning in source.warnings():
             click.echo(f"ezmigrate: {warning}", err=True)
-        click.echo(f"ezmigrate: {source.describe()}", err=True)
-        return index, tuple(str(p) for p in source.paths), source.describe()
+        described = scrub(source.describe())  # its paths as every other line gives them
+        click.echo(f"ezmigrate: {described}", err=True)
+        return index, tuple(str(p) for p in source.paths), described
     except OntologyError as error:
         click.echo(f"ezmigrate: error: {error}", err=True)
         sys.exit(EXIT_ERROR)

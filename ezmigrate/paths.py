@@ -69,11 +69,19 @@ _ABSOLUTE = re.compile(r"(?<![\w.~/-])/[^\s\"'`,;:()\[\]<>|*]+")
 
 def scrub(text: str) -> str:
     """``text`` with every absolute path that names a file or folder of this machine (an
-    ontology file, the interpreter, a traceback's file) written as ``in_report`` writes it:
-    what a report says must not depend on where it was made."""
+    ontology file, the interpreter, a traceback's file) relative to the working directory
+    when inside it, else to the home folder (``~/.pyenv/...``), else as ``in_report``
+    writes it: what a report says must not depend on where it was made."""
+    home = os.path.expanduser("~").rstrip(os.sep) + os.sep
+
     def relative(match: re.Match[str]) -> str:
         found = match.group(0).rstrip(".")
         if not os.path.exists(found):
             return match.group(0)
-        return in_report(found) + match.group(0)[len(found):]
+        named = shown(found)
+        if os.path.isabs(named) and found.startswith(home) and home != os.sep:
+            named = "~/" + found[len(home):]  # an interpreter in ~/.pyenv: still findable
+        elif os.path.isabs(named):
+            named = in_report(found)
+        return named + match.group(0)[len(found):]
     return _ABSOLUTE.sub(relative, text)

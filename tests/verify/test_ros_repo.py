@@ -65,8 +65,9 @@ def migrated(tmp_path_factory):
 def test_the_lab_ontology_is_found_and_the_vendored_core_skipped(migrated):
     _, run, data = migrated
     lines = [line for line in run.stderr.splitlines() if line.startswith("ezmigrate: ontology")]
-    assert lines == [f"ezmigrate: ontology: the bundled SkiROS2 core plus the owl/ folders of "
-                     f"{migrated[0].resolve()}: owl/lab.owl, owl/robot.owl (vendored core "
+    # the repository is the working directory: named as ruff and black would, "."
+    assert lines == ["ezmigrate: ontology: the bundled SkiROS2 core plus the owl/ folders of "
+                     ".: owl/lab.owl, owl/robot.owl (vendored core "
                      "copies skipped: vendor/skiros2/owl/skiros.owl)"]
     assert data["ontology"] == lines[0].removeprefix("ezmigrate: ")
     assert "unknown" not in run.stderr  # lab:PaintStation, lab:paintedAt, ... are known
