@@ -271,7 +271,7 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
         statics = [(c, r) for c, _, r in read_statically([c for c, _ in library], pool.workers,
                                                          index)]
         add_descriptions(skills, statics, [], "skill library")
-    around = scan_repository(trees.named, trees.exclude, trees.seen)
+    around = scan_repository(trees.named, trees.exclude, trees.seen, read)
     for info in around.descriptions:  # the files not named; the named ones' readings win
         skills.add_description(info)
     add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import ast
 import io
+import os
 import tokenize
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
@@ -63,32 +64,44 @@ def repository_root(path: Path) -> Path:
 
 
 def scan_repository(named: Sequence[Path], exclude: Sequence[str] = (),
-                    skip: Iterable[str] = ()) -> RepositoryScan:
+                    skip: Iterable[str] = (),
+                    read: Sequence[tuple[Candidate, bytes]] = ()) -> RepositoryScan:
     """Descriptions, implementations, bases and literal trees of the repository around
-    ``named`` (``skip``: resolved paths the caller read itself)."""
-    roots = sorted({repository_root(p) for p in named if p.exists()})
-    roots = [r for r in roots if not any(o != r and o in r.parents for o in roots)]
+    ``named``. ``read``: the run's own files with their bytes (never read again); ``skip``:
+    the paths among them whose syntax tree the caller already read. Only a named *file*
+    widens the scope to its repository; the files of a named folder are all in ``read``."""
     scan = RepositoryScan()
-    if not roots:
-        return scan
-    skipped = {str(Path(p).resolve()) for p in skip}
-    candidates, _ = discover(roots, exclude)
-    for candidate in candidates:
-        if str(candidate.path.resolve()) in skipped:
-            continue
-        try:
-            data = candidate.path.read_bytes()
-        except OSError:
-            continue
+    skipped = set(skip)
+    for candidate, data in read:  # the run reads these itself, unless ast cannot parse them
+        if str(candidate.path) not in skipped and any(m in data for m in READ_WHEN):
+            _scan_file(candidate, data, scan, unparsable_only=True)
+    items: list[tuple[Candidate, bytes]] = []
+    roots = sorted({repository_root(p).resolve() for p in named
+                    if p.exists() and not p.is_dir()})
+    roots = [r for r in roots if not any(o != r and o in r.parents for o in roots)]
+    if roots:
+        known = {os.path.realpath(c.path) for c, _ in read}
+        found, _ = discover(roots, exclude)
+        for candidate in found:
+            if os.path.realpath(candidate.path) in known:
+                continue
+            try:
+                items.append((candidate, candidate.path.read_bytes()))
+            except OSError:
+                continue
+    for candidate, data in items:
         if any(marker in data for marker in READ_WHEN):
             _scan_file(candidate, data, scan)
     return scan
 
 
-def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan) -> None:
+def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan,
+               unparsable_only: bool = False) -> None:
     path = str(candidate.path)
     try:
         tree = ast.parse(data)
+        if unparsable_only:
+            return
     except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
         recovered = recover_classes(data)
         if recovered is None:
