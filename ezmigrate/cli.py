@@ -127,7 +127,7 @@ def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
         index, source = load_source(source)
         for warning in source.warnings():
             click.echo(f"ezmigrate: {warning}", err=True)
-        described = scrub(source.describe())  # its paths as every other line gives them
+        described = scrub(source.describe(), report=False)  # paths as other lines give them
         click.echo(f"ezmigrate: {described}", err=True)
         return index, tuple(str(p) for p in source.paths), described
     except OntologyError as error:

@@ -67,11 +67,12 @@ _ABSOLUTE = re.compile(r"(?<![\w.~/-])/[^\s\"'`,;:()\[\]<>|*]+")
 """An absolute POSIX path inside a text (not ``m/s``, not the ``/s`` of ``1 /s``)."""
 
 
-def scrub(text: str) -> str:
+def scrub(text: str, report: bool = True) -> str:
     """``text`` with every absolute path that names a file or folder of this machine (an
     ontology file, the interpreter, a traceback's file) relative to the working directory
     when inside it, else to the home folder (``~/.pyenv/...``), else as ``in_report``
-    writes it: what a report says must not depend on where it was made."""
+    writes it: what a report says must not depend on where it was made. ``report=False``
+    (stderr): only the first rule, as ruff and black print paths."""
     home = os.path.expanduser("~").rstrip(os.sep) + os.sep
 
     def relative(match: re.Match[str]) -> str:
@@ -79,7 +80,9 @@ def scrub(text: str) -> str:
         if not os.path.exists(found):
             return match.group(0)
         named = shown(found)
-        if os.path.isabs(named) and found.startswith(home) and home != os.sep:
+        if not report:  # stderr: as ruff prints a path, absolute outside the directory
+            pass
+        elif os.path.isabs(named) and found.startswith(home) and home != os.sep:
             named = "~/" + found[len(home):]  # an interpreter in ~/.pyenv: still findable
         elif os.path.isabs(named):
             named = in_report(found)
