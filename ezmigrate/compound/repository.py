@@ -30,7 +30,14 @@ from ezskiros_runtime.ontology.discovery import enclosing_project
 
 from ..discover import Candidate, discover
 from ..lint.plain_reader import Declined, read_plain
-from .static import NeedsTrace, class_bases, implementations, modified_params, read_compounds
+from .static import (
+    NeedsTrace,
+    class_bases,
+    implementation_classes,
+    implementations,
+    modified_params,
+    read_compounds,
+)
 
 READ_WHEN = (b"expand", b"setDescription", b"createDescription", b"SkillDescription")
 UNPARSED = "in a file Python 3 cannot parse"
@@ -117,7 +124,7 @@ def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan,
     scan.labels += implementations(tree)
     scan.bases += class_bases(tree)
     scan.modified += modified_params(tree)
-    implemented = {cls for cls, _ in implementations(tree)}
+    implemented = implementation_classes(tree)
     verdict = read_plain(data, candidate.relative, tree)
     read = {} if isinstance(verdict, Declined) else {s.name: s for s in verdict.skills}
     from .analysis import description_of

@@ -139,6 +139,13 @@ def _element_type(call: ast.Call) -> str | None:
     return None
 
 
+def implementation_classes(tree: ast.Module) -> set[str]:
+    """Names of the module's implementation classes (their ``createDescription`` calls
+    ``setDescription``): whatever label they register, they are no descriptions."""
+    return {node.name for node in tree.body
+            if isinstance(node, ast.ClassDef) and _described(node)[0] is not None}
+
+
 def _described(cls: ast.ClassDef) -> tuple[str | None, str]:
     """``self.setDescription(Desc(), label)`` in the class's ``createDescription``
     (``self.__class__.__name__`` or anything computed counts as the class's name). Only the

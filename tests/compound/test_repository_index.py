@@ -153,3 +153,18 @@ def test_the_scope_of_a_named_file_is_its_git_top_level_else_its_package(tmp_pat
     subprocess.run(["git", "init", "-q", str(tmp_path / "ws")], check=True)
     assert repository_root(package / "src" / "a.py") == (tmp_path / "ws").resolve()
     assert repository_root(package) == package
+
+
+def test_an_implementation_with_its_own_label_is_no_description(tmp_path: Path):
+    implementation = HEADER + description("Navigate", "Target") + textwrap.dedent('''
+
+
+        class drive(SkillBase):
+            def createDescription(self):
+                self.setDescription(Navigate(), "drive_mobile_base")
+        ''')
+    repo = write(tmp_path / "repo", {"pkg/drive.py": implementation,
+                                     "pkg/tasks.py": HEADER + compound("drive")})
+    assert brief(ez3([repo / "pkg" / "tasks.py"])) == {("tasks.py", 18, "EZ301", "error")}
+    (repo / "pkg" / "tasks.py").write_text(HEADER + compound("Navigate"), encoding="utf-8")
+    assert ez3([repo / "pkg" / "tasks.py"]) == []
