@@ -193,3 +193,48 @@ def test_both_hooks_pass_on_a_clean_repository(tmp_path: Path, hooks: tuple[Path
     assert [line.split(".")[0] for line in passed] == ["ezmigrate check",
                                                        "ezmigrate rewrite"], run.stdout
     assert (repo / "skills/pick.py").read_text(encoding="utf-8") == CLEAN_SKILL
+
+
+COMPOUND_TASK = textwrap.dedent('''\
+    from skiros2_common.core.abstract_skill import SkillDescription
+    from skiros2_common.core.params import ParamTypes
+    from skiros2_common.core.world_element import Element
+    from skiros2_skill.core.skill import SkillBase
+
+
+    class Patrol(SkillDescription):
+        def createDescription(self):
+            self.addParam("Route", Element("skiros:Location"), ParamTypes.Required)
+
+
+    class patrol(SkillBase):
+        def createDescription(self):
+            self.setDescription(Patrol(), self.__class__.__name__)
+
+        def expand(self, skill):
+            skill(self.skill("{child}", "", remap={{"Target": "Route"}}))
+    ''')
+
+
+def test_check_on_staged_files_knows_the_children_of_unstaged_siblings(
+        tmp_path: Path, hooks: tuple[Path, Path]):
+    """pre-commit names only the staged files: a compound skill whose child is described
+    in a sibling file that is not part of the commit gets what a run on the repository
+    gives it (issue 21, pattern 7), here nothing; a child defined nowhere is still EZ301."""
+    files = {"pkg/__init__.py": "", "pkg/descriptions.py": BASE,
+             "pkg/tasks.py": COMPOUND_TASK.format(child="Navigate")}
+    repo = _repository(tmp_path / "lab", files, hooks[1])
+    source, home = hooks
+
+    def staged(*names: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run(
+            [sys.executable, "-m", "pre_commit", "try-repo", str(source), "ezmigrate-check",
+             "--files", *names, "--color", "never"], cwd=repo, env=_env(home),
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=280)
+
+    run = staged("pkg/tasks.py")
+    assert run.returncode == 0 and "Passed" in run.stdout, run.stdout
+    (repo / "pkg" / "tasks.py").write_text(COMPOUND_TASK.format(child="NavigateTo"),
+                                           encoding="utf-8")
+    run = staged("pkg/tasks.py")
+    assert run.returncode == 1 and "pkg/tasks.py:17:9: EZ301" in run.stdout, run.stdout
