@@ -26,7 +26,7 @@ from .launch import Launch, with_init_scene
 from .lint.diagnostic import Diagnostic, Positions, diagnostic
 from .lint.legacy import legacy_hits
 from .lint.plain_reader import Declined, read_plain
-from .lint.robot_vocabulary import as_the_robot_resolves, scene_classes
+from .lint.robot_vocabulary import as_the_robot_resolves, scene_classes, typing_scenes
 from .lint.world_model import SCENE_SUFFIX, WorldRun, scene_files, world_diagnostics
 from .load_cache import LoadCache, cached_loads
 from .prefilter import may_hold_descriptions
@@ -176,7 +176,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
                        standby, world, cache_dir)
         outcome.files += len(world.scenes)
         outcome.diagnostics = as_the_robot_resolves(
-            outcome.diagnostics, scene_classes(world.scenes),
+            outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
             launch.workspace_unresolved if launch is not None else None)
         return outcome
     finally:

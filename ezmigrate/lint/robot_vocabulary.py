@@ -45,6 +45,19 @@ def scene_classes(scenes: Iterable[Path]) -> set[str]:
     return found
 
 
+def typing_scenes(paths: Sequence[Path], scenes: Sequence[Path],
+                  exclude: Sequence[str] = ()) -> list[Path]:
+    """The scenes whose types count as known: the run's, and those of the repository
+    around each named file, so that pre-commit (staged files only) judges a class as a
+    run on the repository does."""
+    from ..compound.repository import repository_root
+    from .world_model import scene_files
+
+    roots = sorted({repository_root(p).resolve() for p in paths
+                    if p.is_file() and p.suffix == ".py"})
+    return [*scenes, *scene_files(roots, exclude)] if roots else list(scenes)
+
+
 def as_the_robot_resolves(diagnostics: Sequence[Diagnostic], typed: set[str],
                           unread_workspace: str | None) -> list[Diagnostic]:
     """``diagnostics`` with EZ209 judged as described in the module doc."""

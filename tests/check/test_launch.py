@@ -49,7 +49,9 @@ def repo(tmp_path: Path, files: dict[str, str]) -> Path:
 
 
 def found(folder: Path, *args: str) -> list[tuple[str, str, str]]:
-    run = cli(".", "--output-format", "json", *args, cwd=folder)
+    """``(file name, code, severity)`` of ``check`` on a folder, or on one named file."""
+    named, cwd = (folder.name, folder.parent) if folder.is_file() else (".", folder)
+    run = cli(named, "--output-format", "json", *args, cwd=cwd)
     assert run.returncode in (0, 1), run.stderr
     return [(Path(str(d["path"])).name, str(d["code"]), str(d["severity"]))
             for d in json.loads(run.stdout)]
@@ -185,3 +187,15 @@ def test_a_child_whose_implementations_the_skill_list_does_not_load_is_said(tmp_
     assert launched(tmp_path / "b", "[survey, scan_lidar]") == []
     libraries = "[other_lab]"  # the launch file does not load this package: not judged
     assert launched(tmp_path / "c", "[survey]") == []
+
+
+def test_a_named_file_sees_the_scenes_of_its_repository(tmp_path: Path):
+    """pre-commit names the staged file only: a class its repository's scene types
+    individuals with is still known (the run on the repository says the same)."""
+    folder = repo(tmp_path, {"pkg/skill.py": SKILL, "owl/lab.ttl": OWL,
+                             "owl/scenes/cell.turtle": SCENE.format(kind="Widget")})
+    alone = [f for f in found(folder / "pkg" / "skill.py") if f[1] != "EZ407"]
+    assert alone == [] == [f for f in found(folder) if f[1] != "EZ407"]
+    (folder / "owl" / "scenes" / "cell.turtle").write_text(SCENE.format(kind="Gadget"))
+    assert [f for f in found(folder / "pkg" / "skill.py") if f[1] != "EZ407"] == [
+        ("skill.py", "EZ209", "warning")]
