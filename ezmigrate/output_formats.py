@@ -64,14 +64,21 @@ def _uri(path: str, base: Path) -> tuple[str, bool]:
         return absolute.as_uri(), False
 
 
+RULES_DOC = "docs/rules.md"
+"""Where the catalogue lives in ezmigrate's repository (generated from ``codes.py``)."""
+
+
 def sarif(diagnostics: Sequence[Diagnostic]) -> str:
     """SARIF 2.1.0: one rule per code that occurs, one result per diagnostic."""
     codes = sorted({d.code for d in diagnostics})
     rules = [{
         "id": code, "name": BY_CODE[code].name,
         "shortDescription": {"text": BY_CODE[code].rationale},
-        "help": {"text": BY_CODE[code].fix},
-        "helpUri": "https://github.com/ezskiros/ezmigrate/blob/main/docs/rules.md",
+        # the catalogue travels inside the log: no helpUri to a site this project does not
+        # publish (a made-up URL in every code-scanning alert is worse than none)
+        "help": {"text": f"{BY_CODE[code].fix} ({RULES_DOC}, {code})",
+                 "markdown": f"{BY_CODE[code].fix}\n\n{BY_CODE[code].rationale}\n\n"
+                             f"`{RULES_DOC}`, {code}"},
         "defaultConfiguration": {"level": _SARIF_LEVEL[BY_CODE[code].severity]},
     } for code in codes]
     base = _base(diagnostics)
@@ -86,7 +93,6 @@ def sarif(diagnostics: Sequence[Diagnostic]) -> str:
     } for d in diagnostics]
     log = {"version": "2.1.0", "$schema": SARIF_SCHEMA, "runs": [{
         "tool": {"driver": {"name": "ezmigrate", "version": __version__,
-                            "informationUri": "https://github.com/ezskiros/ezmigrate",
                             "rules": rules}},
         "originalUriBaseIds": {SRCROOT: {"uri": base.resolve().as_uri() + "/"}},
         "results": results}]}

@@ -56,6 +56,10 @@ def test_sarif_has_what_github_code_scanning_requires(runs):
     rules = run["tool"]["driver"]["rules"]
     ids = [r["id"] for r in rules]
     assert len(ids) == len(set(ids)) and all(r["shortDescription"]["text"] for r in rules)
+    # the catalogue travels in the log; no URL of a site the project does not publish
+    assert all(r["id"] in r["help"]["text"] and "docs/rules.md" in r["help"]["text"]
+               for r in rules)
+    assert "http" not in json.dumps(run["tool"])
     results = run["results"]
     assert results and {r["ruleId"] for r in results} == set(ids)
     assert run["originalUriBaseIds"]["SRCROOT"]["uri"] == ROOT.as_uri() + "/"
