@@ -147,12 +147,14 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               skill_libraries: tuple[Path, ...] = (), compounds: bool = True,
               world: WorldRun | None = None,
               include_vendored: bool = False,
-              cache_dir: Path | None = None, launch: Launch | None = None) -> CheckOutcome:
+              cache_dir: Path | None = None, launch: Launch | None = None,
+              trace: bool = True) -> CheckOutcome:
     """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
     the compound skills' trees against every description found (unless ``compounds`` is
     False: no EZ3 code is selected, so their reading and tracing would be thrown away),
     then the world model (EZ4xx: ``world``, or the defaults and the scenes under ``paths``;
-    scenes named in ``paths`` are scenes, not Python files)."""
+    scenes named in ``paths`` are scenes, not Python files). ``trace`` False
+    (``--no-trace``): no user code is imported, neither EzSkiROS files nor compound skills."""
     world = world or WorldRun(scenes=tuple(scene_files(paths, exclude)))
     world = with_init_scene(world, launch)
     candidates, notes = discover([p for p in paths if p.suffix != SCENE_SUFFIX], exclude,
@@ -170,10 +172,10 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
                       named=tuple(paths), exclude=exclude,
                       launched=frozenset(listed) if listed is not None else None,
                       libraries=frozenset(launch.listed("libraries_list") or ())
-                      if launch is not None else frozenset())
+                      if launch is not None else frozenset(), trace=trace)
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
-                       standby, world, cache_dir)
+                       standby, world, cache_dir, trace)
         outcome.files += len(world.scenes)
         outcome.diagnostics = as_the_robot_resolves(
             outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
@@ -188,7 +190,7 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
          pool: PoolConfig, progress: Callable[[str], None] | None,
          skill_libraries: tuple[Path, ...], trees: Trees | None,
          standby: list[Standby], world: WorldRun,
-         cache_dir: Path | None = None) -> CheckOutcome:
+         cache_dir: Path | None = None, trace: bool = True) -> CheckOutcome:
     """``run_check`` once its compound pass (``trees``) is set up."""
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
@@ -212,6 +214,11 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
                                                Positions(outcome.sources[path]), index)
             if RUNTIME_MARKER in data:
                 loadable.append(candidate)
+    if loadable and not trace:
+        outcome.notes.append(f"{len(loadable)} EzSkiROS file(s) not loaded (--no-trace): "
+                             "their descriptions are checked when they are imported, which "
+                             "--no-trace forbids")
+        loadable = []
     if loadable and progress is not None:
         progress(f"loading {len(loadable)} EzSkiROS files")
     cache = None if cache_dir is None else LoadCache.for_run(

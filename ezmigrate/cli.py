@@ -478,6 +478,9 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 @click.option("--include-vendored", is_flag=True,
               help="Also go into vendored copies of SkiROS2's own packages (skiros2_common, "
                    "skiros2_std_skills, ...), which are skipped with a note by default.")
+@click.option("--no-trace", is_flag=True,
+              help="Never import user code: EzSkiROS files are not loaded and compound "
+                   "skills whose tree the syntax cannot give are not traced (said as info).")
 @click.option("--no-cache", is_flag=True,
               help="Load every EzSkiROS file again instead of reusing what an earlier run "
                    "of an unchanged repository loaded (kept in .ezmigrate_cache).")
@@ -495,7 +498,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
           ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
           statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
           python: str | None, exclude: tuple[str, ...], include_vendored: bool, quiet: bool,
-          scene: Path | None, debug: bool, no_cache: bool = False,
+          scene: Path | None, debug: bool, no_cache: bool = False, no_trace: bool = False,
           stdin_filename: Path | None = None, fix: bool = False,
           show_diff: bool = False, launch_file: Path | None = None) -> None:
     """Lint SkiROS2 and EzSkiROS descriptions under PATHS (codes: docs/rules.md).
@@ -542,7 +545,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
                         world=_world_run(paths, options.exclude, scene),
                         include_vendored=include_vendored,
                         cache_dir=None if no_cache else _cache_dir(paths, options),
-                        launch=_launch(anchor, launch_file, quiet))
+                        launch=_launch(anchor, launch_file, quiet), trace=not no_trace)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
     found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it

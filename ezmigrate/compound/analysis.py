@@ -78,6 +78,9 @@ class Trees:
     named: tuple[Path, ...] = ()
     """The paths the run was given: the repository around them joins the skill index."""
     exclude: tuple[str, ...] = ()
+    trace: bool = True
+    """False (``check --no-trace``): no user code is imported, so a tree the syntax cannot
+    read stays unread, and says why."""
 
     def add(self, candidate: Candidate, data: bytes, tree: ast.Module | None = None) -> None:
         """One file (``tree``: its syntax tree when the caller has parsed it already)."""
@@ -127,6 +130,13 @@ def _trace(trees: Trees, pool: PoolConfig, standby: Standby | None = None) -> No
     again one file per child, so the verdict lands on the file that caused it.
     """
     if not trees.traced:
+        return
+    if not trees.trace:
+        for candidate, pending in trees.traced.values():
+            for unread in pending:
+                trees.models.append((str(candidate.path), Unanalysable(
+                    unread.implementation, f"{unread.reason}, and --no-trace keeps its module "
+                    "from being imported to trace it", unread.line)))
         return
     order = list(trees.traced.values())
     jobs = [replace(job_for(c.path, None, c.root, tuple(n.implementation for n in pending)),
@@ -199,7 +209,7 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
     added to ``index``.
     """
     around = around or RepositoryScan()
-    library = _read(library_items)
+    library = _read(library_items, Trees(trace=read.trace if read is not None else True))
     _trace(library, pool)
     trees = _read(items, read)
     _trace(trees, pool, standby)
