@@ -561,10 +561,9 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     click.echo((STATISTICS if statistics else FORMATS)[output_format](shown), nl=False)
     errors = sum(1 for d in found if d.severity == "error")
     if not quiet:
-        others = len(found) - errors
         click.echo(f"ezmigrate: {counted(outcome.files, 'file')} checked, "
                    f"{counted(outcome.skills, 'skill')}, {counted(errors, 'error')}, "
-                   f"{others} other {'finding' if others == 1 else 'findings'}", err=True)
+                   f"{counted(len(found) - errors, 'other finding')}", err=True)
     sys.exit(EXIT_OK if exit_zero or not errors else EXIT_ATTENTION)
 
 

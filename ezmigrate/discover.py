@@ -17,12 +17,12 @@ from __future__ import annotations
 import errno
 import fnmatch
 import os
-import re
 import subprocess
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from .package_xml import package_name
 from .paths import shown
 from .writing import is_temporary_name
 
@@ -31,7 +31,6 @@ UPSTREAM_PACKAGES = frozenset({
     "skiros2_gui", "skiros2_msgs", "skiros2_resource", "skiros2_std_skills",
     "skiros2_std_lib", "skiros2_test_lib", "skiros2_template_lib"})
 """SkiROS2's own ROS packages (framework and standard libraries): vendored, never ours."""
-_PACKAGE_NAME = re.compile(rb"<name>\s*([A-Za-z0-9_]+)\s*</name>")
 
 ALWAYS_EXCLUDED = frozenset({".git", ".hg", ".svn", "__pycache__", ".venv", "venv", ".tox",
                              ".mypy_cache", ".ruff_cache", ".pytest_cache", "node_modules",
@@ -103,12 +102,8 @@ def vendored_package(folder: Path) -> str | None:
     ``package.xml`` gives), or None."""
     if folder.name in UPSTREAM_PACKAGES:
         return folder.name
-    try:
-        data = (folder / "package.xml").read_bytes()
-    except OSError:
-        return None
-    match = _PACKAGE_NAME.search(data)
-    name = match.group(1).decode() if match else None
+    manifest = folder / "package.xml"
+    name = package_name(manifest) if manifest.is_file() else None
     return name if name in UPSTREAM_PACKAGES else None
 
 

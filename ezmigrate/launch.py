@@ -24,6 +24,7 @@ from xml.etree import ElementTree
 
 from .discover import ALWAYS_EXCLUDED
 from .lint.world_model import WorldRun
+from .package_xml import manifests_below, package_name
 
 KEYS = ("workspace_dir", "init_scene", "libraries_list", "skill_list")
 SUFFIXES = (".launch", ".launch.xml", ".launch.py")
@@ -117,16 +118,10 @@ def _walk(root: Path) -> Iterator[Path]:
 def ros_packages(root: Path) -> dict[str, Path]:
     """``{name: folder}`` of the ``package.xml`` files under ``root``."""
     found: dict[str, Path] = {}
-    for manifest in root.rglob("package.xml"):
-        if any(p in ALWAYS_EXCLUDED or p.startswith(".")
-               for p in manifest.relative_to(root).parts[:-1]):
-            continue
-        try:
-            name = ElementTree.parse(manifest).findtext("name")
-        except (ElementTree.ParseError, OSError):
-            continue
+    for manifest in manifests_below(root):
+        name = package_name(manifest)
         if name:
-            found.setdefault(name.strip(), manifest.parent)
+            found.setdefault(name, manifest.parent)
     return found
 
 

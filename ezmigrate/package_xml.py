@@ -11,11 +11,13 @@ follows (or of the package's first child element) and the file's own line ending
 
 from __future__ import annotations
 
+import os
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from pathlib import Path
+from xml.etree import ElementTree
 
-from ezskiros_runtime.ontology.discovery import PACKAGE_XML, package_root
+from ezskiros_runtime.ontology.discovery import NOT_SEARCHED, PACKAGE_XML, package_root
 
 ROSDEP_KEY = "python3-ezskiros-runtime-pip"
 """The rosdep key for the runtime, defined by the lab's rosdep file (README, "On the robot")."""
@@ -45,6 +47,24 @@ def with_exec_depend(data: bytes) -> bytes | None:
     indent = child.group(1) if child else b"  "
     line = indent + b"<exec_depend>" + ROSDEP_KEY.encode() + b"</exec_depend>" + newline
     return data[:close.start()] + line + data[close.start():]
+
+
+def package_name(package_xml: Path) -> str | None:
+    """The ``<name>`` a ``package.xml`` gives its package, or None (unreadable, no name)."""
+    try:
+        name = ElementTree.parse(package_xml).findtext("name")
+    except (ElementTree.ParseError, OSError):
+        return None
+    return name.strip() if name and name.strip() else None
+
+
+def manifests_below(folder: Path) -> Iterator[Path]:
+    """Every ``package.xml`` under ``folder``, sorted, not in hidden folders nor in what
+    discovery never searches (build, devel and install spaces hold copies of them)."""
+    for here, dirs, names in os.walk(folder):
+        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in NOT_SEARCHED)
+        if PACKAGE_XML in names:
+            yield Path(here) / PACKAGE_XML
 
 
 def packages_of(files: Iterable[Path]) -> list[Path]:

@@ -15,6 +15,8 @@ import re
 from functools import lru_cache
 from pathlib import Path
 
+from ezskiros_runtime.ontology.discovery import git_top
+
 
 def shown(path: Path | str) -> str:
     """``path`` as the user sees it: relative to the working directory when inside it,
@@ -55,12 +57,8 @@ def from_repository(path: Path | str, fallback: str | None = None) -> str:
 
 @lru_cache(maxsize=256)
 def git_root(folder: Path) -> Path | None:
-    """The nearest folder at or above ``folder`` holding ``.git`` (a folder, or the file of
-    a worktree or submodule), or ``None``."""
-    for candidate in (folder, *folder.parents):
-        if (candidate / ".git").exists():
-            return candidate
-    return None
+    """``discovery.git_top``, remembered: a report asks it of the same folders often."""
+    return git_top(folder)
 
 
 _ABSOLUTE = re.compile(r"(?<![\w.~/-])/[^\s\"'`,;:()\[\]<>|*]+")

@@ -11,16 +11,16 @@ kinds writes for the oldest Python among them, which the others run as well.
 
 from __future__ import annotations
 
-import os
 import re
 import sys
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from ezskiros_runtime.ontology.discovery import NOT_SEARCHED, PACKAGE_XML, package_root
+from ezskiros_runtime.ontology.discovery import PACKAGE_XML, package_root
 
 from .core.emit import DEFAULT_TARGET
+from .package_xml import manifests_below
 
 SPELLING = re.compile(r"py3(\d{1,2})\Z")
 OLDEST = (3, 8)
@@ -82,15 +82,8 @@ def package_files(paths: Iterable[Path]) -> list[Path]:
         if above is not None:
             found[above / PACKAGE_XML] = None
         if path.is_dir():
-            found.update(dict.fromkeys(_below(path.resolve())))
+            found.update(dict.fromkeys(manifests_below(path.resolve())))
     return list(found)
-
-
-def _below(folder: Path) -> Iterator[Path]:
-    for here, dirs, names in os.walk(folder):
-        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in NOT_SEARCHED)
-        if PACKAGE_XML in names:
-            yield Path(here) / PACKAGE_XML
 
 
 def target_for(paths: Iterable[Path], configured: tuple[int, int] | None,

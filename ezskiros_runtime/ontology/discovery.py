@@ -62,10 +62,14 @@ def enclosing_project(path: Path) -> Path | None:
     in neither (a home folder, say: then nothing around it is the project's to search)."""
     first = path.resolve()
     folder = first if first.is_dir() else first.parent
-    for candidate in (folder, *folder.parents):
-        if (candidate / ".git").exists():
-            return candidate
-    return package_root(folder)
+    return git_top(folder) or package_root(folder)
+
+
+def git_top(folder: Path) -> Path | None:
+    """The nearest folder at or above ``folder`` holding ``.git`` (a folder, or the file of
+    a worktree or submodule), or None."""
+    return next((candidate for candidate in (folder, *folder.parents)
+                 if (candidate / ".git").exists()), None)
 
 
 def package_root(path: Path) -> Path | None:
