@@ -250,7 +250,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         jobs=options.jobs, output_dir=output_dir, verify=verify, timeout=options.timeout,
         python=python, ignore_order=ignore_order, ignore_labels=ignore_labels,
         ontology=ontology_files, project=options.project, target=robot.version,
-        include_vendored=include_vendored)
+        include_vendored=include_vendored, package_xml=package_xml)
     outcome = run_rewrite(request, index)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
@@ -262,8 +262,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
                       debug)
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
-    declared = _declare_runtime(outcome, request, color) if package_xml and not output_dir \
-        else []
+    declared = _show_manifests(outcome, request, color)
     compounds: list[str] = []
     scenes: list[str] = []
     if report is not None and report.suffix.lower() == ".md":
@@ -313,35 +312,22 @@ def _cache_dir(paths: Sequence[Path], options: Options) -> Path:
     return base / FOLDER
 
 
-def _declare_runtime(outcome: Any, request: Any, color: bool | None) -> list[str]:
-    """Add the runtime's ``<exec_depend>`` to the package.xml of each ROS package whose
-    files were written (or, with --dry-run/--check, would be): shown as a diff or a
-    ``would rewrite`` line like any file; one line each for the report."""
-    from .package_xml import ROSDEP_KEY, packages_of, with_exec_depend
-    from .writing import WriteRefused, atomic_write, digest
+def _show_manifests(outcome: Any, request: Any, color: bool | None) -> list[str]:
+    """Say what became of each package.xml the run declares the runtime in (``session``
+    decided and wrote them): a diff with --dry-run, ``would rewrite`` with --check, one
+    stderr line each; and one line each for the report."""
+    from .package_xml import ROSDEP_KEY
 
-    written = set(outcome.written)
-    files = [item.candidate.path for item in outcome.migrated if item.result.changed
-             and (not request.writes or item.candidate.relative in written)]
     lines = []
-    for xml in packages_of(files):
-        old = xml.read_bytes()
-        new = with_exec_depend(old)
-        if new is None:
-            continue
-        shown = shown_path(xml)
+    for manifest in outcome.manifests:
+        shown = shown_path(manifest.path)
         if request.dry_run:  # applies from the repository root, as the files' diffs do
-            diff = unified_diff(from_repository(xml, shown), old, new)
+            diff = unified_diff(from_repository(manifest.path, shown), manifest.old,
+                                manifest.new)
             use_colour = sys.stdout.isatty() if color is None else color
             click.echo(colour(diff) if use_colour else diff, nl=False)
         elif request.check:
             click.echo(f"would rewrite {shown}")
-        else:
-            try:
-                atomic_write(xml, new, digest(old), roots=[xml.parent])
-            except (WriteRefused, OSError) as error:
-                click.echo(f"ezmigrate: {xml}: not written ({error})", err=True)
-                continue
         lines.append(f"`{shown}`: declares the runtime, `<exec_depend>{ROSDEP_KEY}"
                      "</exec_depend>`" + ("" if request.writes else " (would)"))
         click.echo(f"ezmigrate: {shown}: <exec_depend>{ROSDEP_KEY}</exec_depend> "

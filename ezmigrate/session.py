@@ -20,11 +20,12 @@ from typing import TYPE_CHECKING
 
 from . import holdpoint, interrupt
 from .discover import Candidate, discover
+from .package_xml import packages_of, with_exec_depend
 from .progress import Progress
 from .project import Checks, settle
 from .runner import Migrated, default_jobs
 from .verify.verdicts import Comparison
-from .writing import WriteRefused, atomic_write, remove_stale_temporary
+from .writing import WriteRefused, atomic_write, digest, remove_stale_temporary
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -54,6 +55,8 @@ class RewriteOptions:
     """The Python the migrated code must run on (``ezmigrate.target``; None: the default)."""
     include_vendored: bool = False
     """Go into vendored copies of SkiROS2's own packages too (``discover``)."""
+    package_xml: bool = True
+    """Declare the runtime in the package.xml of each package migrated (``package_xml``)."""
 
     @property
     def writes(self) -> bool:
@@ -79,6 +82,18 @@ class RewriteOutcome:
     notes: list[str] = field(default_factory=list)
     written: list[str] = field(default_factory=list)
     refused: list[str] = field(default_factory=list)
+    manifests: list[Manifest] = field(default_factory=list)
+    """package.xml files that gain the runtime's ``<exec_depend>`` (written when the run
+    writes; otherwise what a write would do)."""
+
+
+@dataclass(frozen=True)
+class Manifest:
+    """A package.xml before and after the runtime is declared in it."""
+
+    path: Path
+    old: bytes
+    new: bytes
 
 
 def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
@@ -98,6 +113,7 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
                           options.target, refuse_unloadable=True)
     outcome = RewriteOutcome(migrated, notes)
     if not options.writes:
+        outcome.manifests = _manifests(outcome, options)
         return outcome
     interrupt.track(outcome.written, [i.candidate.relative for i in migrated
                                       if i.result.changed])
@@ -120,7 +136,35 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
             holdpoint.reach(f"writing:{len(outcome.written) + 1}")
             _write(item, content, options, outcome, on_written)
         holdpoint.reach(f"written:{len(outcome.written)}")
+    for manifest in _manifests(outcome, options):
+        interrupt.check()
+        with interrupt.deferred():
+            try:
+                atomic_write(manifest.path, manifest.new, digest(manifest.old),
+                             roots=[manifest.path.parent])
+            except (WriteRefused, OSError) as error:
+                outcome.refused.append(f"{manifest.path}: not written ({error})")
+                continue
+        outcome.manifests.append(manifest)
     return outcome
+
+
+def _manifests(outcome: RewriteOutcome, options: RewriteOptions) -> list[Manifest]:
+    """The package.xml of each ROS package whose files were written (or, without writing,
+    would be) that does not declare the runtime yet, with the line added. Not for
+    ``--output-dir``, whose copies belong to no package."""
+    if not options.package_xml or options.output_dir is not None:
+        return []
+    written = set(outcome.written)
+    files = [item.candidate.path for item in outcome.migrated if item.result.changed
+             and (not options.writes or item.candidate.relative in written)]
+    found = []
+    for path in packages_of(files):
+        old = path.read_bytes()
+        new = with_exec_depend(old)
+        if new is not None:
+            found.append(Manifest(path, old, new))
+    return found
 
 
 def _content(item: Migrated, output_dir: Path | None) -> bytes | None:
