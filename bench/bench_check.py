@@ -56,9 +56,10 @@ def floor(root: Path) -> float:
 
 def core(root: Path, jobs: int) -> tuple[float, int, int]:
     """Seconds of ``run_check`` (warm), skills seen, findings before selection."""
-    from ezmigrate.check import run_check
+    from ezmigrate.project.check import run_check
     from ezmigrate.verify.pool import PoolConfig
-    from ezskiros_runtime.ontology.index import bundled_ontology_path, load_index
+    from ezskiros_runtime.ontology.index import bundled_ontology_path
+    from ezskiros_runtime.ontology.load import load_index
 
     index = load_index([bundled_ontology_path()])
     start = time.perf_counter()

@@ -86,9 +86,10 @@ def generate(root: Path, modules: int = 50, seed: int = 0) -> tuple[int, int]:
 
 
 def _time(root: Path, jobs: int, compounds: bool) -> tuple[float, int]:
-    from ezmigrate.check import run_check
+    from ezmigrate.project.check import run_check
     from ezmigrate.verify.pool import PoolConfig
-    from ezskiros_runtime.ontology.index import bundled_ontology_path, load_index
+    from ezskiros_runtime.ontology.index import bundled_ontology_path
+    from ezskiros_runtime.ontology.load import load_index
 
     index = load_index([bundled_ontology_path()])
     start = time.perf_counter()

@@ -41,7 +41,7 @@ SKIROS2 = REPO / ".." / "shared" / "ontology" / "skiros2"
 CHILD = """
 import json, sys, time
 started = time.perf_counter()
-from ezskiros_runtime.ontology.index import load_index
+from ezskiros_runtime.ontology.load import load_index
 imported = time.perf_counter()
 index = load_index(sys.argv[1:] or None)
 done = time.perf_counter()

@@ -199,7 +199,7 @@ def same_files(tree: Path) -> int:
     """Checks that LibCST's runner and ezmigrate see the same ``.py`` files; their count."""
     from libcst.codemod._cli import gather_files
 
-    from ezmigrate.discover import discover
+    from ezmigrate.files.discover import discover
 
     theirs = {os.path.realpath(p) for p in gather_files([str(tree)])}
     candidates, _ = discover([tree])
@@ -283,11 +283,11 @@ def summary_of(stderr: str) -> str:
 VERIFY_STEP_CHILD = """
 import json, resource, sys, time
 from pathlib import Path
-from ezmigrate.discover import discover
-from ezmigrate.project import settle, verify_changed
-from ezmigrate.session import RewriteOptions
+from ezmigrate.files.discover import discover
+from ezmigrate.project.settle import settle, verify_changed
+from ezmigrate.project.session import RewriteOptions
 from ezskiros_runtime.ontology.config import resolve_ontology_paths
-from ezskiros_runtime.ontology.index import load_index
+from ezskiros_runtime.ontology.load import load_index
 
 tree, jobs = Path(sys.argv[1]), int(sys.argv[2])
 source = resolve_ontology_paths(None, start=tree)
@@ -333,7 +333,7 @@ def verify_step_runs(tree: Path, files: int, jobs: int, rounds: int, env: dict[s
 ONTOLOGY_CHILD = """
 import json, sys, time
 started = time.perf_counter()
-from ezskiros_runtime.ontology.index import load_index
+from ezskiros_runtime.ontology.load import load_index
 imported = time.perf_counter()
 index = load_index(sys.argv[1:])
 done = time.perf_counter()

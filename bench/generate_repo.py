@@ -411,7 +411,7 @@ def _param_line(rng: random.Random, key: str, category: str, style: tuple,
 
 @functools.cache
 def _index() -> Any:
-    from ezskiros_runtime.ontology.index import load_index
+    from ezskiros_runtime.ontology.load import load_index
 
     return load_index()
 

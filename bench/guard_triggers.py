@@ -1,4 +1,4 @@
-"""Count how often the line guard (``ezmigrate/core/guard.py``) refuses a reading.
+"""Count how often the line guard (``ezmigrate/codemod/core/guard.py``) refuses a reading.
 
     python bench/guard_triggers.py fixtures /tmp/bench-tree ...
 
@@ -16,7 +16,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from ezmigrate.migrate import Settings, guarded_readings
+from ezmigrate.codemod.migrate import Settings, guarded_readings
 
 
 def main(folders: list[str]) -> int:

@@ -32,8 +32,8 @@ from hypothesis import HealthCheck, Phase, given, seed, settings  # noqa: E402
 from strategies.legacy_source import GeneratedModule, legacy_modules_with_names  # noqa: E402
 from strategies.roundtrip import RoundTrip  # noqa: E402
 
-from ezmigrate.migrate import Settings  # noqa: E402
-from ezskiros_runtime.ontology.index import load_index  # noqa: E402
+from ezmigrate.codemod.migrate import Settings  # noqa: E402
+from ezskiros_runtime.ontology.load import load_index  # noqa: E402
 
 
 def _chunk(trip: RoundTrip, strategy_args: dict[str, object], examples: int,

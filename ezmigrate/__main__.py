@@ -21,7 +21,7 @@ def main() -> None:
                          f"Python {found} ({sys.executable}); ezskiros_runtime, which "
                          "migrated skills import, does run here\n")
         raise SystemExit(2)
-    from .cli import main as cli
+    from .cli.commands import main as cli
 
     cli()
 

@@ -1,7 +1,7 @@
 """The project's ``pyproject.toml`` and its ``[tool.ezmigrate]`` table: the one reader of both.
 
 The runtime (``ontology``, see ``ontology.config``) and the ``ezmigrate`` command (every
-other key, validated in ``ezmigrate.config``) both read their settings through
+other key, validated in ``ezmigrate.cli.config``) both read their settings through
 ``find_tool_table``, so they can never disagree on which file is the project's, nor on
 what makes that file unusable.
 

@@ -30,8 +30,7 @@ from ezmigrate.verify.interpreters import find_python
 REPO = Path(__file__).resolve().parents[1]
 PACKAGE = REPO / "fixtures" / "noetic_package"
 """A ROS 1 (catkin) package with its own ``owl/`` vocabulary and an empty ``owl/lth.owl``."""
-RUNTIME_TESTS = ("tests/dsl", "tests/ontology", "tests/legacy", "tests/compound",
-                 "tests/test_model.py")
+RUNTIME_TESTS = ("tests/runtime",)
 FLOOR = 300
 """Runtime tests that must run under each robot's Python (412 ran under 3.8 when written)."""
 

@@ -17,16 +17,18 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ezskiros_runtime.compound.checks import CompoundFinding, check_model
-from ezskiros_runtime.compound.library import DescriptionInfo, SkillIndex
+from ezskiros_runtime.compound.library import SkillIndex
 from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.compound.trace import Unanalysable
-from ezskiros_runtime.model import SkillModel
+from ezskiros_runtime.ontology.discovery import package_root
 
-from ..discover import Candidate
-from ..results import FileResult
+from ..files.discover import Candidate, discover
+from ..files.package_xml import package_name, ros_flavour
+from ..report.results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_batched
 from ..verify.protocol import LoadOutcome
-from .repository import RepositoryScan
+from .diagram import markdown_section
+from .repository import RepositoryScan, description_of
 from .static import (
     NeedsTrace,
     class_bases,
@@ -169,16 +171,6 @@ def _record(trees: Trees, path: str, pending: list[NeedsTrace],
                                                label=need.label)))
 
 
-def description_of(name: str, model: dict[str, Any] | None, origin: str, path: str,
-                   line: int) -> DescriptionInfo:
-    """A description type from its static model (``SkillResult.model``/a loaded model);
-    without one (a description kept as legacy) the type exists, its keys are unknown."""
-    if model is None:
-        return DescriptionInfo(name, {}, origin, path, line, complete=False)
-    params = SkillModel.from_json(model).params
-    return DescriptionInfo(name, {p.key: p.element_type for p in params}, origin, path, line)
-
-
 def add_descriptions(index: SkillIndex, results: Iterable[tuple[Candidate, FileResult]],
                      loaded: Iterable[tuple[Candidate, Sequence[dict[str, Any]]]],
                      origin: str) -> None:
@@ -274,20 +266,11 @@ def ros_package_of(path: Path, data: bytes) -> tuple[str | None, str | None]:
     """``(ros1/ros2, package name)`` of a file: its ROS package's ``package.xml`` (the
     buildtool, catkin or ament, and the name), else its own ``rospy``/``rclpy`` imports for
     the flavour; None for what neither says."""
-    from xml.etree import ElementTree
-
-    from ezskiros_runtime.ontology.discovery import package_root
-
-    from ..target import ros_flavour
-
     package = package_root(path.resolve())
     flavour, name = None, None
     if package is not None:
         flavour = ros_flavour(package / "package.xml")
-        try:
-            name = (ElementTree.parse(package / "package.xml").findtext("name") or "").strip()
-        except (ElementTree.ParseError, OSError):
-            name = None
+        name = package_name(package / "package.xml")
     if flavour is None:
         if re.search(rb"^\s*(?:import|from)\s+rclpy\b", data, re.MULTILINE):
             flavour = "ros2"
@@ -307,8 +290,6 @@ def _described_type(model: Unanalysable, *trees: Trees) -> str:
 
 def library_candidates(paths: Sequence[Path]) -> list[tuple[Candidate, bytes]]:
     """The Python files of ``[tool.ezmigrate] skill-libraries``, read."""
-    from ..discover import discover
-
     found, _ = discover([p for p in paths if p.exists()])
     items = []
     for candidate in found:
@@ -322,8 +303,6 @@ def library_candidates(paths: Sequence[Path]) -> list[tuple[Candidate, bytes]]:
 def report_section(items: Sequence[tuple[Candidate, bytes, FileResult]],
                    ontology: OntologyIndex | None, pool: PoolConfig) -> list[str]:
     """The Markdown report's "Compound skills" section for the files of a run."""
-    from .diagram import markdown_section
-
     if not any(MARKER in data for _, data, _ in items):
         return []
     index = SkillIndex.with_standard_library()

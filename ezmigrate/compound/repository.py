@@ -23,12 +23,13 @@ import tokenize
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from ezskiros_runtime.compound.library import DescriptionInfo
 from ezskiros_runtime.compound.model import CompoundModel
-from ezskiros_runtime.ontology.discovery import enclosing_project
+from ezskiros_runtime.model import SkillModel
 
-from ..discover import Candidate, discover
+from ..files.discover import Candidate, discover, repository_root
 from ..lint.plain_reader import Declined, read_plain
 from .static import (
     NeedsTrace,
@@ -61,13 +62,14 @@ class RepositoryScan:
     """Files whose class names not even ``tokenize`` could recover."""
 
 
-def repository_root(path: Path) -> Path:
-    """The scope of a named path: a directory itself; for a file, its git top level, else
-    its ROS package (``enclosing_project``, as ontology discovery finds it), else its
-    folder."""
-    if path.is_dir():
-        return path
-    return enclosing_project(path) or path.resolve().parent
+def description_of(name: str, model: dict[str, Any] | None, origin: str, path: str,
+                   line: int) -> DescriptionInfo:
+    """A description type from its static model (``SkillResult.model``/a loaded model);
+    without one (a description kept as legacy) the type exists, its keys are unknown."""
+    if model is None:
+        return DescriptionInfo(name, {}, origin, path, line, complete=False)
+    params = SkillModel.from_json(model).params
+    return DescriptionInfo(name, {p.key: p.element_type for p in params}, origin, path, line)
 
 
 def scan_repository(named: Sequence[Path], exclude: Sequence[str] = (),
@@ -127,8 +129,6 @@ def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan,
     implemented = implementation_classes(tree)
     verdict = read_plain(data, candidate.relative, tree)
     read = {} if isinstance(verdict, Declined) else {s.name: s for s in verdict.skills}
-    from .analysis import description_of
-
     for node in tree.body:
         if not isinstance(node, ast.ClassDef) or node.name in implemented:
             continue

@@ -29,7 +29,7 @@ from ezskiros_runtime.compound.trace import (
     parameter_object_message,
 )
 
-from ..core.legacy_names import ast_dotted_name
+from ..codemod.core.legacy_names import ast_dotted_name
 
 
 class _Computed(Exception):

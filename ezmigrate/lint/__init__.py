@@ -1,2 +1,9 @@
-"""``ezmigrate check`` as a linter: static checks of legacy descriptions, code selection,
-suppression comments and the machine output formats (text, JSON, SARIF, GitHub, JUnit)."""
+"""``ezmigrate check``'s own checks of legacy code and of a robot's world.
+
+`plain_reader` reads a plain legacy description with ``ast`` (the fast path; the codemod's
+reader takes what it declines), `legacy` holds the checks only legacy code needs,
+`robot_vocabulary` and `world_model` the checks against the lab's ontology, scenes and
+launch files, `scene_diagram` draws a scene for the report, `diagnostic` is one line of
+output and `select` applies ``--select``/``--ignore`` and suppression comments. May import
+`codemod`, `verify`, `report` and `files`, and the runtime.
+"""

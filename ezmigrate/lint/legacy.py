@@ -24,7 +24,7 @@ from ezskiros_runtime.dsl.collectors import Recorded
 from ezskiros_runtime.dsl.conditions import Cond
 from ezskiros_runtime.dsl.parameters import ParamSpec
 
-from .facts import CondFact, StaticDescription
+from ..report.static_facts import CondFact, StaticDescription
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex

@@ -12,7 +12,7 @@ Anything else — a local variable, a module constant, an or-condition, inherita
 descriptions, a base imported from a sibling module, decorators, extra class members, a
 value emission could refuse — makes ``read_plain`` give up on the whole file (``None``),
 and the file goes through the codemod's reader as ``rewrite`` reads it. The module
-``tests/check/test_plain_reader.py`` proves, on every fixture and on generated
+``tests/lint/test_plain_reader.py`` proves, on every fixture and on generated
 repositories, that whenever this reader accepts a file, ``check`` reports exactly what the
 codemod's reader makes it report.
 """
@@ -23,8 +23,9 @@ import ast
 import re
 from dataclasses import dataclass
 
-from ..core.function import emitted_params
-from ..core.ir import (
+from ..codemod.core.declared import static_description
+from ..codemod.core.function import emitted_params
+from ..codemod.core.ir import (
     AddCondition,
     CondSpec,
     ElementValue,
@@ -36,11 +37,10 @@ from ..core.ir import (
     TypeValue,
     Unsupported,
 )
-from ..core.legacy_names import LegacyNames, ast_dotted_name, is_legacy_module
-from ..core.syntax_facts import note_binding, note_import
-from ..migrate import checked_model
-from ..results import FileResult, ReviewFinding, SkillResult
-from ..rules.add_param import (
+from ..codemod.core.legacy_names import LegacyNames, ast_dotted_name, is_legacy_module
+from ..codemod.core.syntax_facts import note_binding, note_import
+from ..codemod.migrate import checked_model
+from ..codemod.rules.add_param import (
     ARGUMENTS,
     KINDS,
     OPTIONS,
@@ -48,9 +48,9 @@ from ..rules.add_param import (
     literal_type,
     param_findings,
 )
-from ..rules.condition_factories import CLASSES, FACTORIES
-from ..rules.condition_lists import LISTS
-from .facts import static_description
+from ..codemod.rules.condition_factories import CLASSES, FACTORIES
+from ..codemod.rules.condition_lists import LISTS
+from ..report.results import FileResult, ReviewFinding, SkillResult
 
 _NESTED_LEGACY_IMPORT = re.compile(rb"^[ \t]+(?:from|import)[ \t][^\n]*skiros2", re.MULTILINE)
 
@@ -102,7 +102,7 @@ def _legacy_names(tree: ast.Module, data: bytes) -> LegacyNames:
 
 def _user_imports(tree: ast.Module) -> set[str]:
     """Names bound by ``from X import name`` where X is relative or not SkiROS2 (bases
-    the codemod resolves across files: ``ezmigrate.migrate.foreign_bases``)."""
+    the codemod resolves across files: ``ezmigrate.codemod.migrate.foreign_bases``)."""
     found: set[str] = set()
     for node in tree.body:
         if isinstance(node, ast.ImportFrom) and (node.level or not is_legacy_module(

@@ -21,7 +21,9 @@ from pathlib import Path
 
 from ezskiros_runtime.codes import code_for
 
+from ..files.discover import repository_root
 from .diagnostic import Diagnostic
+from .world_model import scene_files
 
 UNKNOWN = code_for("unknown-vocabulary")
 _CLASS = re.compile(r"\bclass (\S+?)(?::? is not in|: prefix |: \S+ is )")
@@ -50,9 +52,6 @@ def typing_scenes(paths: Sequence[Path], scenes: Sequence[Path],
     """The scenes whose types count as known: the run's, and those of the repository
     around each named file, so that pre-commit (staged files only) judges a class as a
     run on the repository does."""
-    from ..compound.repository import repository_root
-    from .world_model import scene_files
-
     roots = sorted({repository_root(p).resolve() for p in paths
                     if p.is_file() and p.suffix == ".py"})
     return [*scenes, *scene_files(roots, exclude)] if roots else list(scenes)

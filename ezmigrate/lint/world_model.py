@@ -26,10 +26,10 @@ from ezskiros_runtime.world.scene import Scene, SceneError, read_scene
 from ezskiros_runtime.world.scene_checks import check_scene, unreadable
 from ezskiros_runtime.world.vocabulary import SingleValued, single_valued
 
-from ..discover import ALWAYS_EXCLUDED, excluded_under
-from ..results import FileResult
+from ..files.discover import ALWAYS_EXCLUDED, excluded_under
+from ..report.results import FileResult
+from ..report.static_facts import StaticDescription
 from .diagnostic import Diagnostic, Positions, diagnostic
-from .facts import StaticDescription
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex

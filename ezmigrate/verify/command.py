@@ -5,9 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..discover import discover
-from ..prefilter import may_hold_descriptions
-from ..results import FileResult, SkillResult, SkillStatus
+from ..files.discover import discover
+from ..files.prefilter import may_hold_descriptions
+from ..report.results import FileResult, SkillResult, SkillStatus
 from .compare_files import class_sources, compare_outcomes, load_failure
 from .pool import BATCH, PoolConfig, job_for, run_batched
 from .protocol import LoadJob, LoadOutcome

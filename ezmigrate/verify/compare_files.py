@@ -10,6 +10,7 @@ from ezskiros_runtime.compare import compare
 from ezskiros_runtime.diagnostics import ClassError
 from ezskiros_runtime.model import SkillModel
 
+from ..report.diffs import decode
 from .protocol import LoadOutcome
 
 Verdict = Literal["equivalent", "different", "missing-after", "added-after", "error",
@@ -93,8 +94,6 @@ def load_failure(side: str, outcome: LoadOutcome) -> str:
 
 def class_sources(data: bytes) -> dict[str, str]:
     """Top-level class name -> its exact source text (empty when the file does not parse)."""
-    from ..diffs import decode
-
     text = decode(data)
     try:
         tree = ast.parse(text)

@@ -4,7 +4,7 @@ Both versions of a changed file are loaded in isolated children (``pool``); this
 reads the two outcomes into the file's result: a converted skill whose model differs, or
 that does not load, fails with the difference; if anything in a file fails, the file keeps
 its old content and its other converted skills are reported as not written. Which classes
-to hold back and migrate again is the project's decision (``ezmigrate.project``).
+to hold back and migrate again is the project's decision (``ezmigrate.project.settle``).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.dsl.policy import severity_of
 
-from ..results import FileResult, ReviewFinding, SkillResult
+from ..report.results import FileResult, ReviewFinding, SkillResult
 from .compare_files import ClassVerdict, compare_outcomes, load_failure
 from .protocol import LoadOutcome
 

@@ -264,7 +264,7 @@ def main(argv: list[str] | None = None) -> int:
         signal.signal(signum, _stop)
     os.environ["EZSKIROS_BACKEND"] = "legacy"
     from ezskiros_runtime.ontology.active import use_ontology
-    from ezskiros_runtime.ontology.index import load_index
+    from ezskiros_runtime.ontology.load import load_index
 
     use_ontology(load_index(args.ontology or None))
     # warm imports shared with every child; the runtime's public names are lazy, so the DSL

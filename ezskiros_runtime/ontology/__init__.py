@@ -25,13 +25,14 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from .active import active_index, use_ontology
-    from .index import OntologyIndex, load_index
+    from .index import OntologyIndex
+    from .load import load_index
     from .namespaces import Namespace
 
 _HELPERS: dict[str, str] = {
     "active_index": "active",
     "use_ontology": "active",
-    "load_index": "index",
+    "load_index": "load",
     "OntologyIndex": "index",
     "Namespace": "namespaces",
     "namespace": "namespaces",

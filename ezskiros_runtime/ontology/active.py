@@ -25,7 +25,8 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from .config import OntologySource, load_source, resolve_ontology_paths
-from .index import OntologyIndex, load_index
+from .index import OntologyIndex
+from .load import load_index
 from .robot import (
     PackageLocator,
     ParameterSource,

@@ -24,6 +24,7 @@ from collections.abc import Callable, Iterable, Sequence
 from rdflib import BNode, Graph, Literal, URIRef
 from rdflib.namespace import OWL, RDF, RDFS, XSD
 
+from .closure import reflexive_transitive_closure
 from .expressions import ClassExpr, ComplementOf, IntersectionOf, Named, UnionOf, Unsupported
 from .index import OntologyIndex, PropertyInfo
 from .loading import OntologyFile, parse_ontology_file
@@ -165,8 +166,6 @@ def _properties(
             parents.setdefault(str(sub), set()).add(str(sup))
     own_domains = _own_expressions(graph, RDFS.domain, reader)
     own_ranges = _own_expressions(graph, RDFS.range, reader)
-
-    from .closure import reflexive_transitive_closure
 
     ancestors = reflexive_transitive_closure(kinds, parents)
     properties: dict[str, PropertyInfo] = {}

@@ -24,8 +24,9 @@ from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, BinaryIO
 
+from .index import OntologyIndex
+
 if TYPE_CHECKING:
-    from .index import OntologyIndex
     from .loading import OntologyFile
 
 CACHE_FORMAT_VERSION = "2"  # 2: sub-properties add their parents' domains and ranges
@@ -151,8 +152,6 @@ def cache_path(directory: Path, fingerprint: str) -> Path:
 
 def read_cached_index(directory: Path, fingerprint: str) -> OntologyIndex | None:
     """The cached index for `fingerprint`, or None on a miss or any problem with the file."""
-    from .index import OntologyIndex
-
     path = cache_path(directory, fingerprint)
     try:
         with path.open("rb") as stream:

@@ -7,7 +7,7 @@ Precedence, first match wins:
    `start`; paths relative to that file's folder (so the setting means the same from any
    subfolder). The nearest pyproject.toml is the project, even without our table: the
    file is found and read by `ezskiros_runtime.pyproject`, the same reader the other
-   `[tool.ezmigrate]` settings (ezmigrate.config) go through;
+   `[tool.ezmigrate]` settings (ezmigrate.cli.config) go through;
 4. the vocabulary bundled with the package, plus, when the caller names the paths it works
    on (`roots`), every ontology file under the `owl/` folders of their repository
    (`discovery`: what the SkiROS2 world model would load from the skill package).
@@ -151,7 +151,7 @@ def load_source(source: OntologySource) -> tuple[OntologyIndex, OntologySource]:
     runs. A file someone named (``--ontology``, ``EZSKIROS_ONTOLOGY``, pyproject) is the
     user's choice: its error is raised (``OntologyLoadError``), as is any error of the core.
     """
-    from .index import load_index
+    from .load import load_index
 
     paths: list[Path] = list(source.paths)
     broken: list[tuple[Path, str]] = []

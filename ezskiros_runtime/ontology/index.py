@@ -6,13 +6,13 @@ rdflib graph, for two reasons: it can be cached on disk and loaded without impor
 ("is this a class?", "is A a subclass of B?", "what is the range of contain?") becomes a
 dictionary lookup instead of a graph query.
 
-`load_index` is the only entry point that touches files; everything else here is queries.
+`load_index` (in `load.py`) is the only entry point that touches files; everything here is
+queries.
 """
 
 from __future__ import annotations
 
-import os
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -339,53 +339,6 @@ def _group_by_local_name(iris: Iterable[str]) -> dict[str, tuple[str, ...]]:
     return {local: tuple(sorted(found)) for local, found in grouped.items()}
 
 
-def _as_path_list(
-    paths: Sequence[str | os.PathLike[str]] | str | os.PathLike[str] | None,
-) -> list[Path]:
-    """Accept one path as well as a sequence: a bare string must not become its characters."""
-    if paths is None:
-        return []
-    if isinstance(paths, (str, os.PathLike)):
-        return [Path(paths)]
-    return [Path(p) for p in paths]
-
-
-def load_index(
-    paths: Sequence[str | os.PathLike[str]] | None = None,
-    *,
-    cache: bool = True,
-    cache_dir: Path | None = None,
-) -> OntologyIndex:
-    """Load ontology files and folders into an index; None or empty -> the bundled default.
-
-    The file contents are hashed first; when the persistent cache holds an index for that
-    hash it is returned without importing rdflib (the fast path every launch after the
-    first takes). Otherwise the files are parsed with rdflib, indexed, and the result is
-    cached. Raises `OntologyLoadError` naming the file that is missing or does not parse.
-    """
-    # Imported here, not at module level: the index module stays cheap to import for code
-    # that only handles indexes, and `from .x import y` avoids the package's __getattr__.
-    from .cache import default_cache_dir, read_cached_index, write_cached_index
-    from .cache import fingerprint as content_fingerprint
-    from .loading import collect_ontology_files, read_ontology_files
-
-    requested = _as_path_list(paths) or [bundled_ontology_path()]
-    files = read_ontology_files(collect_ontology_files(requested))
-    sources = tuple(str(f.path) for f in files)
-    fingerprint = content_fingerprint(files)
-    directory = (cache_dir or default_cache_dir()) if cache else None
-    if directory is not None:
-        cached = read_cached_index(directory, fingerprint)
-        if cached is not None:
-            return cached if cached.sources == sources else cached.with_sources(sources)
-    from .build import build_index  # imports rdflib: only on a cache miss
-
-    index = build_index(files, fingerprint)
-    if directory is not None:
-        write_cached_index(directory, index)
-    return index
-
-
 __all__ = [
     "ClassExpr",
     "ComplementOf",
@@ -396,5 +349,4 @@ __all__ = [
     "UnionOf",
     "Unsupported",
     "bundled_ontology_path",
-    "load_index",
 ]

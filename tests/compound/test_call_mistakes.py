@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from ezmigrate.check import run_check
 from ezmigrate.lint.diagnostic import Diagnostic
+from ezmigrate.project.check import run_check
 from ezmigrate.verify.pool import PoolConfig
 
 MODULE = '''\

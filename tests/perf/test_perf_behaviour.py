@@ -24,11 +24,11 @@ from pathlib import Path
 import pytest
 from bench_generator import generator
 
-from ezmigrate import runner
-from ezmigrate.discover import Candidate, discover
-from ezmigrate.migrate import migrate
-from ezmigrate.prefilter import MARKERS, may_hold_descriptions
-from ezmigrate.runner import Migrated, migrate_all
+from ezmigrate.codemod.migrate import migrate
+from ezmigrate.files.discover import Candidate, discover
+from ezmigrate.files.prefilter import MARKERS, may_hold_descriptions
+from ezmigrate.project import runner
+from ezmigrate.project.runner import Migrated, migrate_all
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -251,8 +251,8 @@ def test_no_libcst_import_when_nothing_needs_parsing(tmp_path):
     code = textwrap.dedent(f"""
         import sys
         from pathlib import Path
-        from ezmigrate.discover import discover
-        from ezmigrate.runner import migrate_all
+        from ezmigrate.files.discover import discover
+        from ezmigrate.project.runner import migrate_all
         items = migrate_all(discover([Path({str(tmp_path)!r})])[0], None, 2)
         assert len(items) == 2 and not any(m.result.changed for m in items)
         print("libcst" in sys.modules)

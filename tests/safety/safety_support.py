@@ -95,8 +95,8 @@ def python_parses(data: bytes) -> bool:
 
 def expected_migration(data: bytes, name: str = "<test>") -> bytes | None:
     """What ``rewrite --no-verify`` writes for one self-contained file (``None``: nothing)."""
-    from ezmigrate.migrate import Settings, migrate
-    from ezskiros_runtime.ontology.index import load_index
+    from ezmigrate.codemod.migrate import Settings, migrate
+    from ezskiros_runtime.ontology.load import load_index
 
     result = migrate(data, Settings(index=load_index(None)), name)
     return result.new_source if isinstance(result.new_source, bytes) else None

@@ -5,7 +5,7 @@ run finishes the job.
 The corpus is the legacy fixtures copied three times into three folders, plus one skill
 module whose import waits for the test. Each scenario starts ``rewrite`` in a subprocess
 and holds it, by construction and not by timing, exactly where the signal must land: at a
-named hold point of the run (``ezmigrate.holdpoint``: after discovery, while the migration
+named hold point of the run (``ezmigrate.project.holdpoint``: after discovery, while the migration
 workers are busy, inside or after the N-th write) or, for the verification phase, inside
 that skill module's import in a verification child. It then signals (twice in one
 scenario), releases the hold, and checks every byte on disk against the original and the

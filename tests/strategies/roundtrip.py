@@ -32,8 +32,8 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from ezmigrate.migrate import Settings, migrate
-from ezmigrate.results import FileResult
+from ezmigrate.codemod.migrate import Settings, migrate
+from ezmigrate.report.results import FileResult
 from ezmigrate.verify.compare_files import compare_outcomes
 from ezmigrate.verify.pool import PoolConfig, job_for, run_jobs
 from ezmigrate.verify.protocol import LoadOutcome

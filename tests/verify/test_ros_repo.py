@@ -20,7 +20,7 @@ import libcst as cst
 import pytest
 from verify_support import second_python
 
-from ezmigrate.package_xml import ROSDEP_KEY
+from ezmigrate.files.package_xml import ROSDEP_KEY
 from ezmigrate.verify.interpreters import find_python
 
 REPO = Path(__file__).resolve().parents[2] / "fixtures" / "ros_repo"

@@ -281,7 +281,7 @@ def test_rewrite_skips_skills_the_runtime_would_refuse_and_leaves_the_file(tmp_p
 def test_verify_fails_a_migrated_class_the_runtime_would_refuse(tmp_path):
     """The same skills migrated by hand (the codemod's core, which no check stops): same
     model, but no load. ``rewrite --no-verify`` holds them back (issue 22, item 4)."""
-    from ezmigrate.migrate import migrate
+    from ezmigrate.codemod.migrate import migrate
 
     legacy = tree(tmp_path / "legacy", {"type_errors.py": REJECTED})
     forced = migrate(REJECTED.read_bytes()).new_source

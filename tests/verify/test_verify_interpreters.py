@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 from verify_support import second_python
 
-from ezmigrate.paths import scrub
+from ezmigrate.files.paths import scrub
 
 NEWER_SKILL = '''\
 from skiros2_common.core.abstract_skill import SkillDescription

@@ -21,7 +21,7 @@ from verify_support import (
     tree,
 )
 
-from ezmigrate.migrate import migrate
+from ezmigrate.codemod.migrate import migrate
 
 HOSTILE = ("raises_on_import.py", "loops_forever.py", "calls_sys_exit.py", "prints_stdout.py")
 

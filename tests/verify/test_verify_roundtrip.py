@@ -19,8 +19,8 @@ from hypothesis import HealthCheck, Phase, given, seed, settings
 from strategies.legacy_source import GeneratedModule, legacy_modules_with_names
 from strategies.roundtrip import CONSTRUCTS, RoundTrip
 
-from ezmigrate.migrate import Settings
-from ezskiros_runtime.ontology.index import load_index
+from ezmigrate.codemod.migrate import Settings
+from ezskiros_runtime.ontology.load import load_index
 
 MODULES = 300
 """Distinct generated modules verified in CI (hypothesis repeats some texts: drawn until

@@ -1,0 +1,630 @@
+"""The ``ezmigrate`` command line. It parses options and prints; decisions live elsewhere.
+
+Conventions of black and ruff: diffs and reports go to stdout only when asked, progress and
+the summary to stderr; exit 0 when the run did its work (skills skipped with a reason
+included), 1 when something needs attention (``--check`` found changes, a verification
+failed, a file could not be processed; with ``--strict`` also a skipped skill), 2 for usage
+or internal errors.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import sys
+import threading
+import traceback
+from collections.abc import Sequence
+from dataclasses import replace
+from pathlib import Path
+from typing import Any, NoReturn
+
+import click
+
+from .. import __version__
+from ..files.discover import excluded_under
+from ..files.paths import from_repository, in_report, scrub
+from ..files.paths import shown as shown_path
+from ..project import interrupt
+from ..project.target import robot_python, target_for, verified_with
+from ..report.diffs import colour, unified_diff
+from ..report.reports import (
+    MarkdownOptions,
+    Summary,
+    counted,
+    json_report,
+    markdown_report,
+    relaxed,
+)
+from ..report.results import FileResult
+from ..report.written_lines import as_written
+from .config import ConfigError, load_project_config
+from .options import CommandLine, Options
+
+EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
+EXIT_BROKEN_PIPE = 128 + 13  # as a shell reports a process ended by SIGPIPE
+
+
+def _fail(message: str, debug: bool) -> NoReturn:
+    click.echo(f"ezmigrate: error: {message}", err=True)
+    if debug:
+        traceback.print_exc()
+    else:
+        click.echo("ezmigrate: rerun with --debug for details", err=True)
+    sys.exit(EXIT_ERROR)
+
+
+def _short(message: str, debug: bool) -> str:
+    """A message for stderr: its first line, unless ``--debug`` asks for all of it."""
+    lines = message.splitlines() or [""]
+    if debug or len(lines) == 1:
+        return message
+    return f"{lines[0].rstrip(':')} (rerun with --debug for details)"
+
+
+class _Main(click.Group):
+    """Stops cleanly on SIGINT/SIGTERM/SIGHUP (says what was done, exits 128 + signal); an
+    internal error anywhere, a worker thread included, is one line and a ``--debug`` hint."""
+
+    def invoke(self, ctx: click.Context) -> Any:
+        debug = "--debug" in sys.argv[1:]
+        previous_hook = threading.excepthook
+        threading.excepthook = lambda args: _thread_failed(args, debug)
+        interrupt.install()  # for the life of the process
+        try:
+            return super().invoke(ctx)
+        except interrupt.Interrupted as stop:
+            interrupt.ignore_further()
+            with contextlib.suppress(OSError):  # the terminal may be gone (SIGHUP)
+                for line in stop.report():
+                    click.echo(f"ezmigrate: {line}", err=True)
+            sys.exit(stop.exit_code)
+        except (click.exceptions.ClickException, click.exceptions.Exit,
+                click.exceptions.Abort):
+            raise
+        except ConfigError as error:
+            click.echo(f"ezmigrate: error: {error}", err=True)
+            sys.exit(EXIT_ERROR)
+        except BrokenPipeError:  # `ezmigrate rewrite --dry-run . | head`: the reader left
+            _quiet_stdout()
+            sys.exit(EXIT_BROKEN_PIPE)
+        except Exception as error:  # never a raw traceback for the user
+            _fail(f"internal error: {error}", debug)
+        finally:
+            threading.excepthook = previous_hook
+
+
+def _quiet_stdout() -> None:
+    """Point stdout at /dev/null so that flushing it at exit raises nothing more."""
+    with contextlib.suppress(OSError, ValueError):
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+
+
+def _thread_failed(args: Any, debug: bool) -> None:
+    if args.exc_type is SystemExit:
+        return
+    click.echo(f"ezmigrate: internal error in a worker thread: {args.exc_type.__name__}: "
+               f"{args.exc_value}", err=True)
+    if debug:
+        traceback.print_exception(args.exc_type, args.exc_value, args.exc_traceback)
+    else:
+        click.echo("ezmigrate: rerun with --debug for details", err=True)
+
+
+def _options(start: Path, cli: CommandLine) -> Options:
+    """The settings a command runs with: ``cli`` over the project ``start`` belongs to."""
+    return Options.resolve(cli, load_project_config(start))
+
+
+def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
+                options: Options) -> tuple[Any, tuple[str, ...], str]:
+    """The ontology index by the configuration rules, the files it came from, and a line
+    saying which files and why.
+
+    Says once on stderr which files are used and why (the report header says it again):
+    with nothing configured, the owl/ folders of the repository of ``roots`` count (less
+    what ``options.exclude`` names, relative to the project)."""
+    from ezskiros_runtime.ontology.config import load_source, resolve_ontology_paths
+    from ezskiros_runtime.ontology.errors import OntologyError
+
+    try:
+        skip = excluded_under(options.project or Path.cwd(), options.exclude)
+        source = resolve_ontology_paths(list(ontology) or None, start=start, roots=roots,
+                                        skip=skip)
+        index, source = load_source(source)
+        for warning in source.warnings():
+            click.echo(f"ezmigrate: {warning}", err=True)
+        described = scrub(source.describe(), report=False)  # paths as other lines give them
+        click.echo(f"ezmigrate: {described}", err=True)
+        return index, tuple(str(p) for p in source.paths), described
+    except OntologyError as error:
+        click.echo(f"ezmigrate: error: {error}", err=True)
+        sys.exit(EXIT_ERROR)
+
+
+def _report_path(path: Path | None) -> Path | None:
+    """The report's format comes from its name: refuse a name that says neither."""
+    if path is not None and str(path) != "-" and path.suffix.lower() not in (".md", ".json"):
+        raise click.BadParameter(f"{path}: name it *.md for Markdown or *.json for JSON "
+                                 "(or - for JSON on stdout)", param_hint="'--report'")
+    return path
+
+
+def _write_report(path: Path, results: list[FileResult], options: MarkdownOptions) -> None:
+    markdown = path.suffix.lower() == ".md"
+    text = scrub(markdown_report(results, options) if markdown
+                 else json_report(results, options=options))  # no path of this machine
+    # a file name that is not valid UTF-8 reaches us as lone surrogates (caf\udce9.py), which
+    # UTF-8 cannot encode: written as the text \udce9, which in JSON is the escape of that
+    # very surrogate (json.load and os.fsencode give back the file's real bytes)
+    text = text.encode("utf-8", "backslashreplace").decode("utf-8")
+    if str(path) == "-":
+        click.echo(text, nl=False)
+        return
+    try:
+        path.write_text(text, encoding="utf-8")
+    except OSError as error:
+        click.echo(f"ezmigrate: error: cannot write the report {path}: "
+                   f"{error.strerror or error}", err=True)
+        sys.exit(EXIT_ERROR)
+
+
+@click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="ezmigrate")
+def main() -> None:
+    """Migrate SkiROS2 skill descriptions to EzSkiROS, and prove nothing changed."""
+
+
+@main.command()
+@click.argument("paths", nargs=-1, required=True,
+                type=click.Path(path_type=Path, allow_dash=True, exists=True))
+@click.option("--dry-run", is_flag=True, help="Write nothing; print a unified diff per file.")
+@click.option("--check", is_flag=True, help="Write nothing; exit 1 if any file would change.")
+@click.option("--report", type=click.Path(path_type=Path, dir_okay=False, allow_dash=True),
+              callback=lambda _ctx, _param, value: _report_path(value),
+              help="Write a report: Markdown for .md, JSON for .json (- for JSON on stdout).")
+@click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
+@click.option("--include-vendored", is_flag=True,
+              help="Also go into vendored copies of SkiROS2's own packages (skiros2_common, "
+                   "skiros2_std_skills, ...), which are skipped with a note by default.")
+@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
+              help="Ontology file or folder (repeatable).")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
+@click.option("--output-dir", type=click.Path(path_type=Path, file_okay=False),
+              help="Write migrated copies here instead of in place, each at its path "
+                   "relative to the PATH it was found under; a second file with the same "
+                   "relative path (c1/x.py and c2/x.py) is refused, and the run exits 1.")
+@click.option("--verify/--no-verify", default=True, show_default=True,
+              help="Load both versions and demand equivalence before writing.")
+@click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file when verifying.")
+@click.option("--python", "python", metavar="PATH",
+              help="Load files with this interpreter when verifying (default: this one, and "
+                   "for syntax newer than it the newest python3.X on PATH that compiles it).")
+@click.option("--ignore-order", is_flag=True, help="Verification ignores declaration order.")
+@click.option("--ignore-labels", is_flag=True, help="Verification ignores condition labels.")
+@click.option("--color/--no-color", default=None, help="Colour diffs (default: on a terminal).")
+@click.option("--stdin-filename", type=click.Path(path_type=Path, dir_okay=False),
+              help="With PATH '-': the file stdin stands for (as ruff's flag): its project's "
+                   "configuration, ontology and robot apply, and messages name it.")
+@click.option("--strict", is_flag=True,
+              help="Exit 1 also when a skill was skipped with a reason (default: only for "
+                   "--check with changes, failed verification, or unprocessable files).")
+@click.option("--package-xml/--no-package-xml", default=True, show_default=True,
+              help="Declare the runtime (<exec_depend>) in the package.xml of each ROS "
+                   "package whose files were migrated.")
+@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | None,
+            exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
+            output_dir: Path | None, verify: bool, timeout: float | None, python: str | None,
+            ignore_order: bool, ignore_labels: bool, color: bool | None, strict: bool,
+            package_xml: bool, include_vendored: bool, debug: bool,
+            stdin_filename: Path | None = None) -> None:
+    """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin).
+
+    Temporary files (.NAME.XXXXXXXX.ezmigrate) that a killed run left beside PATHS are
+    listed; a run that writes removes them (they never hold the only copy of anything).
+    """
+    reads_stdin = [str(p) for p in paths] == ["-"]
+    start = (stdin_filename or Path.cwd()) if reads_stdin else paths[0]
+    options = _options(start, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
+                                          python=python))
+    if reads_stdin:
+        from .stdin import rewrite_stdin, stdin_roots
+
+        index, ontology_files, used = _load_index(ontology, start, stdin_roots(stdin_filename),
+                                                  options)
+        data, result = rewrite_stdin(index, ontology_files, options, verify=verify,
+                                     ignore_order=ignore_order, ignore_labels=ignore_labels,
+                                     filename=stdin_filename)
+        shown = str(stdin_filename) if stdin_filename else "-"
+        _print_result(shown, shown, data, result, dry_run, check, color, debug)
+        if not (dry_run or check):  # whatever happened, stdout gets a whole file
+            new = result.new_source
+            sys.stdout.buffer.write(new if isinstance(new, bytes) else data)
+        _finish([as_written(replace(result, path=in_report(result.path)), data)], report,
+                not (dry_run or check), check, strict, [],
+                MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used))
+    from ..project.session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
+
+    index, ontology_files, used = _load_index(ontology, start, paths, options)
+    robot = target_for(paths, options.target_version, f"{options.source}: target-version")
+    python = robot_python(robot, options.python, verify)
+    verifier = verified_with(python, robot) if verify else ""
+    if verifier:
+        click.echo(f"ezmigrate: {verifier}", err=True)
+    request = RewriteOptions(
+        paths=list(paths), dry_run=dry_run, check=check, exclude=options.exclude,
+        jobs=options.jobs, output_dir=output_dir, verify=verify, timeout=options.timeout,
+        python=python, ignore_order=ignore_order, ignore_labels=ignore_labels,
+        ontology=ontology_files, project=options.project, target=robot.version,
+        include_vendored=include_vendored, package_xml=package_xml)
+    outcome = run_rewrite(request, index)
+    for note in outcome.notes:
+        click.echo(f"ezmigrate: {note}", err=True)
+    results = _as_written(outcome.migrated)
+    for item, result in zip(outcome.migrated, results, strict=True):  # unchanged: bytes stay
+        _print_result(shown_path(item.candidate.path),
+                      from_repository(item.candidate.path, item.candidate.relative),
+                      item.original if result.changed else b"", result, dry_run, check, color,
+                      debug)
+    for refused in outcome.refused:
+        click.echo(f"ezmigrate: {refused}", err=True)
+    declared = _show_manifests(outcome, request, color)
+    compounds: list[str] = []
+    scenes: list[str] = []
+    if report is not None and report.suffix.lower() == ".md":
+        from ..compound.analysis import report_section
+
+        compounds = report_section(
+            [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
+            options.pool(ontology_files))
+        scenes = _scene_section(paths, options.exclude, index)
+    from ..project.earlier import whole_tree  # earlier runs' descriptions: the report covers all
+
+    _finish(results, report, request.writes, check, strict,
+            outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
+                                             compounds=compounds, verifier=verifier,
+                                             scenes=scenes, notes=declared),
+            reported=_as_written(outcome.migrated, whole_tree(outcome.migrated))
+            if report else None)
+
+
+def _as_written(migrated: Sequence[Any],
+                results: Sequence[FileResult] | None = None) -> list[FileResult]:
+    """Each file's result (``results``, one per file, else its own) as stderr and the
+    report show it: named relative to the working directory (no absolute path in a
+    report), lines those of the file written, with the legacy line beside them
+    (``written_lines``)."""
+    return [as_written(replace(r, path=in_report(m.candidate.path, m.candidate.relative)),
+                       m.original)
+            for m, r in zip(migrated, results or [m.result for m in migrated], strict=True)]
+
+
+def _scene_section(paths: tuple[Path, ...], exclude: tuple[str, ...], index: Any) -> list[str]:
+    """The Markdown report's "Scenes": each scene under ``paths`` checked and drawn."""
+    from ..lint.scene_diagram import markdown_section
+    from ..lint.world_model import scene_files
+
+    return markdown_section(scene_files(list(paths), exclude), index)
+
+
+def _cache_dir(paths: Sequence[Path], options: Options) -> Path:
+    """Where ``check`` keeps its cache: in the project (the ``pyproject.toml`` folder),
+    else the git checkout or ROS package of the first path, else the working directory."""
+    from ezskiros_runtime.ontology.discovery import enclosing_project
+
+    from ..project.load_cache import FOLDER
+
+    base = options.project or enclosing_project(paths[0]) or Path.cwd()
+    return base / FOLDER
+
+
+def _show_manifests(outcome: Any, request: Any, color: bool | None) -> list[str]:
+    """Say what became of each package.xml the run declares the runtime in (``session``
+    decided and wrote them): a diff with --dry-run, ``would rewrite`` with --check, one
+    stderr line each; and one line each for the report."""
+    from ..files.package_xml import ROSDEP_KEY
+
+    lines = []
+    for manifest in outcome.manifests:
+        shown = shown_path(manifest.path)
+        if request.dry_run:  # applies from the repository root, as the files' diffs do
+            diff = unified_diff(from_repository(manifest.path, shown), manifest.old,
+                                manifest.new)
+            use_colour = sys.stdout.isatty() if color is None else color
+            click.echo(colour(diff) if use_colour else diff, nl=False)
+        elif request.check:
+            click.echo(f"would rewrite {shown}")
+        lines.append(f"`{shown}`: declares the runtime, `<exec_depend>{ROSDEP_KEY}"
+                     "</exec_depend>`" + ("" if request.writes else " (would)"))
+        click.echo(f"ezmigrate: {shown}: <exec_depend>{ROSDEP_KEY}</exec_depend> "
+                   + ("added" if request.writes else "would be added"), err=True)
+    return lines
+
+
+def _print_result(shown: str, relative: str, original: bytes, result: FileResult,
+                  dry_run: bool, check: bool, color: bool | None, debug: bool) -> None:
+    """One file's problems on stderr; its diff (``--dry-run``) or name (``--check``)."""
+    if result.error:
+        click.echo(f"{shown}: {_short(result.error, debug)}", err=True)
+    for skill in result.skills:
+        if skill.status in ("skipped", "failed"):
+            click.echo(f"{shown}:{skill.line}: {skill.name}: {skill.status}: "
+                       f"{(skill.reason or '').splitlines()[0] if skill.reason else ''}",
+                       err=True)
+    if result.changed and dry_run:
+        assert isinstance(result.new_source, bytes)
+        diff = unified_diff(relative, original, result.new_source)
+        use_colour = sys.stdout.isatty() if color is None else color
+        click.echo(colour(diff) if use_colour else diff, nl=False)
+    elif result.changed and check:
+        click.echo(f"would rewrite {shown}")
+
+
+def _finish(results: list[FileResult], report: Path | None, writes: bool, check: bool,
+            strict: bool, refused: list[str], options: MarkdownOptions,
+            reported: list[FileResult] | None = None) -> NoReturn:
+    """The report (of ``reported``, the whole tree, when given), the summary line, and the
+    exit code every ``rewrite`` ends with."""
+    if report is not None:
+        _write_report(report, results if reported is None else reported, options)
+    summary = Summary.of(results)
+    click.echo(f"ezmigrate: {summary.line(dry=not writes)}", err=True)
+    would_change = summary.changed_files > 0 and check
+    sys.exit(EXIT_ATTENTION if would_change or summary.needs_attention(strict) or refused
+             else EXIT_OK)
+
+
+@main.command()
+@click.argument("before", type=click.Path(path_type=Path, exists=True))
+@click.argument("after", type=click.Path(path_type=Path, exists=True))
+@click.option("--report", type=click.Path(path_type=Path, dir_okay=False, allow_dash=True),
+              callback=lambda _ctx, _param, value: _report_path(value),
+              help="Write a report: Markdown for .md, JSON for .json (- for JSON on stdout).")
+@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
+              help="Ontology file or folder (repeatable).")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
+@click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
+@click.option("--python", "python", metavar="PATH",
+              help="Load files with this interpreter when verifying (default: this one, and "
+                   "for syntax newer than it the newest python3.X on PATH that compiles it).")
+@click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
+@click.option("--ignore-order", is_flag=True, help="Declaration order does not matter.")
+@click.option("--ignore-labels", is_flag=True, help="Condition labels do not matter.")
+@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path, ...],
+           jobs: int | None, timeout: float | None, python: str | None,
+           exclude: tuple[str, ...],
+           ignore_order: bool, ignore_labels: bool, debug: bool) -> None:
+    """Prove AFTER means what BEFORE meant (two files, or two folders by relative path)."""
+    from ..verify.command import PathsMismatch, VerifyOptions, run_verify
+
+    options = _options(before, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
+                                           python=python))
+    _, ontology_files, used = _load_index(ontology, before, [before], options)
+    robot = target_for([after], options.target_version, f"{options.source}: target-version")
+    python = robot_python(robot, options.python, True)
+    verifier = verified_with(python, robot)
+    click.echo(f"ezmigrate: {verifier}", err=True)
+    pool = replace(options.pool(ontology_files), python=python)
+    try:
+        results, unloadable = run_verify(VerifyOptions(
+            before, after, pool, ignore_order, ignore_labels, options.exclude))
+    except PathsMismatch as error:
+        raise click.UsageError(str(error)) from None
+    for result in results:
+        if result.error:
+            click.echo(f"{result.path}: {_short(result.error, debug)}", err=True)
+        for note in result.notes:  # an unchanged file that cannot load; captured output
+            click.echo(f"{result.path}: {_short(note, debug)}", err=True)
+        for skill in result.skills:
+            if skill.status == "failed":
+                click.echo(f"{result.path}:{skill.line}: {skill.name}: "
+                           f"{_short(skill.reason or '', debug)}", err=True)
+                for d in skill.diff or ():
+                    click.echo(f"    {d['where']}: {d['message']}", err=True)
+                    if d.get("before") is not None:
+                        click.echo(f"      - {d['before']}", err=True)
+                    if d.get("after") is not None:
+                        click.echo(f"      + {d['after']}", err=True)
+    if report is not None:
+        _write_report(report, results,
+                      MarkdownOptions(True, ignore_order, ignore_labels, ontology=used,
+                                      verifier=verifier))
+    total = sum(len(r.skills) for r in results)
+    bad = sum(1 for r in results for s in r.skills if s.status == "failed")
+    click.echo(f"ezmigrate: {len(results)} files compared, {total} classes, "
+               f"{total - bad} equivalent, {bad} not equivalent"
+               + (f" ({relax})" if (relax := relaxed(ignore_order, ignore_labels)) else "")
+               + (", some files could not be loaded" if unloadable else ""), err=True)
+    sys.exit(EXIT_ERROR if unloadable else EXIT_ATTENTION if bad else EXIT_OK)
+
+
+@main.command()
+@click.argument("paths", nargs=-1, required=True,
+                type=click.Path(path_type=Path, allow_dash=True, exists=True))
+@click.option("--stdin-filename", type=click.Path(path_type=Path, dir_okay=False),
+              help="With PATH '-': the file stdin stands for (as ruff's flag): its project's "
+                   "configuration and ontology apply, and findings name it.")
+@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
+              help="Ontology file or folder (repeatable).")
+@click.option("--select", multiple=True, metavar="CODES",
+              help="Report only these codes or prefixes (EZ2,EZ901; replaces the default).")
+@click.option("--ignore", multiple=True, metavar="CODES", help="Do not report these codes.")
+@click.option("--extend-select", multiple=True, metavar="CODES",
+              help="Report these codes as well as the selected ones.")
+@click.option("--output-format", type=click.Choice(["text", "json", "sarif", "github",
+                                                     "junit"]), default="text",
+              show_default=True, help="How findings are written to stdout.")
+@click.option("--statistics", is_flag=True, help="Print the count of findings per code.")
+@click.option("--fix", is_flag=True,
+              help="Apply the fixes that are safe and explicit (EZ101), then report the rest.")
+@click.option("--diff", "show_diff", is_flag=True,
+              help="Print the diff --fix would apply and write nothing (exit 1 if any).")
+@click.option("--exit-zero", is_flag=True, help="Exit 0 even when errors were found.")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
+@click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
+@click.option("--python", "python", metavar="PATH",
+              help="Load files with this interpreter when verifying (default: this one, and "
+                   "for syntax newer than it the newest python3.X on PATH that compiles it).")
+@click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
+@click.option("--include-vendored", is_flag=True,
+              help="Also go into vendored copies of SkiROS2's own packages (skiros2_common, "
+                   "skiros2_std_skills, ...), which are skipped with a note by default.")
+@click.option("--no-trace", is_flag=True,
+              help="Never import user code: EzSkiROS files are not loaded and compound "
+                   "skills whose tree the syntax cannot give are not traced (said as info).")
+@click.option("--no-cache", is_flag=True,
+              help="Load every EzSkiROS file again instead of reusing what an earlier run "
+                   "of an unchanged repository loaded (kept in .ezmigrate_cache).")
+@click.option("--quiet", "-q", is_flag=True, help="Only errors; no summary.")
+@click.option("--scene", type=click.Path(path_type=Path, exists=True, dir_okay=False),
+              help="A world-model scene (*.turtle): say which skills cannot start from it "
+                   "(EZ409, info).")
+@click.option("--launch", "launch_file",
+              type=click.Path(path_type=Path, exists=True, dir_okay=False),
+              help="The SkiROS2 launch file the robot starts with (.launch or .launch.py): "
+                   "its workspace_dir, init_scene and skill_list are used (default: the "
+                   "only one in the repository).")
+@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str, ...],
+          ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
+          statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
+          python: str | None, exclude: tuple[str, ...], include_vendored: bool, quiet: bool,
+          scene: Path | None, debug: bool, no_cache: bool = False, no_trace: bool = False,
+          stdin_filename: Path | None = None, fix: bool = False,
+          show_diff: bool = False, launch_file: Path | None = None) -> None:
+    """Lint SkiROS2 and EzSkiROS descriptions under PATHS (codes: docs/rules.md).
+
+    Suppress a finding on its line with `# ezskiros: ignore[EZ209]` (or `ignore[EZ209,EZ201]`).
+    Exit 0 when no finding at error severity remains, 1 when one does, 2 on usage errors.
+    """
+    from ..lint.select import Selection, SelectorError, apply, parse_selectors
+    from ..project.check import run_check
+    from .output_formats import FORMATS, STATISTICS
+
+    if statistics and output_format not in STATISTICS:
+        raise click.UsageError(f"--statistics has no {output_format} form (it has "
+                               f"{' and '.join(STATISTICS)}): drop one of the two options")
+    shown_as: dict[str, str] = {}  # the stdin file's private copy -> the name it stands for
+    roots: Sequence[Path] = paths
+    anchor = paths[0]
+    if [str(p) for p in paths] == ["-"]:
+        from .stdin import stdin_file, stdin_roots
+
+        if fix or show_diff:
+            raise click.UsageError("--fix and --diff work on files, not on stdin")
+        copy = stdin_file(stdin_filename)
+        shown_as[str(copy)] = str(stdin_filename) if stdin_filename else "-"
+        paths, roots, anchor = (copy,), stdin_roots(stdin_filename), stdin_filename or Path.cwd()
+    options = _options(anchor, CommandLine(
+        exclude=exclude, jobs=jobs, timeout=timeout, python=python, select=select or None,
+        ignore=ignore, extend_select=extend_select))
+    try:
+        selection = Selection(
+            select=None if options.select is None else parse_selectors(options.select,
+                                                                       options.select_from),
+            ignore=parse_selectors(options.ignore, "--ignore"),
+            extend_select=parse_selectors(options.extend_select, "--extend-select"))
+    except SelectorError as error:
+        raise click.UsageError(str(error)) from None
+    index, ontology_files, _ = _load_index(ontology, anchor, roots, options)
+    pool = options.pool(ontology_files)
+    progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
+        if sys.stderr.isatty() and not quiet else None
+    outcome = run_check(list(paths), index, pool, options.exclude, progress,
+                        options.skill_libraries,
+                        compounds=any(c.startswith("EZ3") for c in selection.codes()),
+                        world=_world_run(paths, options.exclude, scene),
+                        include_vendored=include_vendored,
+                        cache_dir=None if no_cache else _cache_dir(paths, options),
+                        launch=_launch(anchor, launch_file, quiet), trace=not no_trace)
+    for note in outcome.notes:
+        click.echo(f"ezmigrate: {note}", err=True)
+    found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it
+             for d in apply(outcome.diagnostics, outcome.sources, selection)]
+    if fix or show_diff:
+        from .fixes import fix_findings
+
+        found, fixable = fix_findings(found, paths, write=fix and not show_diff,
+                                      colour_diff=sys.stdout.isatty())
+        if show_diff:
+            sys.exit(EXIT_ATTENTION if fixable else EXIT_OK)
+    shown = [d for d in found if d.severity == "error"] if quiet else found
+    click.echo((STATISTICS if statistics else FORMATS)[output_format](shown), nl=False)
+    errors = sum(1 for d in found if d.severity == "error")
+    if not quiet:
+        click.echo(f"ezmigrate: {counted(outcome.files, 'file')} checked, "
+                   f"{counted(outcome.skills, 'skill')}, {counted(errors, 'error')}, "
+                   f"{counted(len(found) - errors, 'other finding')}", err=True)
+    sys.exit(EXIT_OK if exit_zero or not errors else EXIT_ATTENTION)
+
+
+def _launch(anchor: Path, chosen: Path | None, quiet: bool) -> Any:
+    """The SkiROS2 launch file of the run's repository (``launch.project_launch``), said
+    on stderr with what it sets."""
+    from ezskiros_runtime.ontology.discovery import enclosing_project
+
+    from ..project.launch import project_launch
+
+    root = anchor if anchor.is_dir() else enclosing_project(anchor) or anchor.parent
+    launch, note = project_launch(root, chosen)
+    if not quiet and note is not None:
+        click.echo(f"ezmigrate: {note}", err=True)
+    if not quiet and launch is not None and launch.values:
+        said = ", ".join(f"{k}={v}" for k, v in sorted(launch.values.items()))
+        click.echo(f"ezmigrate: launch: {shown_path(str(launch.path))} ({said})", err=True)
+        if "init_scene" in launch.values and launch.scene() is None:
+            click.echo(f"ezmigrate: init_scene {launch.values['init_scene']} is neither beside "
+                       "the launch file nor in the workspace_dir: not checked", err=True)
+    return launch
+
+
+def _world_run(paths: tuple[Path, ...], exclude: tuple[str, ...], scene: Path | None) -> Any:
+    """``check``'s world-model settings: the project's ``single-valued``, the scenes under
+    ``paths``, and the ``--scene`` skills must start from (which must parse: exit 2)."""
+    from ezskiros_runtime.world.scene import SceneError, read_scene
+
+    from ..lint.world_model import WorldRun, scene_files
+
+    if scene is not None:
+        try:
+            read_scene(scene)
+        except SceneError as error:
+            raise click.BadParameter(str(error), param_hint="'--scene'") from None
+    return WorldRun(single_valued=load_project_config(paths[0]).single_valued,
+                    scenes=tuple(scene_files(list(paths), exclude)), start_scene=scene)
+
+
+@main.command()
+@click.argument("file", type=click.Path(path_type=Path, exists=True, dir_okay=False))
+@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
+              help="Ontology file or folder (repeatable).")
+@click.option("--markdown", is_flag=True,
+              help="Print the Markdown section (findings and a fenced diagram) instead.")
+@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+def scene(file: Path, ontology: tuple[Path, ...], markdown: bool, debug: bool) -> None:
+    """Draw the spatial tree of the world-model scene FILE as a Mermaid flowchart.
+
+    Elements with their class, contain/hasA edges, and the elements a finding (EZ4xx) is
+    about highlighted. Exit 0 when the scene has no finding at error severity, 1 when it
+    has, 2 when it cannot be parsed.
+    """
+    from ..lint.scene_diagram import markdown_section, mermaid
+    from ..lint.world_model import read_scenes
+
+    options = _options(file, CommandLine())
+    index, _, _ = _load_index(ontology, file, [file], options)
+    read = read_scenes([file], index)[0]
+    if read.scene is None:
+        for f in read.findings:
+            click.echo(f"{f.path}:{f.line}: {f.code} {f.message}", err=True)
+        sys.exit(EXIT_ERROR)
+    if markdown:
+        click.echo("\n".join(markdown_section([file], index)), nl=False)
+    else:
+        click.echo(mermaid(read.scene, read.findings, index), nl=False)
+        for f in read.findings:
+            click.echo(f"{f.path}:{f.line}: {f.code} {f.message}", err=True)
+    sys.exit(EXIT_ATTENTION if any(f.severity == "error" for f in read.findings) else EXIT_OK)

@@ -1,0 +1,81 @@
+"""``ezmigrate rewrite -``: one file from stdin to stdout, for editors and pre-commit hooks.
+
+Whatever happens, stdout gets a whole file: the migrated source, or the input unchanged
+(an editor replacing its buffer with our output must never lose a line). Problems go to
+stderr on one line each; user code runs only when verifying, in isolated children.
+
+Its settings are the ``Options`` every command resolves (``options.Options.resolve``), so
+the project's ``[tool.ezmigrate]`` (``timeout``, ``python``, ``jobs``) holds here exactly
+as for ``rewrite PATH``; ``--ignore-order`` and ``--ignore-labels`` do too.
+"""
+
+from __future__ import annotations
+
+import atexit
+import shutil
+import sys
+import tempfile
+from dataclasses import replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from ezskiros_runtime.ontology.discovery import enclosing_project
+
+from ..report.results import FileResult
+
+if TYPE_CHECKING:
+    from .options import Options
+
+NAME = "stdin_module.py"
+"""What the one file of the project is called on disk while it is migrated and loaded."""
+
+
+def stdin_file(filename: Path | None) -> Path:
+    """Stdin's bytes in a private folder (removed when the process ends), named as the file
+    it stands for (``check -``: findings are then mapped back to that name)."""
+    folder = Path(tempfile.mkdtemp(prefix="ezmigrate-stdin-"))
+    atexit.register(shutil.rmtree, folder, True)
+    path = folder / (filename.name if filename is not None else NAME)
+    path.write_bytes(sys.stdin.buffer.read())
+    return path
+
+
+def stdin_roots(filename: Path | None) -> list[Path]:
+    """Where ontology discovery may look for stdin's project: the folder of
+    ``--stdin-filename``; else the working directory, but only inside a git checkout or a
+    ROS package. An editor started in a home folder must not have every ``owl/`` folder
+    below it loaded (another project's broken file once aborted such a run)."""
+    if filename is not None:
+        return [filename.parent if filename.parent.is_dir() else Path.cwd()]
+    cwd = Path.cwd()
+    return [cwd] if enclosing_project(cwd) is not None else []
+
+
+def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, verify: bool,
+                  ignore_order: bool = False, ignore_labels: bool = False,
+                  filename: Path | None = None) -> tuple[bytes, FileResult]:
+    """Stdin's bytes and their result; ``new_source`` is set only when it verified (or
+    verification is off). The command line prints and exits exactly as for a file.
+
+    Stdin is a project of one file: written to a private folder, it is settled like any
+    repository (``project.settle``: migrated, verified, classes that fail held back and
+    the rest migrated again), so its verdicts follow the same rules as ``rewrite PATH``.
+    Two loads (before and after) never need more than two workers; ``jobs`` can only lower
+    that (a project that says ``jobs = 1`` has its reasons, memory most often).
+    """
+    from ..files.discover import Candidate
+    from ..project.settle import Checks, settle
+    from ..project.target import robot_python, target_for
+    from ..verify.verdicts import Comparison
+
+    data = sys.stdin.buffer.read()
+    robot = target_for([filename or Path.cwd()], options.target_version)
+    pool = replace(options.pool(ontology, workers=min(2, options.jobs)),
+                   python=robot_python(robot, options.python, verify))
+    checks = Checks(pool, Comparison(ignore_order, ignore_labels)) if verify else None
+    with tempfile.TemporaryDirectory(prefix="ezmigrate-stdin-") as folder:
+        path = Path(folder) / NAME
+        path.write_bytes(data)
+        [item] = settle([Candidate(path, path.parent)], index, 1, checks, target=robot.version,
+                         refuse_unloadable=True)
+    return data, replace(item.result, path=str(filename) if filename else "-")

@@ -1,0 +1,328 @@
+"""Which files a run looks at: ``.py`` files under the given paths, minus exclusions.
+
+Conventions of black and ruff: excludes apply to explicitly named files too (pre-commit
+passes file names), ``.gitignore`` is respected inside git checkouts, and symlinks are
+followed only while they stay inside the given roots (a loop or an escape ends there).
+
+A vendored copy of SkiROS2's own Python (the framework's packages, its standard skill
+libraries) is not the lab's code: migrating or linting it would rewrite upstream files the
+lab does not own and bury its findings in theirs. A folder named like an upstream package,
+or whose ``package.xml`` names one, is passed over with one note, unless it (or a path in
+it) is named on the command line, or ``include_vendored`` is set (``--include-vendored``);
+the rule is the one the ontology discovery applies to vendored core ``.owl`` files.
+"""
+
+from __future__ import annotations
+
+import errno
+import fnmatch
+import os
+import subprocess
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from ezskiros_runtime.ontology.discovery import enclosing_project
+
+from .package_xml import package_name
+from .paths import shown
+from .writing import is_temporary_name
+
+UPSTREAM_PACKAGES = frozenset({
+    "skiros2", "skiros2_common", "skiros2_skill", "skiros2_world_model", "skiros2_task",
+    "skiros2_gui", "skiros2_msgs", "skiros2_resource", "skiros2_std_skills",
+    "skiros2_std_lib", "skiros2_test_lib", "skiros2_template_lib"})
+"""SkiROS2's own ROS packages (framework and standard libraries): vendored, never ours."""
+
+ALWAYS_EXCLUDED = frozenset({".git", ".hg", ".svn", "__pycache__", ".venv", "venv", ".tox",
+                             ".mypy_cache", ".ruff_cache", ".pytest_cache", "node_modules",
+                             "build", "dist", ".eggs", ".ezmigrate_cache"})
+
+
+@dataclass(frozen=True)
+class Candidate:
+    """A file to consider, with the root it was found under (for relative report paths)."""
+
+    path: Path
+    root: Path
+
+    @property
+    def relative(self) -> str:
+        try:
+            return self.path.relative_to(self.root).as_posix() or self.path.name
+        except ValueError:
+            return self.path.as_posix()
+
+
+def excluded_under(base: Path, patterns: Sequence[str]) -> Callable[[Path], bool]:
+    """Whether a path is excluded, matched relative to ``base`` (the project's folder)."""
+    def skip(path: Path) -> bool:
+        try:
+            relative = path.resolve().relative_to(base.resolve()).as_posix()
+        except ValueError:
+            return False
+        return _excluded(relative, patterns)
+    return skip
+
+
+def _excluded(relative: str, patterns: Sequence[str]) -> bool:
+    """A pattern matches the path, any one folder or file name in it, or any leading
+    folders of it (``src/legacy`` excludes ``src/legacy/a.py``, as in ruff)."""
+    parts = relative.split("/")
+    prefixes = ["/".join(parts[:i]) for i in range(1, len(parts) + 1)]
+    for pattern in patterns:
+        if any(fnmatch.fnmatch(p, pattern) for p in (*prefixes, *parts)):
+            return True
+    return False
+
+
+def _spellings(path: Path, project: Path | None, named: bool) -> set[str]:
+    """Relative spellings of ``path`` for excludes to match (with each folder in them).
+
+    Always relative to the project (the folder of the ``pyproject.toml``), as ruff does:
+    ``exclude = ["src/legacy"]`` there holds whatever folder the run starts from. A file
+    ``named`` on the command line also as given and relative to the working directory:
+    pre-commit passes ``src/legacy/a.py``, and ``legacy`` or ``legacy/*`` must exclude it,
+    as with black and ruff. Absolute spellings are never used: every folder above the
+    project (``/tmp``, ``/home``) would then be matched too.
+    """
+    names = {path.name}
+    starts: list[str | Path] = [project] if project is not None else []
+    if named:
+        starts.append(os.curdir)
+        if not path.is_absolute():
+            names.add(path.as_posix().removeprefix("./"))
+    for start in starts:
+        relative = os.path.relpath(path, start)
+        if not relative.startswith(".."):
+            names.add(Path(relative).as_posix())
+    return names
+
+
+def vendored_package(folder: Path) -> str | None:
+    """The upstream SkiROS2 package ``folder`` is a copy of (by its name, or the name its
+    ``package.xml`` gives), or None."""
+    if folder.name in UPSTREAM_PACKAGES:
+        return folder.name
+    manifest = folder / "package.xml"
+    name = package_name(manifest) if manifest.is_file() else None
+    return name if name in UPSTREAM_PACKAGES else None
+
+
+def _inside(real: str, roots: Iterable[str]) -> bool:
+    """Whether the resolved path ``real`` is one of the resolved ``roots`` or below one."""
+    return any(real == r or real.startswith(os.path.join(r, "")) for r in roots)
+
+
+def repository_root(path: Path) -> Path:
+    """The scope of a named path: a directory itself; for a file, its git top level, else
+    its ROS package (``enclosing_project``, as ontology discovery finds it), else its
+    folder."""
+    if path.is_dir():
+        return path
+    return enclosing_project(path) or path.resolve().parent
+
+
+def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
+             respect_gitignore: bool = True,
+             stale: list[Path] | None = None,
+             project: Path | None = None,
+             include_vendored: bool = False) -> tuple[list[Candidate], list[str]]:
+    """All candidate files, sorted and unique, plus messages about what was passed over.
+
+    ``stale`` (when given) collects temporary files of ours (``.NAME.XXXXXXXX.ezmigrate``)
+    found beside the candidates: only a SIGKILLed run leaves them. Discovery only lists
+    them; ``session.run_rewrite`` decides whether to remove them (only when it writes).
+    ``project``: the folder excludes are also matched relative to (see ``_spellings``).
+    ``include_vendored``: walk into vendored SkiROS2 packages too (see the module doc).
+
+    Each file's real path (symlinks resolved) is worked out once, from its folder's real
+    path, which is resolved once per folder: a tree of 20,000 files costs one ``stat`` per
+    entry, not one per path component of every file.
+    """
+    notes: list[str] = []
+    found: dict[str, Candidate] = {}
+    named_files: set[str] = set()  # real paths of files named on the command line
+    for given in paths:
+        if not given.exists() and not given.is_symlink():
+            notes.append(f"{given}: no such file or directory")
+            continue
+        root = given if given.is_dir() else given.parent
+        real_roots = [os.path.realpath(root)]
+        if given.is_file():
+            if not any(_excluded(name, exclude) for name in _spellings(given, project, named=True)):
+                found.setdefault(os.path.realpath(given), Candidate(given, root))
+                named_files.add(os.path.realpath(given))
+                if stale is not None:
+                    stale.extend(_temporaries_of(given))
+            continue
+        named = given.resolve()  # a path in a vendored package, named: include all of it
+        inside = any(vendored_package(f) for f in (named, *named.parents))
+        vendored = None if include_vendored or inside else _note_vendored(notes)
+        for file, real in _walk(given, real_roots, notes, stale, vendored):
+            candidate = Candidate(file, root)
+            if exclude and any(_excluded(name, exclude) for name in
+                               {candidate.relative, *_spellings(file, project, named=False)}):
+                continue
+            found.setdefault(real, candidate)
+    ordered = sorted(found.items(), key=lambda pair: str(pair[1].path))
+    if respect_gitignore:
+        ignored = _git_ignored([real for real, _ in ordered])
+        notes += [f"{shown(c.path)}: skipped, git ignores it (.gitignore)"  # named: say so
+                  for real, c in ordered if real in ignored and real in named_files]
+        ordered = [(real, c) for real, c in ordered if real not in ignored]
+    return [c for _, c in ordered], notes
+
+
+def _temporaries_of(file: Path) -> list[Path]:
+    """Our temporary files for ``file`` (``.NAME.XXXXXXXX.ezmigrate`` beside it)."""
+    try:
+        with os.scandir(file.parent) as listing:
+            return sorted(Path(e.path) for e in listing
+                          if e.name.startswith(f".{file.name}.") and is_temporary_name(e.name))
+    except OSError:
+        return []
+
+
+def _note_vendored(notes: list[str]) -> Callable[[Path], bool]:
+    """Whether to pass over a folder below a given path: a vendored SkiROS2 package, said
+    once in ``notes``."""
+    def skip(folder: Path) -> bool:
+        package = vendored_package(folder)
+        if package is not None:
+            notes.append(f"{folder}: a vendored copy of SkiROS2's {package}, not the lab's "
+                         "code: skipped (name it, or pass --include-vendored, to include it)")
+        return package is not None
+    return skip
+
+
+def _walk(top: Path, roots: list[str], notes: list[str],
+          stale: list[Path] | None = None,
+          vendored: Callable[[Path], bool] | None = None) -> Iterator[tuple[Path, str]]:
+    """``.py`` files under ``top`` with their real paths (depth first, names sorted), and
+    our temporary files into ``stale`` when it is given; folders ``vendored`` says are
+    SkiROS2's own are not entered."""
+    seen: set[str] = set()
+    stack = [top]
+    while stack:
+        folder = stack.pop()
+        real = os.path.realpath(folder)
+        if real in seen:
+            notes.append(f"{folder}: symlink loop, not followed again")
+            continue
+        seen.add(real)
+        try:
+            with os.scandir(folder) as listing:
+                entries = sorted(listing, key=lambda e: e.name)
+        except OSError as error:
+            notes.append(f"{folder}: cannot list ({error.strerror})")
+            continue
+        for entry in entries:
+            if entry.name in ALWAYS_EXCLUDED:
+                continue
+            if stale is not None and is_temporary_name(entry.name):
+                if not entry.is_symlink() and entry.is_file(follow_symlinks=False):
+                    stale.append(Path(entry.path))
+                continue
+            link = entry.is_symlink()
+            target = os.path.realpath(entry.path) if link else os.path.join(real, entry.name)
+            if link and not _inside(target, roots):
+                notes.append(f"{Path(entry.path)}: symlink leads outside the given paths, "
+                             "skipped")
+                continue
+            try:
+                is_dir = entry.is_dir()
+                is_file = not is_dir and entry.name.endswith(".py") and entry.is_file()
+            except OSError as error:  # a file symlink loop: ELOOP
+                reason = "symlink loop" if error.errno == errno.ELOOP else error.strerror
+                notes.append(f"{Path(entry.path)}: {reason}, skipped")
+                continue
+            if is_dir and not (vendored is not None and vendored(Path(entry.path))):
+                stack.append(Path(entry.path))
+            elif is_file:
+                yield Path(entry.path), target
+
+
+_GIT_DISCOVERY_ENV = ("GIT_DIR", "GIT_WORK_TREE", "GIT_CEILING_DIRECTORIES",
+                      "GIT_DISCOVERY_ACROSS_FILESYSTEM", "GIT_COMMON_DIR")
+
+
+def _git_ignored(files: list[str]) -> set[str]:
+    """Real paths of the ``files`` (real paths) git ignores; nothing when git is absent.
+
+    git is asked for the checkout of each folder; folders that find the same ``.git``
+    walking up (same device all the way) are in the same checkout, so one ``git rev-parse``
+    answers for all of them. When the git environment variables could change how git
+    finds its checkout, every folder is asked, as git would be.
+    """
+    by_folder: dict[str, list[str]] = {}
+    for file in files:
+        by_folder.setdefault(os.path.dirname(file), []).append(file)
+    exact = any(name in os.environ for name in _GIT_DISCOVERY_ENV)
+    keys: dict[str, str] = {}
+    top_of: dict[str, str | None] = {}
+    groups: dict[str, list[str]] = {}
+    for folder, group in by_folder.items():
+        key = folder if exact else _checkout_key(folder, keys)
+        if key not in top_of:
+            top_of[key] = _git_top(folder)
+        top = top_of[key]
+        if top is not None:
+            groups.setdefault(top, []).extend(group)
+    ignored: set[str] = set()
+    for top, group in groups.items():
+        try:
+            proc = subprocess.run(["git", "-C", top, "check-ignore", "--stdin", "-z"],
+                                  input=b"\0".join(os.fsencode(p) for p in group),
+                                  capture_output=True, timeout=60, check=False)
+        except (OSError, subprocess.TimeoutExpired):
+            continue
+        ignored |= {os.path.realpath(os.fsdecode(p)) for p in proc.stdout.split(b"\0") if p}
+    return ignored
+
+
+def _checkout_key(folder: str, memo: dict[str, str]) -> str:
+    """Folders with the same key find the same checkout when git looks for one.
+
+    The key is the nearest folder at or above ``folder`` holding a ``.git`` entry, or, when
+    there is none, the highest folder git would look in (below the root or a device
+    boundary, where git stops looking). A folder inside a ``.git`` folder is its own group.
+    """
+    if f"{os.sep}.git{os.sep}" in os.path.join(folder, ""):
+        return folder
+    chain: list[str] = []
+    current = folder
+    try:
+        device = os.stat(current).st_dev
+    except OSError:
+        return folder
+    while True:
+        if current in memo:
+            key = memo[current]
+            break
+        chain.append(current)
+        if os.path.lexists(os.path.join(current, ".git")):
+            key = current
+            break
+        parent = os.path.dirname(current)
+        try:
+            boundary = parent == current or os.stat(parent).st_dev != device
+        except OSError:
+            boundary = True
+        if boundary:
+            key = "\0" + current  # no checkout found up to here
+            break
+        current = parent
+    for visited in chain:
+        memo[visited] = key
+    return key
+
+
+def _git_top(folder: str) -> str | None:
+    try:
+        proc = subprocess.run(["git", "-C", folder, "rev-parse", "--show-toplevel"],
+                              capture_output=True, timeout=30, check=False)
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    return os.path.realpath(os.fsdecode(proc.stdout.strip())) if proc.returncode == 0 \
+        else None

@@ -1,0 +1,13 @@
+"""Running over a repository: what a command does between its settings and its output.
+
+`settle` owns a migration (migrate every file, derive what crosses files, verify, hold
+back, repeat); `runner` reads the files and runs the codemod in parallel workers, with
+`import_scan` and `cross_file` for what links files; `holding` and `static_refusal` hold
+back the skills that will not be written; `session` is ``rewrite`` (it writes what settled,
+under `interrupt`'s deferral) and `earlier` adds what an earlier run migrated to its report;
+`check` is ``check``, with `load_cache` for its second run and `launch` for the launch
+files it reads; `target` says which robot's Python the code is for; `progress` draws the
+progress line; `holdpoint` lets a test stop a run at a named point.
+May import `compound`, `lint`, `codemod`, `verify`, `report` and `files`; never the
+command line.
+"""

@@ -1,0 +1,297 @@
+"""``ezmigrate check``: the linter a SkiROS2 repository keeps in CI, before and after migrating.
+
+Legacy descriptions are checked statically: ``read_statically`` extracts what each
+``createDescription`` declares (no user code runs; plain ones with ``ast``, the rest with
+the codemod's reader) and the runtime's early checks run on it, plus the checks only
+legacy code needs (``lint/legacy.py``). EzSkiROS files are loaded
+in an isolated child, exactly as ``verify`` does, and report the runtime's own findings.
+Every finding gets its catalogue code (``ezskiros_runtime.codes``); selection and
+suppression happen afterwards (``lint/select.py``), so this module reports everything.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from ezskiros_runtime.model import SkillModel
+
+from ..files.discover import Candidate, discover
+from ..files.prefilter import may_hold_descriptions
+from ..lint.diagnostic import Diagnostic, Positions, diagnostic
+from ..lint.legacy import legacy_hits
+from ..lint.plain_reader import Declined, read_plain
+from ..lint.robot_vocabulary import as_the_robot_resolves, scene_classes, typing_scenes
+from ..lint.world_model import SCENE_SUFFIX, WorldRun, scene_files, world_diagnostics
+from ..report.results import FileResult
+from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
+from . import holdpoint
+from .cross_file import RUNTIME_MARKER
+from .launch import Launch, with_init_scene
+from .load_cache import LoadCache, cached_loads
+from .progress import Progress
+from .settle import settle
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.diagnostics import ClassError
+    from ezskiros_runtime.ontology.index import OntologyIndex
+
+    from ..compound.analysis import Trees
+    from ..verify.protocol import LoadOutcome
+
+UNRESOLVED_LOAD = {"timeout": "info", "memory": "info", "crashed": "info"}
+"""Loads that failed on the sandbox's limits, not on the module: nothing is known of it."""
+KEPT_FROM_CODEMOD = frozenset({"description-in-options", "options-ignored"})
+"""Codemod findings ``check`` keeps; the others are found again by the runtime's checks."""
+
+
+@dataclass
+class CheckOutcome:
+    """Every finding of a run (before selection), and the source of each file read."""
+
+    files: int = 0
+    skills: int = 0
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    sources: dict[str, str] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+    """What discovery passed over and why (vendored SkiROS2 code, symlink loops), for
+    stderr."""
+
+
+def _text(data: bytes) -> str:
+    return data.decode("utf-8", errors="replace")
+
+
+def _legacy(path: str, result: FileResult, positions: Positions,
+            index: OntologyIndex | None) -> list[Diagnostic]:
+    found: list[Diagnostic] = []
+    if result.error:
+        found.append(diagnostic(path, positions, result.error_kind, result.error_line or 0,
+                                result.error.splitlines()[0]))
+    for skill in result.skills:
+        if skill.status == "converted":
+            found.append(diagnostic(path, positions, "not-migrated", skill.line,
+                                    "legacy description not migrated yet (run `ezmigrate "
+                                    "rewrite`)", skill.name))
+            for f in skill.findings:
+                if f.kind in KEPT_FROM_CODEMOD:
+                    found.append(diagnostic(path, positions, f.kind, f.line or skill.line,
+                                            f.message, skill.name))
+            if skill.static is not None:
+                for hit in legacy_hits(skill.name, path, skill.static, index):
+                    found.append(diagnostic(path, positions, hit.kind, hit.line or skill.line,
+                                            hit.message, skill.name, hit.fix))
+        elif skill.status == "skipped":
+            reason = (skill.reason or "").splitlines()[0] if skill.reason else ""
+            found.append(diagnostic(path, positions, "kept-legacy", skill.line,
+                                    f"legacy description kept, not checked: {reason}",
+                                    skill.name))
+    return found
+
+
+def parse(data: bytes) -> ast.Module | None:
+    """The module's syntax tree, or None when ``ast`` cannot read it (the codemod says why)."""
+    try:
+        return ast.parse(data)
+    except (SyntaxError, ValueError, UnicodeError, LookupError, MemoryError, RecursionError):
+        return None
+
+
+def read_statically(candidates: list[Candidate], workers: int, index: OntologyIndex | None,
+                    on_tree: Callable[[Candidate, bytes, ast.Module], None] | None = None
+                    ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
+    """What every legacy description declares, without importing user code.
+
+    Plain descriptions are read with ``ast`` (``lint/plain_reader.py``); every other file
+    goes through the codemod's reader exactly as ``rewrite`` reads it, with its whole
+    package when a class may derive from a description of a sibling file. Files without a
+    description are read, never parsed. ``on_tree`` (when given) sees each syntax tree parsed
+    here, for the compound-skill pass to read while it is at hand.
+    """
+    plain: list[tuple[Candidate, bytes, FileResult]] = []
+    declined: list[Candidate] = []
+    whole_package: set[Path] = set()
+    for candidate in candidates:
+        try:
+            data = candidate.path.read_bytes()
+        except OSError:
+            declined.append(candidate)  # the codemod reports why it cannot be read
+            continue
+        if not may_hold_descriptions(data):
+            yield candidate, data, FileResult(path=candidate.relative)
+            continue
+        tree = parse(data)
+        if tree is not None and on_tree is not None:
+            on_tree(candidate, data, tree)
+        verdict = read_plain(data, candidate.relative, tree) \
+            if RUNTIME_MARKER not in data and tree is not None else Declined()
+        if isinstance(verdict, Declined):
+            declined.append(candidate)
+            if verdict.cross_file:
+                whole_package.add(candidate.root)
+        else:
+            plain.append((candidate, data, verdict))
+    declined += [c for c, _, _ in plain if c.root in whole_package]
+    yield from ((c, d, r) for c, d, r in plain if c.root not in whole_package)
+    if declined:
+        for item in settle(declined, index, workers):
+            yield item.candidate, item.original, item.result
+
+
+def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
+              exclude: tuple[str, ...] = (),
+              progress: Callable[[str], None] | None = None,
+              skill_libraries: tuple[Path, ...] = (), compounds: bool = True,
+              world: WorldRun | None = None,
+              include_vendored: bool = False,
+              cache_dir: Path | None = None, launch: Launch | None = None,
+              trace: bool = True) -> CheckOutcome:
+    """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
+    the compound skills' trees against every description found (unless ``compounds`` is
+    False: no EZ3 code is selected, so their reading and tracing would be thrown away),
+    then the world model (EZ4xx: ``world``, or the defaults and the scenes under ``paths``;
+    scenes named in ``paths`` are scenes, not Python files). ``trace`` False
+    (``--no-trace``): no user code is imported, neither EzSkiROS files nor compound skills."""
+    world = world or WorldRun(scenes=tuple(scene_files(paths, exclude)))
+    world = with_init_scene(world, launch)
+    candidates, notes = discover([p for p in paths if p.suffix != SCENE_SUFFIX], exclude,
+                                 include_vendored=include_vendored)
+    outcome = CheckOutcome(files=len(candidates), notes=notes)
+    if progress is not None:
+        progress(f"checking {len(candidates)} files")
+    trees = None
+    standby: list[Standby] = []  # started by the static pass when a tree needs tracing
+    if compounds:
+        from ..compound.analysis import Trees
+
+        listed = launch.listed("skill_list") if launch is not None else None
+        trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, pool.workers)),
+                      named=tuple(paths), exclude=exclude,
+                      launched=frozenset(listed) if listed is not None else None,
+                      libraries=frozenset(launch.listed("libraries_list") or ())
+                      if launch is not None else frozenset(), trace=trace)
+    try:
+        outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
+                       standby, world, cache_dir, trace)
+        outcome.files += len(world.scenes)
+        outcome.diagnostics = as_the_robot_resolves(
+            outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
+            launch.workspace_unresolved if launch is not None else None)
+        return outcome
+    finally:
+        for workers in standby:
+            workers.close()
+
+
+def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyIndex | None,
+         pool: PoolConfig, progress: Callable[[str], None] | None,
+         skill_libraries: tuple[Path, ...], trees: Trees | None,
+         standby: list[Standby], world: WorldRun,
+         cache_dir: Path | None = None, trace: bool = True) -> CheckOutcome:
+    """``run_check`` once its compound pass (``trees``) is set up."""
+    loadable: list[Candidate] = []
+    read: list[tuple[Candidate, bytes]] = []
+    results: list[tuple[Candidate, FileResult]] = []
+    line = Progress.for_stream(len(candidates), skills_label="skills found") \
+        if progress is not None else Progress(len(candidates), active=False)
+    with line:  # erased before the next message
+        for candidate, data, result in read_statically(candidates, pool.workers, index,
+                                                       trees.add if trees else None):
+            path = str(candidate.path)
+            read.append((candidate, data))
+            results.append((candidate, result))
+            outcome.sources[path] = _text(data)
+            skills = sum(1 for s in result.skills if s.status != "unchanged")
+            outcome.skills += skills
+            line.advance(1, skills)
+            if line.files == 1:
+                holdpoint.reach("checking")
+            if result.error or result.skills:
+                outcome.diagnostics += _legacy(path, result,
+                                               Positions(outcome.sources[path]), index)
+            if RUNTIME_MARKER in data:
+                loadable.append(candidate)
+    if loadable and not trace:
+        outcome.notes.append(f"{len(loadable)} EzSkiROS file(s) not loaded (--no-trace): "
+                             "their descriptions are checked when they are imported, which "
+                             "--no-trace forbids")
+        loadable = []
+    if loadable and progress is not None:
+        progress(f"loading {len(loadable)} EzSkiROS files")
+    cache = None if cache_dir is None else LoadCache.for_run(
+        cache_dir, [(str(c.path), data) for c, data in read],
+        index.fingerprint if index is not None else "", pool.python)
+    data_of = {c.path: data for c, data in read}
+    outcomes = cached_loads([job_for(c.path, None, c.root) for c in loadable],
+                            [data_of[c.path] for c in loadable],
+                            lambda jobs: run_jobs(jobs, pool), cache)
+    if trees is not None:
+        outcome.diagnostics += _compound(read, results, list(zip(loadable, outcomes,
+                                                                 strict=True)),
+                                         index, pool, skill_libraries, outcome.sources, trees,
+                                         standby[0] if standby else None)
+    for candidate, loaded in zip(loadable, outcomes, strict=True):
+        path = str(candidate.path)
+        where = Positions(outcome.sources[path])
+        if not loaded.loaded:
+            outcome.diagnostics.append(diagnostic(
+                path, where, "unloadable", loaded.line or 0,
+                f"{loaded.status}: {loaded.message}", severity=UNRESOLVED_LOAD.get(
+                    loaded.status)))
+            continue
+        outcome.skills += len(loaded.models)
+        for error in loaded.errors:
+            outcome.diagnostics.append(_class_error(path, where, error))
+        for found in loaded.findings:
+            outcome.diagnostics.append(diagnostic(
+                path, where, found.kind, found.line or 0, found.message, found.skill,
+                f"Did you mean {found.suggestions[0]}?" if found.suggestions else None))
+    outcome.diagnostics += world_diagnostics(
+        world, [(str(c.path), r) for c, r in results],
+        [(str(c.path), [SkillModel.from_json(m) for m in o.models])
+         for c, o in zip(loadable, outcomes, strict=True) if o.loaded], index,
+        outcome.sources)
+    outcome.diagnostics.sort(key=lambda d: (d.path, d.line, d.column, d.code))
+    return outcome
+
+
+def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
+              loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
+              pool: PoolConfig, libraries: tuple[Path, ...],
+              sources: dict[str, str], trees: Trees,
+              standby: Standby | None = None) -> list[Diagnostic]:
+    """The compound skills' findings (EZ3xx), against this run's and the libraries'
+    descriptions."""
+    if not any(b"expand" in data for _, data in read):
+        return []
+    from ezskiros_runtime.compound.library import SkillIndex
+
+    from ..compound.analysis import add_descriptions, analyse, library_candidates
+    from ..compound.repository import scan_repository
+
+    skills = SkillIndex.with_standard_library()
+    library = library_candidates(list(libraries))
+    if library:  # read like the run's own files; the run's descriptions win over them
+        statics = [(c, r) for c, _, r in read_statically([c for c, _ in library], pool.workers,
+                                                         index)]
+        add_descriptions(skills, statics, [], "skill library")
+    around = scan_repository(trees.named, trees.exclude, trees.seen, read)
+    for info in around.descriptions:  # the files not named; the named ones' readings win
+        skills.add_description(info)
+    add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],
+                     "repository")
+    run = analyse(read, skills, index, pool, library, trees, standby, around)
+    found: dict[tuple[str, int, str, str], Diagnostic] = {}
+    for path, finding in run.findings:  # a traced loop adds the same mistake once a turn
+        where = Positions(sources.get(path, ""))
+        item = diagnostic(path, where, finding.kind, finding.line, finding.message,
+                          finding.implementation, finding.suggestion, finding.severity)
+        found.setdefault((path, item.line, item.code, item.message), item)
+    return list(found.values())
+
+
+def _class_error(path: str, where: Positions, error: ClassError) -> Diagnostic:
+    return diagnostic(path, where, "description", error.line or 0, error.message, error.name)

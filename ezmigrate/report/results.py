@@ -1,0 +1,96 @@
+"""Picklable result types that workers return and reports read.
+
+Like LibCST's codemod results: a file is changed, unchanged, or failed with a message, and
+each skill in it is converted, skipped (with a reason a user can act on and its finding
+code), failed (with the difference or the error), or unchanged. Frozen dataclasses of
+builtins: they cross process boundaries cheaply and serialize to the JSON report directly,
+and a verdict, once given, is never edited: a later step (verification, a refused write)
+makes a new result with ``dataclasses.replace`` and puts it in the old one's place.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from typing import TYPE_CHECKING, Any, Literal
+
+from ezskiros_runtime.codes import code_for
+
+if TYPE_CHECKING:
+    from .static_facts import StaticDescription
+
+SkillStatus = Literal["converted", "skipped", "failed", "unchanged"]
+
+
+@dataclass(frozen=True)
+class ReviewFinding:
+    """Something a reviewer should see that migration keeps as it was (a latent bug...)."""
+
+    kind: str
+    line: int
+    message: str
+    legacy_line: int | None = None
+    """The line in the legacy file when ``line`` is the written file's (``written_lines``)."""
+
+    @property
+    def code(self) -> str:
+        """The stable code of ``kind`` (``ezskiros_runtime.codes``), for lint output."""
+        return code_for(self.kind)
+
+    def to_json(self) -> dict[str, Any]:
+        return {**asdict(self), "code": self.code}
+
+
+@dataclass(frozen=True)
+class SkillResult:
+    """The verdict on one description class."""
+
+    name: str
+    line: int
+    status: SkillStatus
+    reason: str | None = None
+    findings: list[ReviewFinding] = field(default_factory=list)
+    model: dict[str, Any] | None = None
+    equivalent: bool | None = None
+    diff: list[dict[str, Any]] | None = None
+    static: StaticDescription | None = None
+    """What a converted legacy description declares, for ``check``'s static early checks."""
+    legacy_line: int | None = None
+    """The line in the legacy file when ``line`` is the written file's (``written_lines``)."""
+
+    @property
+    def code(self) -> str | None:
+        """The catalogue code of a verdict that needs a reader's eye (kept, not equivalent)."""
+        return code_for(self.status) if self.status in ("skipped", "failed") else None
+
+
+@dataclass(frozen=True)
+class FileResult:
+    """What happened to one file. ``new_source`` is set only when it should change."""
+
+    path: str
+    skills: list[SkillResult] = field(default_factory=list)
+    new_source: bytes | str | None = None
+    error: str | None = None
+    error_line: int | None = None
+    error_kind: str = "unreadable"
+    """The catalogue kind of ``error``: ``unreadable`` (EZ905), or ``lossy-rewrite`` (EZ906)
+    for a file the line guard (``core/guard.py``) kept from being written."""
+    notes: list[str] = field(default_factory=list)
+    exports: list[str] = field(default_factory=list)
+    """Description classes that convert (or inherit a conversion): bases for other files."""
+    foreign_bases: list[tuple[str, str]] = field(default_factory=list)
+    """``(base, module)`` of class bases imported from user modules (maybe descriptions)."""
+    depends_on: list[str] = field(default_factory=list)
+    """Files whose migrated descriptions this file's migrated classes derive from."""
+
+    @property
+    def error_code(self) -> str | None:
+        """The catalogue code of ``error``, if any."""
+        return code_for(self.error_kind) if self.error else None
+
+    @property
+    def changed(self) -> bool:
+        return self.new_source is not None
+
+    def count(self, status: str) -> int:
+        return sum(1 for s in self.skills if s.status == status)

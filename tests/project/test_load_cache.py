@@ -1,0 +1,78 @@
+"""``check``'s cache: a second run on an unchanged repository loads nothing again, gives the
+same findings, and any change of a Python file, the ontology or ``--no-cache`` misses."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+from ezmigrate.project.load_cache import FOLDER, LoadCache, cached_loads
+from ezmigrate.verify.protocol import LoadJob, LoadOutcome
+
+FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
+
+
+def _check(repo: Path, *extra: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero",
+                           "--output-format", "json", *extra, "."], cwd=repo,
+                          capture_output=True, text=True, timeout=600, check=False)
+
+
+def _repo(tmp_path: Path) -> Path:
+    repo = tmp_path / "repo"
+    repo.mkdir()
+    subprocess.run(["git", "init", "-q", str(repo)], check=True)
+    for name in ("pick_and_place.py", "conditions.py", "descriptions.py"):
+        shutil.copy(FIXTURES / "migrated" / name, repo / name)
+    return repo
+
+
+def test_the_second_run_reads_the_cache_and_finds_the_same(tmp_path: Path) -> None:
+    repo = _repo(tmp_path)
+    first = _check(repo)
+    assert first.returncode == 0, first.stderr
+    entries = sorted((repo / FOLDER).glob("*/*.json"))
+    assert len(entries) == 3  # one loaded outcome per EzSkiROS file
+    assert (repo / FOLDER / ".gitignore").read_text().splitlines()[-1] == "*"
+    stamps = [entry.stat().st_mtime_ns for entry in entries]
+    second = _check(repo)
+    assert second.stdout == first.stdout
+    assert [entry.stat().st_mtime_ns for entry in entries] == stamps  # nothing rewritten
+    uncached = _check(repo, "--no-cache")
+    assert uncached.stdout == first.stdout
+
+
+def test_a_changed_file_misses_and_a_damaged_entry_is_a_miss(tmp_path: Path) -> None:
+    repo = _repo(tmp_path)
+    first = _check(repo)
+    for entry in (repo / FOLDER).glob("*/*.json"):
+        entry.write_text("{not json")
+    assert _check(repo).stdout == first.stdout
+    helper = repo / "helpers.py"  # any Python file of the run may be imported: all miss
+    helper.write_text("X = 1\n")
+    before = len(list((repo / FOLDER).glob("*/*.json")))
+    _check(repo)
+    assert len(list((repo / FOLDER).glob("*/*.json"))) == before + 3
+
+
+def test_cached_loads_loads_only_the_misses_in_one_batch(tmp_path: Path) -> None:
+    cache = LoadCache.for_run(tmp_path / FOLDER, [("a.py", b"A"), ("b.py", b"B")], "onto",
+                              None)
+    jobs = [LoadJob("/x/a.py", None, None), LoadJob("/x/b.py", None, None)]
+    batches: list[list[str]] = []
+
+    def load(batch: list[LoadJob]) -> list[LoadOutcome]:
+        batches.append([job.path for job in batch])
+        return [LoadOutcome("ok" if job.path.endswith("a.py") else "timeout", job.path)
+                for job in batch]
+
+    first = cached_loads(jobs, [b"A", b"B"], load, cache)
+    second = cached_loads(jobs, [b"A", b"B"], load, cache)
+    assert [o.message for o in first] == [o.message for o in second] == ["/x/a.py", "/x/b.py"]
+    assert batches == [["/x/a.py", "/x/b.py"], ["/x/b.py"]]  # a timeout is never kept
+    other = LoadCache.for_run(tmp_path / FOLDER, [("a.py", b"A"), ("b.py", b"B")], "other",
+                              None)
+    cached_loads(jobs[:1], [b"A"], load, other)  # another ontology: another key
+    assert batches[-1] == ["/x/a.py"]
