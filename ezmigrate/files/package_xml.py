@@ -1,4 +1,8 @@
-"""The runtime declared in each migrated ROS package's ``package.xml``.
+"""What a ROS package's ``package.xml`` says, and the runtime declared in it.
+
+A package's manifest gives its name (vendored SkiROS2 packages, launch files), whether it
+is ROS 1 or ROS 2 (its buildtool: the robot's Python) and where the packages of a run are;
+one reader per fact, here.
 
 Migrated skills import ``ezskiros_runtime`` on the robot, so the package must say it needs
 it, or ``rosdep install`` on a fresh robot leaves it out and the skill manager fails to load
@@ -27,6 +31,7 @@ _DECLARED = re.compile(rb"<(?:exec_|build_export_|)depend>\s*(?:python3-)?ezskir
 _DEPEND_LINE = re.compile(rb"^([ \t]*)<(?:exec_|build_|build_export_|test_|)depend>[^\r\n]*", re.M)
 _CLOSE = re.compile(rb"^([ \t]*)</package>", re.M)
 _CHILD = re.compile(rb"^([ \t]+)<[A-Za-z]", re.M)
+_BUILDTOOL = re.compile(rb"<buildtool_depend>\s*([A-Za-z0-9_]+)\s*</buildtool_depend>")
 
 
 def with_exec_depend(data: bytes) -> bytes | None:
@@ -77,7 +82,15 @@ def packages_of(files: Iterable[Path]) -> list[Path]:
     return list(found)
 
 
-_BUILDTOOL = re.compile(rb"<buildtool_depend>\s*([A-Za-z0-9_]+)\s*</buildtool_depend>")
+def package_files(paths: Iterable[Path]) -> list[Path]:
+    """The ``package.xml`` of each ROS package the paths are in or, for a folder, hold,
+    without repeats, in order."""
+    found: dict[Path, None] = {}
+    for path in paths:
+        found.update(dict.fromkeys(packages_of([path])))
+        if path.is_dir():
+            found.update(dict.fromkeys(manifests_below(path.resolve())))
+    return list(found)
 
 
 def ros_flavour(package_xml: Path) -> str | None:

@@ -17,10 +17,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from ezskiros_runtime.ontology.discovery import PACKAGE_XML, package_root
-
 from ..codemod.core.emit import DEFAULT_TARGET
-from ..files.package_xml import manifests_below, ros_flavour
+from ..files.package_xml import package_files, ros_flavour
 from ..verify.interpreters import find_python, rdflib_version, version_of
 
 SPELLING = re.compile(r"py3(\d{1,2})\Z")
@@ -57,18 +55,6 @@ def parse_target(value: object) -> tuple[int, int] | None:
         return None
     version = (3, int(match.group(1)))
     return version if version >= OLDEST else None
-
-
-def package_files(paths: Iterable[Path]) -> list[Path]:
-    """The ``package.xml`` of each ROS package the paths are in or hold, without repeats."""
-    found: dict[Path, None] = {}
-    for path in paths:
-        above = package_root(path.resolve())
-        if above is not None:
-            found[above / PACKAGE_XML] = None
-        if path.is_dir():
-            found.update(dict.fromkeys(manifests_below(path.resolve())))
-    return list(found)
 
 
 def target_for(paths: Iterable[Path], configured: tuple[int, int] | None,
