@@ -575,9 +575,10 @@ def _launch(anchor: Path, chosen: Path | None, quiet: bool) -> Any:
     if not quiet and launch is not None and launch.values:
         said = ", ".join(f"{k}={v}" for k, v in sorted(launch.values.items()))
         click.echo(f"ezmigrate: launch: {shown_path(str(launch.path))} ({said})", err=True)
-        if "init_scene" in launch.values and launch.scene() is None:
-            click.echo(f"ezmigrate: init_scene {launch.values['init_scene']} is neither beside "
-                       "the launch file nor in the workspace_dir: not checked", err=True)
+        scene = launch.values.get("init_scene", "").strip()
+        if scene and launch.scene() is None:
+            click.echo(f"ezmigrate: init_scene {scene!r} is neither beside the launch file "
+                       "nor in the workspace_dir: not checked", err=True)
     return launch
 
 

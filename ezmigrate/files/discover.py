@@ -5,11 +5,12 @@ passes file names), ``.gitignore`` is respected inside git checkouts, and symlin
 followed only while they stay inside the given roots (a loop or an escape ends there).
 
 A vendored copy of SkiROS2's own Python (the framework's packages, its standard skill
-libraries) is not the lab's code: migrating or linting it would rewrite upstream files the
-lab does not own and bury its findings in theirs. A folder named like an upstream package,
-or whose ``package.xml`` names one, is passed over with one note, unless it (or a path in
-it) is named on the command line, or ``include_vendored`` is set (``--include-vendored``);
-the rule is the one the ontology discovery applies to vendored core ``.owl`` files.
+libraries, inside a lab's repository) is not the lab's code: migrating or linting it would
+rewrite upstream files the lab does not own and bury its findings in theirs. Such a folder
+is passed over with one note, unless it (or a path in it) is named on the command line, or
+``include_vendored`` is set (``--include-vendored``). What counts as vendored is
+``ezskiros_runtime.ontology.vendored``: the same packages in SkiROS2's own repositories are
+their maintainers' code and are walked like any other.
 """
 
 from __future__ import annotations
@@ -23,16 +24,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ezskiros_runtime.ontology.discovery import enclosing_project
+from ezskiros_runtime.ontology.vendored import VendoredRule, upstream_package
 
-from .package_xml import package_name
 from .paths import shown
 from .writing import is_temporary_name
-
-UPSTREAM_PACKAGES = frozenset({
-    "skiros2", "skiros2_common", "skiros2_skill", "skiros2_world_model", "skiros2_task",
-    "skiros2_gui", "skiros2_msgs", "skiros2_resource", "skiros2_std_skills",
-    "skiros2_std_lib", "skiros2_test_lib", "skiros2_template_lib"})
-"""SkiROS2's own ROS packages (framework and standard libraries): vendored, never ours."""
 
 ALWAYS_EXCLUDED = frozenset({".git", ".hg", ".svn", "__pycache__", ".venv", "venv", ".tox",
                              ".mypy_cache", ".ruff_cache", ".pytest_cache", "node_modules",
@@ -99,16 +94,6 @@ def _spellings(path: Path, project: Path | None, named: bool) -> set[str]:
     return names
 
 
-def vendored_package(folder: Path) -> str | None:
-    """The upstream SkiROS2 package ``folder`` is a copy of (by its name, or the name its
-    ``package.xml`` gives), or None."""
-    if folder.name in UPSTREAM_PACKAGES:
-        return folder.name
-    manifest = folder / "package.xml"
-    name = package_name(manifest) if manifest.is_file() else None
-    return name if name in UPSTREAM_PACKAGES else None
-
-
 def _inside(real: str, roots: Iterable[str]) -> bool:
     """Whether the resolved path ``real`` is one of the resolved ``roots`` or below one."""
     return any(real == r or real.startswith(os.path.join(r, "")) for r in roots)
@@ -157,8 +142,8 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
                     stale.extend(_temporaries_of(given))
             continue
         named = given.resolve()  # a path in a vendored package, named: include all of it
-        inside = any(vendored_package(f) for f in (named, *named.parents))
-        vendored = None if include_vendored or inside else _note_vendored(notes)
+        inside = any(upstream_package(f) for f in (named, *named.parents))
+        vendored = None if include_vendored or inside else _note_vendored(notes, named)
         for file, real in _walk(given, real_roots, notes, stale, vendored):
             candidate = Candidate(file, root)
             if exclude and any(_excluded(name, exclude) for name in
@@ -184,11 +169,14 @@ def _temporaries_of(file: Path) -> list[Path]:
         return []
 
 
-def _note_vendored(notes: list[str]) -> Callable[[Path], bool]:
-    """Whether to pass over a folder below a given path: a vendored SkiROS2 package, said
-    once in ``notes``."""
+def _note_vendored(notes: list[str], given: Path) -> Callable[[Path], bool]:
+    """Whether to pass over a folder below the ``given`` path: a vendored SkiROS2 package
+    (``VendoredRule``, with ``given`` as the repository outside git), said once in
+    ``notes``."""
+    rule = VendoredRule(given)
+
     def skip(folder: Path) -> bool:
-        package = vendored_package(folder)
+        package = rule.package(folder)
         if package is not None:
             notes.append(f"{folder}: a vendored copy of SkiROS2's {package}, not the lab's "
                          "code: skipped (name it, or pass --include-vendored, to include it)")

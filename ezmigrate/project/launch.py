@@ -16,11 +16,14 @@ and checks that depend on it say so rather than guess.
 from __future__ import annotations
 
 import ast
+import os
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from xml.etree import ElementTree
+
+from ezskiros_runtime.ontology.vendored import vendored_skip
 
 from ..files.discover import ALWAYS_EXCLUDED
 from ..files.package_xml import manifests_below, package_name
@@ -69,8 +72,8 @@ class Launch:
         """The ``init_scene`` file: as written when absolute or found beside the launch
         file, else in the ``workspace_dir``; None when neither holds it."""
         value = self.values.get("init_scene")
-        if value is None or "$(" in value:
-            return None
+        if value is None or not value.strip() or "$(" in value:  # empty: the robot starts
+            return None                                             # with no scene
         workspace = self.folder("workspace_dir")
         for candidate in (Path(value), self.path.parent / value,
                           *([workspace / value] if workspace is not None else [])):
@@ -104,15 +107,19 @@ def launch_files(root: Path) -> list[Path]:
 
 
 def _walk(root: Path) -> Iterator[Path]:
+    """The launch files below ``root``, outside hidden and build folders and vendored
+    SkiROS2 packages (their launch files start upstream's demos, not the lab's robot)."""
     if root.is_file():
         yield root
         return
-    for path in root.rglob("*.launch*"):
-        parts = path.relative_to(root).parts[:-1]
-        if any(p in ALWAYS_EXCLUDED or p.startswith(".") for p in parts):
-            continue
-        if path.name.endswith(SUFFIXES) and path.is_file():
-            yield path
+    vendored = vendored_skip(root)
+    for folder, dirs, names in os.walk(root):
+        here = Path(folder)
+        dirs[:] = [d for d in dirs if d not in ALWAYS_EXCLUDED and not d.startswith(".")
+                   and not vendored(here / d)]
+        for name in names:
+            if ".launch" in name and name.endswith(SUFFIXES) and (here / name).is_file():
+                yield here / name
 
 
 def ros_packages(root: Path) -> dict[str, Path]:
@@ -207,7 +214,7 @@ def project_launch(root: Path, chosen: Path | None = None) -> tuple[Launch | Non
     if len(files) == 1:
         return read_launch(files[0], packages), None
     if files:
-        names = ", ".join(str(f.relative_to(root)) for f in files[:4])
+        names = ", ".join(str(f.relative_to(root)) for f in files)
         return None, (f"{len(files)} SkiROS2 launch files ({names}): pick the one the robot "
                       "starts with --launch FILE to check against it")
     return None, None

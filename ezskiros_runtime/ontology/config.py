@@ -46,7 +46,7 @@ class OntologySource:
     `origin` is "argument", "environment", "pyproject:<path to pyproject.toml>", "bundled"
     (then `paths` is empty and the bundled vocabulary applies) or "discovered:<repository>"
     (then `paths` is the bundled core followed by the project's files, and `skipped` the
-    vendored copies of the core that were left out).
+    vendored copies of the core and of SkiROS2 packages that were left out).
     """
 
     paths: tuple[Path, ...]
@@ -74,7 +74,7 @@ class OntologySource:
             text = (f"ontology: the bundled SkiROS2 core plus the owl/ folders of {root}: "
                     + ", ".join(_shown(p, root) for p in self.paths[1:]))
             if self.skipped:
-                text += " (vendored core copies skipped: " + ", ".join(
+                text += " (vendored SkiROS2 copies skipped: " + ", ".join(
                     _shown(p, root) for p in self.skipped) + ")"
             if self.broken:
                 text += " (unreadable, skipped: " + ", ".join(

@@ -9,7 +9,9 @@ When nothing is configured, the files used are the bundled core plus every ``.ow
 ``.rdf`` file under each folder named ``owl`` inside the repository (its git top level, or
 the given paths outside git). A vendored copy of the core files (``skiros2/owl/skiros.owl``)
 is skipped: the bundled core states the same facts, and loading both would only add
-duplicates. Build output, virtual environments, hidden folders and the project's excludes
+duplicates. So are the ``owl/`` folders of SkiROS2 packages vendored into a lab's
+repository (``vendored``): the lab's skill manager does not load them, and its code is not
+the lab's either. Build output, virtual environments, hidden folders and the project's excludes
 are not searched.
 """
 
@@ -20,15 +22,14 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from .vendored import NOT_SEARCHED, PACKAGE_XML, vendored_skip
+
 OWL_FOLDER = "owl"
-PACKAGE_XML = "package.xml"
 SUFFIXES = (".owl", ".ttl", ".rdf")
 CORE_FILE_NAMES = frozenset({"skiros.owl", "skirosextra.owl", "sumo.owl", "cora.owl",
                              "corax.owl", "rparts.owl"})
 """The SkiROS2 core files (``skiros2/owl`` and its IEEE-1872-2015 folder), by lower-cased
 name: a copy of one of them in a repository is the core, already bundled."""
-NOT_SEARCHED = frozenset({"node_modules", "build", "devel", "install", "log", "dist",
-                          "site-packages", "__pycache__", "venv"})
 
 
 @dataclass(frozen=True)
@@ -81,21 +82,31 @@ def package_root(path: Path) -> Path | None:
 
 def discover(root: Path, skip: Callable[[Path], bool] | None = None) -> Discovered:
     """Every ontology file under the ``owl/`` folders below ``root``, sorted; ``skip`` says
-    which folders and files are excluded (the project's excludes)."""
+    which folders and files are excluded (the project's excludes). Copies of the core files
+    and the files of vendored SkiROS2 packages (``vendored``) are listed apart."""
     files: list[Path] = []
     vendored: list[Path] = []
-    for path in _owl_files(root, skip or (lambda _path: False)):
-        (vendored if path.name.lower() in CORE_FILE_NAMES else files).append(path)
+    for path, upstream in _owl_files(root, skip or (lambda _path: False)):
+        own = not upstream and path.name.lower() not in CORE_FILE_NAMES
+        (files if own else vendored).append(path)
     return Discovered(root, tuple(sorted(files)), tuple(sorted(vendored)))
 
 
-def _owl_files(root: Path, skip: Callable[[Path], bool]) -> Iterable[Path]:
+def _owl_files(root: Path, skip: Callable[[Path], bool]) -> Iterable[tuple[Path, bool]]:
+    """The ontology files below ``root``, each with whether it lies in a vendored SkiROS2
+    package (``vendored.VendoredRule``, with ``root`` as the repository outside git)."""
+    is_vendored = vendored_skip(root)
+    upstream: set[str] = set()  # the folders of vendored packages met so far
     for folder, dirs, names in os.walk(root):
         here = Path(folder)
+        inside = folder in upstream
         dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in NOT_SEARCHED
                          and not skip(here / d))
+        for d in dirs:
+            if inside or is_vendored(here / d):
+                upstream.add(os.path.join(folder, d))
         if OWL_FOLDER not in here.relative_to(root).parts:
             continue
         for name in names:
             if name.lower().endswith(SUFFIXES) and not skip(here / name):
-                yield here / name
+                yield here / name, inside

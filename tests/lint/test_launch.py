@@ -199,3 +199,25 @@ def test_a_named_file_sees_the_scenes_of_its_repository(tmp_path: Path):
     (folder / "owl" / "scenes" / "cell.turtle").write_text(SCENE.format(kind="Gadget"))
     assert [f for f in found(folder / "pkg" / "skill.py") if f[1] != "EZ407"] == [
         ("skill.py", "EZ209", "warning")]
+
+
+def test_the_note_on_several_launch_files_names_every_one(tmp_path: Path):
+    files = {"pkg/skill.py": SKILL,
+             **{f"launch/{n}.launch": LAUNCH.format(workspace="/nowhere", scene="x.turtle")
+                for n in "abcdef"}}
+    run = cli(".", cwd=repo(tmp_path, files))
+    [note] = [line for line in run.stderr.splitlines() if "SkiROS2 launch files" in line]
+    assert note.startswith("ezmigrate: 6 SkiROS2 launch files (")
+    assert all(f"launch/{n}.launch" in note for n in "abcdef"), note
+
+
+def test_an_empty_init_scene_is_no_missing_scene(tmp_path: Path):
+    folder = repo(tmp_path, {"pkg/skill.py": SKILL,
+                             "cell.launch": LAUNCH.format(workspace="/nowhere", scene="")})
+    assert read_launch(folder / "cell.launch").scene() is None
+    run = cli(".", cwd=folder)
+    assert "init_scene" not in run.stderr.replace("init_scene=", ""), run.stderr
+    named = repo(tmp_path / "b", {"pkg/skill.py": SKILL,
+                                  "cell.launch": LAUNCH.format(workspace="/nowhere",
+                                                               scene="gone.turtle")})
+    assert "init_scene 'gone.turtle' is neither beside" in cli(".", cwd=named).stderr

@@ -67,7 +67,7 @@ def test_the_lab_ontology_is_found_and_the_vendored_core_skipped(migrated):
     lines = [line for line in run.stderr.splitlines() if line.startswith("ezmigrate: ontology")]
     # the repository is the working directory: named as ruff and black would, "."
     assert lines == ["ezmigrate: ontology: the bundled SkiROS2 core plus the owl/ folders of "
-                     ".: owl/lab.owl, owl/robot.owl (vendored core "
+                     ".: owl/lab.owl, owl/robot.owl (vendored SkiROS2 "
                      "copies skipped: vendor/skiros2/owl/skiros.owl)"]
     assert data["ontology"] == lines[0].removeprefix("ezmigrate: ")
     assert "unknown" not in run.stderr  # lab:PaintStation, lab:paintedAt, ... are known

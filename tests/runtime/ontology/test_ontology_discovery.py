@@ -86,7 +86,7 @@ def test_the_core_plus_every_owl_file_of_the_repository(tmp_path):
                             (root / "owl" / "robot.owl").resolve())
     assert source.skipped == ((root / "vendor" / "skiros2" / "owl" / "skiros.owl").resolve(),)
     line = source.describe()
-    assert "owl/lab.ttl, owl/robot.owl" in line and "vendored core copies skipped" in line
+    assert "owl/lab.ttl, owl/robot.owl" in line and "vendored SkiROS2 copies skipped" in line
 
 
 def test_project_classes_are_known_and_individuals_are_not_classes(tmp_path):
