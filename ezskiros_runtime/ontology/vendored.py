@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Callable, Dict, Optional
+from typing import Callable
 from xml.etree import ElementTree
 
 PACKAGE_XML = "package.xml"
@@ -37,7 +37,7 @@ NOT_SEARCHED = frozenset({"node_modules", "build", "devel", "install", "log", "d
 """Folders no search enters: build, devel and install spaces hold copies of packages."""
 
 
-def upstream_package(folder: Path) -> Optional[str]:
+def upstream_package(folder: Path) -> str | None:
     """The SkiROS2 package ``folder`` is (by its name, or the name its ``package.xml``
     gives), or None."""
     if folder.name in UPSTREAM_PACKAGES:
@@ -86,9 +86,9 @@ class VendoredRule:
 
     def __init__(self, fallback: Path) -> None:
         self._fallback = fallback.resolve()
-        self._own: Dict[Path, bool] = {}
+        self._own: dict[Path, bool] = {}
 
-    def package(self, folder: Path) -> Optional[str]:
+    def package(self, folder: Path) -> str | None:
         """The SkiROS2 package ``folder`` is a vendored copy of, or None (not SkiROS2's,
         or SkiROS2's in SkiROS2's own repository)."""
         package = upstream_package(folder)
