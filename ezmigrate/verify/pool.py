@@ -167,9 +167,11 @@ class Standby:
         return None
 
     def close(self) -> None:
-        """Stop the workers nobody took."""
+        """Stop the workers nobody took (an interrupt may have come before every thread
+        was started: those have nothing to wait for)."""
         for thread in self._threads:
-            thread.join()
+            if thread.ident is not None:
+                thread.join()
         while not self._ready.empty():
             worker = self._ready.get_nowait()
             if worker is not None:

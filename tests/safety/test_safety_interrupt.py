@@ -22,6 +22,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import textwrap
 import time
 from pathlib import Path
 
@@ -354,3 +355,33 @@ def test_an_interrupted_verification_leaves_no_worker_or_child_running(tmp_path,
     while _left(set(ours), groups) and time.monotonic() < stopped + 5:
         time.sleep(0.05)
     assert _left(set(ours), groups) == [], "workers or their children outlived the run"
+
+
+def test_ctrl_c_while_the_command_is_still_importing_is_one_line(tmp_path: Path) -> None:
+    """The import of the CLI (click, libcst: a noticeable part of a second) is held by a
+    finder that waits on stdin until the test has signalled: the interrupt lands inside it."""
+    code = textwrap.dedent("""\
+        import sys
+
+        class HoldClick:
+            def find_spec(self, name, path=None, target=None):
+                if name == "click":
+                    sys.stdout.write("importing\\n")
+                    sys.stdout.flush()
+                    sys.stdin.readline()
+                return None
+
+        sys.meta_path.insert(0, HoldClick())
+        sys.argv = ["ezmigrate", "check", "."]
+        from ezmigrate.__main__ import main
+        main()
+        """)
+    proc = subprocess.Popen([sys.executable, "-c", code], cwd=tmp_path, stdin=subprocess.PIPE,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert proc.stdout is not None
+    assert proc.stdout.readline() == b"importing\n"
+    proc.send_signal(signal.SIGINT)
+    _out, err = proc.communicate(timeout=120)
+    assert proc.returncode == 130, err
+    assert err.decode().splitlines() == ["ezmigrate: interrupted by SIGINT before any file "
+                                         "was written: every file is as it was"]
