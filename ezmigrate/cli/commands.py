@@ -171,7 +171,7 @@ def _write_report(path: Path, results: list[FileResult], options: MarkdownOption
 
 
 @click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})
-@click.version_option(__version__, prog_name="ezmigrate")
+@click.version_option(__version__, "-V", "--version", prog_name="ezmigrate")
 def main() -> None:
     """Migrate SkiROS2 skill descriptions to EzSkiROS, and prove nothing changed."""
 
@@ -324,11 +324,12 @@ def _show_manifests(outcome: Any, request: Any, color: bool | None) -> list[str]
     """Say what became of each package.xml the run declares the runtime in (``session``
     decided and wrote them): a diff with --dry-run, ``would rewrite`` with --check, one
     stderr line each; and one line each for the report."""
-    from ..files.package_xml import ROSDEP_KEY
+    from ..files.package_xml import runtime_depend
 
     lines = []
     for manifest in outcome.manifests:
         shown = shown_path(manifest.path)
+        element = runtime_depend(manifest.old)
         if request.dry_run:  # applies from the repository root, as the files' diffs do
             diff = unified_diff(from_repository(manifest.path, shown), manifest.old,
                                 manifest.new)
@@ -336,9 +337,9 @@ def _show_manifests(outcome: Any, request: Any, color: bool | None) -> list[str]
             click.echo(colour(diff) if use_colour else diff, nl=False)
         elif request.check:
             click.echo(f"would rewrite {shown}")
-        lines.append(f"`{shown}`: declares the runtime, `<exec_depend>{ROSDEP_KEY}"
-                     "</exec_depend>`" + ("" if request.writes else " (would)"))
-        click.echo(f"ezmigrate: {shown}: <exec_depend>{ROSDEP_KEY}</exec_depend> "
+        lines.append(f"`{shown}`: declares the runtime, `{element}`"
+                     + ("" if request.writes else " (would)"))
+        click.echo(f"ezmigrate: {shown}: {element} "
                    + ("added" if request.writes else "would be added"), err=True)
     return lines
 
@@ -442,7 +443,7 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 
 
 @main.command()
-@click.argument("paths", nargs=-1, required=True,
+@click.argument("paths", nargs=-1,
                 type=click.Path(path_type=Path, allow_dash=True, exists=True))
 @click.option("--stdin-filename", type=click.Path(path_type=Path, dir_okay=False),
               help="With PATH '-': the file stdin stands for (as ruff's flag): its project's "
@@ -495,7 +496,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
           scene: Path | None, debug: bool, no_cache: bool = False, no_trace: bool = False,
           stdin_filename: Path | None = None, fix: bool = False,
           show_diff: bool = False, launch_file: Path | None = None) -> None:
-    """Lint SkiROS2 and EzSkiROS descriptions under PATHS (codes: docs/rules.md).
+    """Lint SkiROS2 and EzSkiROS descriptions under PATHS, the working directory when none
+    is given, as ruff does (codes: docs/rules.md).
 
     Suppress a finding on its line with `# ezskiros: ignore[EZ209]` (or `ignore[EZ209,EZ201]`).
     Exit 0 when no finding at error severity remains, 1 when one does, 2 on usage errors.
@@ -507,6 +509,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     if statistics and output_format not in STATISTICS:
         raise click.UsageError(f"--statistics has no {output_format} form (it has "
                                f"{' and '.join(STATISTICS)}): drop one of the two options")
+    paths = paths or (Path("."),)
     shown_as: dict[str, str] = {}  # the stdin file's private copy -> the name it stands for
     roots: Sequence[Path] = paths
     anchor = paths[0]

@@ -25,7 +25,8 @@ _GITHUB_LEVEL = {"error": "error", "warning": "warning", "info": "notice"}
 
 
 def text(diagnostics: Sequence[Diagnostic]) -> str:
-    """``path:line:col: CODE message``, one per line (what editors and terminals parse)."""
+    """``path:line:col: CODE [severity] message``, one per line (what editors and
+    terminals parse)."""
     return "".join(f"{d}\n" for d in diagnostics)
 
 

@@ -32,7 +32,9 @@ class Diagnostic:
         return f"{self.skill}: {self.message}" if self.skill else self.message
 
     def __str__(self) -> str:
-        return f"{self.path}:{self.line}:{self.column}: {self.code} {self.text}"
+        """``path:line:col: CODE [severity] message``: the code where ruff puts it, and the
+        severity beside it, so that a reader sees which lines fail the run."""
+        return f"{self.path}:{self.line}:{self.column}: {self.code} [{self.severity}] {self.text}"
 
 
 class Positions:

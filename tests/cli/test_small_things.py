@@ -11,6 +11,8 @@ import sys
 import time
 from pathlib import Path
 
+import pytest
+
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
 
 
@@ -102,3 +104,31 @@ def test_after_an_interrupted_run_the_reruns_report_covers_the_whole_tree(tmp_pa
     earlier = [s for s in skills if s["status"] == "unchanged"]
     assert all(s["reason"] == "already an EzSkiROS description (migrated by an earlier run)"
                for s in earlier)
+
+
+def test_check_with_no_path_checks_the_working_directory(tmp_path: Path):
+    """As ruff: ``ezmigrate check`` is ``ezmigrate check .``."""
+    shutil.copy(FIXTURES / "legacy" / "param_values.py", tmp_path / "skills.py")
+    bare = ezmigrate(tmp_path, "check", "--output-format", "json")
+    dotted = ezmigrate(tmp_path, "check", "--output-format", "json", ".")
+    assert bare.returncode == dotted.returncode == 1, bare.stderr
+    assert json.loads(bare.stdout) == json.loads(dotted.stdout) != []
+
+
+def test_text_findings_say_their_severity_and_quiet_keeps_the_errors(tmp_path: Path):
+    shutil.copy(FIXTURES / "compound_repo" / "lab_tasks" / "src" / "lab_tasks" / "mistakes.py",
+                tmp_path / "mistakes.py")
+    shutil.copy(FIXTURES / "legacy" / "param_values.py", tmp_path / "skills.py")
+    data = json.loads(ezmigrate(tmp_path, "check", "--output-format", "json").stdout)
+    lines = ezmigrate(tmp_path, "check").stdout.splitlines()
+    shown = [line.split(" ", 3)[2] for line in lines]
+    assert shown == [f"[{d['severity']}]" for d in data]
+    assert {"[error]", "[warning]"} <= set(shown)
+    quiet = ezmigrate(tmp_path, "check", "-q").stdout.splitlines()
+    assert quiet == [line for line in lines if " [error] " in line] != []
+
+
+@pytest.mark.parametrize("flag", ["-V", "--version"])
+def test_the_version_flags(tmp_path: Path, flag: str):
+    run = ezmigrate(tmp_path, flag)
+    assert run.returncode == 0 and run.stdout.startswith("ezmigrate, version "), run.stderr

@@ -159,10 +159,10 @@ def test_check_fails_on_errors_and_rewrite_converts_the_files(tmp_path: Path,
 
     assert check.returncode == 1, check.stdout
     assert "ezmigrate check" in check.stdout and "Failed" in check.stdout, check.stdout
-    assert "skill.py:8:9: EZ213 Pick:" in check.stdout, check.stdout
-    assert "skill.py:9:9: EZ101 Pick:" in check.stdout, check.stdout
+    assert "skill.py:8:9: EZ213 [error] Pick:" in check.stdout, check.stdout
+    assert "skill.py:9:9: EZ101 [warning] Pick:" in check.stdout, check.stdout
     # the base in the sibling file was seen: the derived description is checked, not kept
-    assert "pkg/impl.py:9:9: EZ213 NavigateWith:" in check.stdout, check.stdout
+    assert "pkg/impl.py:9:9: EZ213 [error] NavigateWith:" in check.stdout, check.stdout
     assert "EZ902" not in check.stdout, check.stdout
 
     rewrite = _try_repo(repo, hooks, "ezmigrate-rewrite")
