@@ -58,8 +58,9 @@ RULES: tuple[Rule, ...] = (
     Rule("EZ101", "description-in-options", "warning",
          "A string passed 4th to addParam lands in the options slot; SkiROS2 drops it and the "
          "parameter's description stays empty.",
-         "Pass it as description=\"...\" (5th argument): `ezmigrate check --fix` does it; "
-         "`rewrite` keeps the text as a comment on the parameter's line.",
+         "Pass it as description=\"...\" (5th argument): `ezmigrate check --fix` does it on "
+         "the legacy file, so run it before `rewrite`, which keeps the text as a comment on "
+         "the parameter's line (nothing is left to fix after it).",
          ("description-in-options",)),
     Rule("EZ102", "options-ignored", "warning",
          "SkiROS2 expands ParamOptions only for Element values; on any other value they do "

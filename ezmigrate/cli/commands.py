@@ -259,10 +259,13 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         python=python, ignore_order=ignore_order, ignore_labels=ignore_labels,
         ontology=ontology_files, project=options.project, target=robot.version,
         include_vendored=include_vendored, package_xml=package_xml)
+    from ..project.earlier import whole_tree
+
     outcome = run_rewrite(request, index)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
-    results = _as_written(outcome.migrated)
+    # earlier runs' descriptions count too: stderr and the report say one count of the tree
+    results = _as_written(outcome.migrated, whole_tree(outcome.migrated))
     for item, result in zip(outcome.migrated, results, strict=True):  # unchanged: bytes stay
         _print_result(shown_path(item.candidate.path),
                       from_repository(item.candidate.path, item.candidate.relative),
@@ -280,14 +283,11 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
             options.pool(ontology_files))
         scenes = _scene_section(paths, options.exclude, index)
-    from ..project.earlier import whole_tree  # earlier runs' descriptions: the report covers all
-
     _finish(results, report, request.writes, check, strict,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
                                              compounds=compounds, verifier=verifier,
                                              scenes=scenes, notes=declared),
-            reported=_as_written(outcome.migrated, whole_tree(outcome.migrated))
-            if report else None)
+            reported=results if report else None)
 
 
 def _as_written(migrated: Sequence[Any],

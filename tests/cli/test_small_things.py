@@ -104,6 +104,10 @@ def test_after_an_interrupted_run_the_reruns_report_covers_the_whole_tree(tmp_pa
     earlier = [s for s in skills if s["status"] == "unchanged"]
     assert all(s["reason"] == "already an EzSkiROS description (migrated by an earlier run)"
                for s in earlier)
+    # one run, one count: stderr's summary counts what the report lists
+    converted = sum(s["status"] == "converted" for s in skills)
+    assert (f"{len(skills)} skills found, {converted} converted, 0 skipped, 0 failed, "
+            f"{len(earlier)} unchanged") in second.stderr, second.stderr
 
 
 def test_check_with_no_path_checks_the_working_directory(tmp_path: Path):

@@ -156,7 +156,9 @@ def param_findings(op: ParamOp, skill: ExtractedSkill) -> None:
                           f"addParam({op.key!r}) passes {op.options_text!r} in the options slot:"
                           " SkiROS2 ignores it and the description stays empty (a migration keeps "
                           "the text as a comment on the parameter's line, meaning unchanged; "
-                          "`ezmigrate check --fix` passes it as description=... instead)")
+                          "to make it the description, run `ezmigrate check --fix` on the "
+                          "legacy file first, then `rewrite`: after `rewrite` there is "
+                          "nothing left to fix)")
     if op.options and not (isinstance(op.value, ElementValue) and not op.value.is_class):
         skill.finding("options-ignored", op.line,
                           f"ParamOptions on {op.key!r} have no effect: SkiROS2 only expands "
