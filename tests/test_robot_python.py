@@ -135,7 +135,7 @@ def test_the_ros1_package_migrates_for_python_3_8_and_declares_the_runtime(migra
     before = (PACKAGE / "package.xml").read_text(encoding="utf-8").splitlines()
     after = (root / "package.xml").read_text(encoding="utf-8").splitlines()
     added = [line for line in after if line not in before]
-    assert added == ["  <exec_depend>python3-ezskiros-runtime-pip</exec_depend>"]
+    assert added == ["  <exec_depend>ezskiros_runtime</exec_depend>"]  # format 2
     assert [line for line in after if line != added[0]] == before
     report = (root / "report.md").read_text(encoding="utf-8")
     assert "unreadable, skipped: owl/lth.owl" in report

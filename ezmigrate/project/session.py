@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..files.discover import Candidate, discover
-from ..files.package_xml import packages_of, with_exec_depend
+from ..files.package_xml import packages_of, with_runtime_depend
 from ..files.writing import WriteRefused, atomic_write, digest, remove_stale_temporary
 from ..verify.verdicts import Comparison
 from . import holdpoint, interrupt
@@ -83,8 +83,9 @@ class RewriteOutcome:
     written: list[str] = field(default_factory=list)
     refused: list[str] = field(default_factory=list)
     manifests: list[Manifest] = field(default_factory=list)
-    """package.xml files that gain the runtime's ``<exec_depend>`` (written when the run
-    writes; otherwise what a write would do)."""
+    """package.xml files that gain a dependency on the runtime (``<run_depend>`` or
+    ``<exec_depend>``, as their format allows; written when the run writes; otherwise what
+    a write would do)."""
 
 
 @dataclass(frozen=True)
@@ -161,7 +162,7 @@ def _manifests(outcome: RewriteOutcome, options: RewriteOptions) -> list[Manifes
     found = []
     for path in packages_of(files):
         old = path.read_bytes()
-        new = with_exec_depend(old)
+        new = with_runtime_depend(old)
         if new is not None:
             found.append(Manifest(path, old, new))
     return found

@@ -1,9 +1,9 @@
-"""The code written is code the robot runs: the target Python, and the package.xml line.
+"""The code written is code the robot runs: the target Python.
 
 ``list[float]`` raises ``TypeError`` when a class is defined under ROS Noetic's Python 3.8,
 so a ROS 1 package (or ``target-version = "py38"``) gets the DSL's ``LIST[float]``; every
-other line is the same. ``package.xml`` gains the runtime's ``<exec_depend>`` and nothing
-else.
+other line is the same. The line ``package.xml`` gains is tested in
+``tests/files/test_package_xml.py``.
 """
 
 from __future__ import annotations
@@ -14,7 +14,6 @@ import pytest
 
 from ezmigrate.cli.config import ConfigError, load_project_config
 from ezmigrate.codemod.migrate import Settings, migrate
-from ezmigrate.files.package_xml import ROSDEP_KEY, with_exec_depend
 from ezmigrate.project.target import parse_target, ros_flavour, target_for
 
 LEGACY = b'''from skiros2_common.core.abstract_skill import SkillDescription
@@ -88,38 +87,3 @@ def test_the_repository_says_which_robot(tmp_path):
     plain.mkdir()
     assert (target_for([plain], None).version, target_for([plain], None).flavour) == (
         (3, 10), None)
-
-
-PACKAGE_XML = b"""<?xml version="1.0"?>
-<package format="2">
-  <name>cell</name>
-  <buildtool_depend>catkin</buildtool_depend>
-  <exec_depend>skiros2</exec_depend>
-\t<exec_depend>rospy</exec_depend>
-
-  <export/>
-</package>
-"""
-
-
-def test_the_runtime_is_declared_after_the_last_dependency_and_nothing_else_moves():
-    new = with_exec_depend(PACKAGE_XML)
-    assert new is not None
-    old_lines, new_lines = PACKAGE_XML.splitlines(), new.splitlines()
-    assert new_lines[:6] == old_lines[:6]
-    assert new_lines[6] == f"\t<exec_depend>{ROSDEP_KEY}</exec_depend>".encode()
-    assert new_lines[7:] == old_lines[6:]
-    assert with_exec_depend(new) is None  # declared once, never twice
-
-
-def test_line_endings_and_a_package_without_dependencies():
-    crlf = PACKAGE_XML.replace(b"\n", b"\r\n")
-    new = with_exec_depend(crlf)
-    assert new is not None and new.count(b"\r\n") == crlf.count(b"\r\n") + 1
-    assert b"\n" not in new.replace(b"\r\n", b"")
-    bare = b"<package>\n    <name>x</name>\n</package>\n"
-    assert with_exec_depend(bare) == (b"<package>\n    <name>x</name>\n    <exec_depend>"
-                                      + ROSDEP_KEY.encode() + b"</exec_depend>\n</package>\n")
-    assert with_exec_depend(b"<not-a-package/>") is None
-    declared = PACKAGE_XML.replace(b"rospy", b"ezskiros_runtime")
-    assert with_exec_depend(declared) is None

@@ -20,7 +20,7 @@ import libcst as cst
 import pytest
 from verify_support import second_python
 
-from ezmigrate.files.package_xml import ROSDEP_KEY
+from ezmigrate.files.package_xml import RUNTIME_PACKAGE
 from ezmigrate.verify.interpreters import find_python
 
 REPO = Path(__file__).resolve().parents[2] / "fixtures" / "ros_repo"
@@ -122,7 +122,7 @@ def test_the_diff_holds_only_descriptions_and_the_imports_they_needed(migrated):
         old, new = before.decode().splitlines(), after.decode().splitlines()
         if relative.name == "package.xml":  # the runtime declared: one line added, no other
             assert [line for line in new if line not in old] == [
-                f"  <exec_depend>{ROSDEP_KEY}</exec_depend>"]
+                f"  <exec_depend>{RUNTIME_PACKAGE}</exec_depend>"]
             assert len(new) == len(old) + 1
             continue
         old_ok = _allowed_lines(before.decode(), DESCRIPTIONS)
