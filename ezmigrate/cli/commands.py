@@ -34,10 +34,12 @@ from ..report.reports import (
     counted,
     json_report,
     markdown_report,
+    newer_python_lines,
     relaxed,
 )
 from ..report.results import FileResult
 from ..report.written_lines import as_written
+from ..verify.interpreters import version_of
 from .config import ConfigError, load_project_config
 from .options import CommandLine, Options
 
@@ -256,7 +258,8 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     request = RewriteOptions(
         paths=list(paths), dry_run=dry_run, check=check, exclude=options.exclude,
         jobs=options.jobs, output_dir=output_dir, verify=verify, timeout=options.timeout,
-        python=python, ignore_order=ignore_order, ignore_labels=ignore_labels,
+        python=python, python_given=options.python is not None, ignore_order=ignore_order,
+        ignore_labels=ignore_labels,
         ontology=ontology_files, project=options.project, target=robot.version,
         include_vendored=include_vendored, package_xml=package_xml)
     from ..project.earlier import whole_tree
@@ -274,6 +277,9 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
     declared = _show_manifests(outcome, request, color)
+    newer = newer_python_lines(results, python, version_of(python)) if verify else []
+    for line in newer:
+        click.echo(f"ezmigrate: {line}", err=True)
     compounds: list[str] = []
     scenes: list[str] = []
     if report is not None and report.suffix.lower() == ".md":
@@ -286,7 +292,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     _finish(results, report, request.writes, check, strict,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
                                              compounds=compounds, verifier=verifier,
-                                             scenes=scenes, notes=declared),
+                                             scenes=scenes, notes=[*newer, *declared]),
             reported=results if report else None)
 
 

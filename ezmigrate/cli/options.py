@@ -91,7 +91,8 @@ class Options:
         from ..verify.pool import PoolConfig
 
         return PoolConfig(workers=self.jobs if workers is None else workers,
-                          timeout=self.timeout, ontology=ontology, python=self.python)
+                          timeout=self.timeout, ontology=ontology, python=self.python,
+                          python_given=self.python is not None)
 
     @classmethod
     def resolve(cls, cli: CommandLine, pyproject: ProjectConfig) -> Options:

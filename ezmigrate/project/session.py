@@ -45,6 +45,8 @@ class RewriteOptions:
     timeout: float = 20.0
     python: str | None = None
     """The interpreter verification loads files with (None: ours, see verify.interpreters)."""
+    python_given: bool = False
+    """``python`` is the user's choice, kept for every file (``PoolConfig.python_given``)."""
     ignore_order: bool = False
     ignore_labels: bool = False
     ontology: tuple[str, ...] = ()
@@ -70,7 +72,8 @@ class RewriteOptions:
         from ..verify.pool import PoolConfig
 
         return Checks(PoolConfig(workers=self.jobs, timeout=self.timeout,
-                                 ontology=self.ontology, python=self.python),
+                                 ontology=self.ontology, python=self.python,
+                                 python_given=self.python_given),
                       Comparison(self.ignore_order, self.ignore_labels))
 
 

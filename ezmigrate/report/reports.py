@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import json
+import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from .results import FileResult, SkillResult
@@ -58,6 +60,31 @@ class Summary:
 def counted(number: int, noun: str) -> str:
     """``1 file``, ``2 files``: the summary reads as English."""
     return f"{number} {noun}" + ("" if number == 1 else "s")
+
+
+VERIFIED_UNDER = "verified under "
+"""How a file's note names the interpreter that loaded it (``verdicts.note_stand_ins``)."""
+
+
+def newer_python_lines(results: Sequence[FileResult], run_python: str | None,
+                       run_version: str) -> list[str]:
+    """One line per interpreter other than the run's (``run_python``; None: ours) that
+    verified some files: those whose syntax the run's Python cannot read, loaded under the
+    oldest Python that can (``pool._retry_newer_syntax``); ``run_version`` names the run's
+    Python (``3.11.7``). For the summary and the report:
+    what was proven there is what that Python loads, not the robot's."""
+    run_name = Path(run_python or sys.executable).name
+    by_python: dict[str, list[str]] = {}
+    for file in results:
+        for note in file.notes:
+            if note.startswith(VERIFIED_UNDER):
+                name = note[len(VERIFIED_UNDER):].split(" ", 1)[0]
+                if name != run_name:
+                    by_python.setdefault(name, []).append(file.path)
+    return [f"{counted(len(files), 'file')} need{'s' if len(files) == 1 else ''} a newer "
+            f"Python than {run_version}: verified under {name}, the oldest found that "
+            f"reads {'it' if len(files) == 1 else 'them'} ({', '.join(files)})"
+            for name, files in sorted(by_python.items())]
 
 
 @dataclass

@@ -76,14 +76,6 @@ def _pyenv_root() -> Path:
     return Path(os.environ.get("PYENV_ROOT") or Path.home() / ".pyenv")
 
 
-def installed_newer() -> list[str]:
-    """Every ``python3.X`` newer than this one that ``find_python`` finds (PATH or pyenv),
-    newest first: where to look for an interpreter to name in a hint."""
-    found = (find_python(f"3.{minor}") for minor in
-             range(sys.version_info.minor + 20, sys.version_info.minor, -1))
-    return [python for python in found if python is not None]
-
-
 def _patch(release: str) -> int:
     """18 for ``3.8.18``; -1 for a name that is no plain release (``3.8-dev``)."""
     last = release.rsplit(".", 1)[-1]
@@ -110,16 +102,6 @@ def rdflib_version() -> str:
         return "unknown"
 
 
-def newer_interpreters() -> list[str]:
-    """``python3.X`` on PATH with X above this Python's minor version, newest first."""
-    found = []
-    for minor in range(sys.version_info.minor + 20, sys.version_info.minor, -1):
-        path = shutil.which(f"python3.{minor}")
-        if path is not None:
-            found.append(path)
-    return found
-
-
 def describe(python: str) -> str:
     """``python3.13 (/usr/bin/python3.13)`` for the report."""
     name = Path(python).name
@@ -143,16 +125,18 @@ def compiles(python: str, sources: Sequence[bytes]) -> bool:
         return run.returncode == 0
 
 
-def newest_that_compiles(sources: Sequence[bytes]) -> str | None:
-    """The newest ``python3.X`` on PATH that compiles every source, or None."""
-    return next((p for p in newer_interpreters() if compiles(p, sources)), None)
+def oldest_that_compiles(sources: Sequence[bytes], above: str | None = None) -> str | None:
+    """The oldest ``python3.X`` (on PATH, else in pyenv's versions folder) newer than
+    ``above`` (an interpreter; None: this one) that compiles every source, or None.
+
+    The oldest, not the newest: a ROS 2 package whose files need 3.12 runs on Jazzy (3.12),
+    not on whatever newest Python the developer has, and verifying is worth most under the
+    Python closest to the robot's."""
+    minor = int(version_of(above).split(".")[1]) if is_foreign(above) else \
+        sys.version_info.minor
+    newer = (find_python(f"3.{m}") for m in range(minor + 1, minor + 21))
+    return next((p for p in newer if p is not None and compiles(p, sources)), None)
 
 
-def newer_syntax_hint(sources: Sequence[bytes]) -> str:
-    """What to do about files no interpreter on PATH could load: name one installed
-    elsewhere (pyenv) that reads them, for ``--python``; or say none was found."""
-    python = next((p for p in installed_newer() if compiles(p, sources)), None)
-    if python is None:
-        return ("no newer Python on PATH or in pyenv's versions folder reads it: verify with "
-                "--python naming one that does")
-    return f"{describe(python)} reads it: verify with --python {python}"
+NO_NEWER_PYTHON = ("no newer Python on PATH or in pyenv's versions folder reads it: verify "
+                   "with --python naming one that does")

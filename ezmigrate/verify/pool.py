@@ -20,10 +20,10 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from .interpreters import (
+    NO_NEWER_PYTHON,
     describe,
     is_foreign,
-    newer_syntax_hint,
-    newest_that_compiles,
+    oldest_that_compiles,
     worker_command,
 )
 from .protocol import LoadJob, LoadOutcome
@@ -38,8 +38,11 @@ class PoolConfig:
     memory_mb: int = 2048
     ontology: tuple[str, ...] = ()
     python: str | None = None
-    """The interpreter to load files with (``--python``); None: ours, and for a file with
-    syntax newer than ours, the newest ``python3.X`` on PATH that compiles it."""
+    """The interpreter to load files with (``--python``, or the robot's); None: ours."""
+    python_given: bool = False
+    """``python`` is the user's choice (``--python``, ``[tool.ezmigrate] python``): kept
+    for every file. Otherwise a file with syntax newer than it is loaded again under the
+    oldest ``python3.X`` that compiles it (``interpreters.oldest_that_compiles``)."""
 
 
 class _Stopped(Exception):
@@ -231,11 +234,11 @@ def run_jobs(jobs: Sequence[LoadJob], config: PoolConfig,
         crew.stop()
         raise
     outcomes = [r if r is not None else LoadOutcome("crashed", "no result") for r in results]
-    if config.python is None:
-        _retry_newer_syntax(jobs, outcomes, config)
-    elif is_foreign(config.python):
+    if is_foreign(config.python):
         for outcome in outcomes:
-            outcome.python = describe(config.python)
+            outcome.python = describe(config.python or "")
+    if not config.python_given:
+        _retry_newer_syntax(jobs, outcomes, config)
     return outcomes
 
 
@@ -281,26 +284,46 @@ def run_batched(jobs: Sequence[LoadJob], config: PoolConfig, size: int,
 
 def _retry_newer_syntax(jobs: Sequence[LoadJob], outcomes: list[LoadOutcome],
                         config: PoolConfig) -> None:
-    """Load again, under the newest ``python3.X`` on PATH that compiles them, the files that
-    failed on syntax newer than ours; the outcomes say which interpreter loaded them."""
-    again = [i for i, outcome in enumerate(outcomes) if outcome.newer_syntax]
+    """Load again, under the oldest ``python3.X`` newer than the run's that compiles them,
+    the files that failed on syntax newer than the run's Python; the outcomes say which
+    interpreter loaded them."""
+    again = [i for i, outcome in enumerate(outcomes) if _newer_syntax(outcome, jobs[i], config)]
     if not again:
         return
     sources = [jobs[i].source if jobs[i].source is not None else Path(jobs[i].path).read_bytes()
                for i in again]
-    python = newest_that_compiles([s for s in sources if s is not None])
+    python = oldest_that_compiles([s for s in sources if s is not None], config.python)
     if python is None:
-        hint = newer_syntax_hint([s for s in sources if s is not None])
         for i in again:
-            outcomes[i] = replace(outcomes[i], message=f"{outcomes[i].message} ({hint})")
+            outcomes[i] = replace(outcomes[i], message=f"{outcomes[i].message} "
+                                                       f"({NO_NEWER_PYTHON})")
         return
     try:
-        retried = run_jobs([jobs[i] for i in again], replace(config, python=python))
+        retried = run_jobs([jobs[i] for i in again],
+                           replace(config, python=python, python_given=True))
     except RuntimeError:  # its worker could not start there (no cached index): as it was
         return
     for i, outcome in zip(again, retried, strict=True):
         if outcome.status != "crashed":  # a worker that died there proves nothing
             outcomes[i] = outcome
+
+
+def _newer_syntax(outcome: LoadOutcome, job: LoadJob, config: PoolConfig) -> bool:
+    """Whether the load failed on syntax newer than the interpreter that ran it. Our own
+    worker says so (``newer_syntax``); another interpreter's has no libcst for a second
+    opinion, so a syntax error there counts when libcst, here, reads the file."""
+    if outcome.newer_syntax:
+        return True
+    if not (is_foreign(config.python) and "SyntaxError in " in outcome.message):
+        return False
+    import libcst
+
+    try:
+        libcst.parse_module(job.source if job.source is not None
+                            else Path(job.path).read_bytes())
+    except Exception:  # invalid under every grammar libcst knows: no newer Python helps
+        return False
+    return True
 
 
 def job_for(path: Path, source: bytes | None = None, root: Path | None = None,

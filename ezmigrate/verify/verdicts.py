@@ -14,6 +14,7 @@ from dataclasses import dataclass, replace
 from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.dsl.policy import severity_of
 
+from ..report.reports import VERIFIED_UNDER
 from ..report.results import FileResult, ReviewFinding, SkillResult
 from .compare_files import ClassVerdict, compare_outcomes, load_failure
 from .protocol import LoadOutcome
@@ -177,7 +178,7 @@ def note_stand_ins(notes: list[str], before: LoadOutcome, after: LoadOutcome) ->
     not be resolved and were stood in (on both sides alike, so the comparison still holds;
     a value taken from one would be a stand-in's)."""
     for python in dict.fromkeys(o.python for o in (before, after) if o.python):
-        notes.append(f"verified under {python}")
+        notes.append(f"{VERIFIED_UNDER}{python}")
     names = sorted(set(before.stood_in) | set(after.stood_in))
     if names:
         notes.append("stood in (not found when loading; the same permissive stand-in on both "

@@ -1,9 +1,10 @@
 """Files this Python cannot import are verified under another one.
 
 ``--python PATH`` (or ``[tool.ezmigrate] python``) names it; without it, a file with
-syntax newer than ours is loaded again under the newest ``python3.X`` on PATH that compiles
-it, and the report says which. Needs a second interpreter of 3.12 or later: found on PATH or
-in pyenv's versions folder, else these tests are skipped with the reason.
+syntax newer than ours is loaded again under the oldest newer ``python3.X`` (on PATH, else
+in pyenv's versions folder) that compiles it, and the summary and the report say which.
+Needs a second interpreter of 3.12 or later: found on PATH or in pyenv's versions folder,
+else these tests are skipped with the reason.
 """
 
 from __future__ import annotations
@@ -82,12 +83,30 @@ def test_the_given_interpreter_loads_both_versions(tmp_path):
 
 
 @needs_second
-def test_without_one_the_newest_on_path_that_compiles_the_file_is_used(tmp_path):
+def test_without_one_the_oldest_newer_one_that_compiles_the_file_is_used(tmp_path):
     run, data = _run(tmp_path, env=_path_with(tmp_path, SECOND))
     assert run.returncode == 0, run.stderr
     assert data["skills"][0]["status"] == "converted"
     notes = [n for f in data["files"] for n in f["notes"]]
     assert any(n.startswith("verified under python3.12 (") for n in notes), notes
+    assert ("1 file needs a newer Python than 3." in run.stderr
+            and "verified under python3.12, the oldest found that reads it "
+                "(skills/vision.py)" in run.stderr), run.stderr
+
+
+@needs_second
+def test_the_oldest_of_several_newer_interpreters_is_chosen(tmp_path):
+    """3.12 and 3.13 both read the file: a ROS 2 package that needs 3.12 runs on Jazzy
+    (3.12), so 3.12 verifies it, whichever is newest."""
+    assert SECOND is not None
+    env = _path_with(tmp_path, SECOND)
+    (tmp_path / "bin" / "python3.13").symlink_to(SECOND)  # a newer name, same interpreter
+    (tmp_path / "bin" / "python3.12").unlink()
+    (tmp_path / "bin" / "python3.12").symlink_to(SECOND)
+    _, data = _run(tmp_path, env=env)
+    notes = [n for f in data["files"] for n in f["notes"]]
+    assert any(n.startswith("verified under python3.12 (") for n in notes), notes
+    assert not any("python3.13" in n for n in notes), notes
 
 
 @needs_second
@@ -110,19 +129,18 @@ def test_with_no_newer_interpreter_the_file_is_said_to_need_one(tmp_path):
 
 
 @needs_second
-def test_a_newer_interpreter_off_path_is_named_for_python(tmp_path):
-    """Not on PATH (so not used unasked), but installed by pyenv: the reason names it, with
-    the --python that verifies the file."""
+def test_a_newer_interpreter_installed_by_pyenv_verifies_the_file(tmp_path):
+    """Not on PATH, but in pyenv's versions folder (as robots' Pythons are on a developer's
+    machine): used, and the summary names it."""
     assert SECOND is not None
     installed = tmp_path / "pyenv" / "versions" / "3.12.9" / "bin" / "python3.12"
     installed.parent.mkdir(parents=True)
     installed.symlink_to(SECOND)
     env = dict(_path_with(tmp_path, None), PYENV_ROOT=str(tmp_path / "pyenv"))
     run, data = _run(tmp_path, env=env)
-    assert run.returncode == 1
-    reason = data["skills"][0]["reason"]
-    shown = installed.relative_to(tmp_path)  # the report holds no absolute path
-    assert f"reads it: verify with --python {shown})" in reason, reason
+    assert run.returncode == 0, run.stderr
+    assert data["skills"][0]["status"] == "converted"
+    assert "verified under python3.12, the oldest found that reads it" in run.stderr
 
 
 def test_an_interpreter_that_does_not_exist_is_a_usage_error(tmp_path):
