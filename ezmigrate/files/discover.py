@@ -29,6 +29,10 @@ from ezskiros_runtime.ontology.vendored import VendoredRule, upstream_package
 from .paths import shown
 from .writing import is_temporary_name
 
+ROS_IGNORE_MARKERS = ("CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE")
+"""Files whose presence keeps a folder out of the ROS build (catkin, colcon, ament): what
+the robot never builds is not the lab's skill code either (a test corpus, an old copy)."""
+
 ALWAYS_EXCLUDED = frozenset({".git", ".hg", ".svn", "__pycache__", ".venv", "venv", ".tox",
                              ".mypy_cache", ".ruff_cache", ".pytest_cache", "node_modules",
                              "build", "dist", ".eggs", ".ezmigrate_cache"})
@@ -225,10 +229,19 @@ def _walk(top: Path, roots: list[str], notes: list[str],
                 reason = "symlink loop" if error.errno == errno.ELOOP else error.strerror
                 notes.append(f"{Path(entry.path)}: {reason}, skipped")
                 continue
-            if is_dir and not (vendored is not None and vendored(Path(entry.path))):
+            if is_dir and _ros_ignored(entry.path):
+                notes.append(f"{Path(entry.path)}: skipped, its "
+                             f"{_ros_ignored(entry.path)} keeps it out of the ROS build")
+            elif is_dir and not (vendored is not None and vendored(Path(entry.path))):
                 stack.append(Path(entry.path))
             elif is_file:
                 yield Path(entry.path), target
+
+
+def _ros_ignored(folder: str) -> str | None:
+    """The ROS ignore marker in ``folder`` (``CATKIN_IGNORE``...), or None."""
+    return next((m for m in ROS_IGNORE_MARKERS if os.path.lexists(os.path.join(folder, m))),
+                None)
 
 
 _GIT_DISCOVERY_ENV = ("GIT_DIR", "GIT_WORK_TREE", "GIT_CEILING_DIRECTORIES",

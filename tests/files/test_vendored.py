@@ -179,3 +179,15 @@ def test_vendored_owl_folders_and_launch_files_are_passed_over(lab: Path) -> Non
     assert launch_files(lab) == [lab / "cell" / "robot.launch"]
     # in SkiROS2's own repository, its package's owl/ folder is its own
     assert discover_ontology(std).files == (std / "owl" / "std.owl",)
+
+
+@pytest.mark.parametrize("marker", ["CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE"])
+def test_a_folder_the_ros_build_ignores_is_passed_over_with_a_note(lab: Path,
+                                                                  marker: str) -> None:
+    (lab / "cell" / marker).write_text("")
+    found, notes = discover([lab], include_vendored=True)
+    assert "cell/src/cell/skills.py" not in [c.relative for c in found]
+    assert [n for n in notes if marker in n] == [
+        f"{lab / 'cell'}: skipped, its {marker} keeps it out of the ROS build"]
+    named, _ = discover([lab / "cell"])  # named: the user's choice
+    assert [c.relative for c in named] == ["src/cell/skills.py"]
