@@ -35,6 +35,7 @@ CACHE_FORMAT_VERSION = "2"  # 2: sub-properties add their parents' domains and r
 _INDEX_CODE = (
     "build.py",
     "closure.py",
+    "dtd_guard.py",
     "expressions.py",
     "index.py",
     "loading.py",

@@ -4,6 +4,11 @@ Discovery and reading run on every load (their bytes are the cache key); parsing
 on a cache miss, so rdflib is imported inside `parse_ontology_file` and nowhere else on the
 load path. Parse errors become `OntologyLoadError`s that name the file and, when the parser
 knows it, the line: the user has to open that file and fix it.
+
+Every parse goes through `parse_ontology_file`, so that is where an RDF/XML file's DTD is
+vetted first (`dtd_guard`): a file is untrusted input, and one whose entities nest would
+never finish parsing. A refusal is an `OntologyLoadError` like any other, so a discovered
+file is skipped with one warning and a file named explicitly stops the load.
 """
 
 from __future__ import annotations
@@ -13,6 +18,7 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from .dtd_guard import refusal
 from .errors import OntologyLoadError
 
 if TYPE_CHECKING:
@@ -125,6 +131,8 @@ def parse_ontology_file(entry: OntologyFile) -> Graph:
     import rdflib
 
     formats = (entry.format,) if entry.format else FALLBACK_FORMATS
+    if "xml" in formats:
+        _refuse_unsafe_dtd(entry)
     failures: list[tuple[str, BaseException]] = []
     for fmt in formats:
         graph = rdflib.Graph()
@@ -135,6 +143,19 @@ def parse_ontology_file(entry: OntologyFile) -> Graph:
             continue
         return graph
     raise _load_error(entry, failures)
+
+
+def _refuse_unsafe_dtd(entry: OntologyFile) -> None:
+    """Raise when the file's DTD may not reach rdflib (``dtd_guard`` says why and where)."""
+    found = refusal(entry.data)
+    if found is not None:
+        raise OntologyLoadError(
+            f"{entry.path}:{found.line}: refused before parsing: {found.reason}; an "
+            "ontology file's DTD may only declare flat entities such as "
+            '<!ENTITY owl "http://www.w3.org/2002/07/owl#">',
+            path=str(entry.path),
+            line=found.line,
+        )
 
 
 def _load_error(

@@ -1,0 +1,50 @@
+"""The hostile ontology file of issue 28, part 5, for the tests that write it to a folder.
+
+About 1 KB of RDF/XML whose DTD nests entities ten deep (the "billion laughs": ``&lol9;``
+expands to 10^9 copies of ``lol``) and declares one external entity. rdflib's reader does
+not finish it (it only ever gives up on an expat recent enough to cap amplification, after
+minutes); the runtime must refuse it before parsing. Text, not a file in ``fixtures/``:
+every test writes its own copy to a temporary folder.
+"""
+
+from __future__ import annotations
+
+_LAUGHS = "\n".join(
+    f'  <!ENTITY lol{n} "' + f"&lol{n - 1};" * 10 + '">' for n in range(1, 10))
+
+HOSTILE = f"""\
+<?xml version="1.0"?>
+<!DOCTYPE rdf:RDF [
+  <!ENTITY owl "http://www.w3.org/2002/07/owl#">
+  <!ENTITY lol0 "lol">
+{_LAUGHS}
+  <!ENTITY ext SYSTEM "file:///etc/hostname">
+]>
+<rdf:RDF xmlns:rdf="http://www.w3.org/1999/02/22-rdf-syntax-ns#"
+         xmlns:rdfs="http://www.w3.org/2000/01/rdf-schema#">
+  <rdf:Description rdf:about="http://example.org/x"><rdfs:label>&lol9;&ext;</rdfs:label>
+  </rdf:Description>
+</rdf:RDF>
+"""
+
+NESTED_LINE = 5
+"""The line of ``<!ENTITY lol1 ...>``, the first entity that refers to another: the line a
+refusal names."""
+
+LAB = "http://lab.example.org/ontologies/lab.owl#"
+FLAT = f"""\
+<?xml version="1.0"?>
+<!DOCTYPE rdf:RDF [
+    <!ENTITY owl "http://www.w3.org/2002/07/owl#" >
+    <!ENTITY lab '{LAB}' >
+    <!-- a comment, and flat entities only: what OWL tools write -->
+]>
+<rdf:RDF xmlns:rdf="http://www.w3.org/1999/02/22-rdf-syntax-ns#"
+         xmlns:rdfs="http://www.w3.org/2000/01/rdf-schema#">
+  <rdf:Description rdf:about="&lab;Workstation">
+    <rdf:type rdf:resource="&owl;Class"/>
+    <rdfs:subClassOf rdf:resource="http://rvmi.aau.dk/ontologies/skiros.owl#Location"/>
+  </rdf:Description>
+</rdf:RDF>
+"""
+"""A lab ontology with a DTD as OWL tools write it (flat abbreviations): it must load."""
