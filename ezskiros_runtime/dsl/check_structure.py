@@ -13,8 +13,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from ..diagnostics import did_you_mean
 from ..model import typed
 from ..notation import render_condition
+from ..ontology.suggest import closest_names
 from .check_context import ROBOT_KEY, CheckContext
 from .collectors import Recorded
 
@@ -59,16 +61,23 @@ def check_inferable(ctx: CheckContext) -> None:
 
 
 def check_declared(ctx: CheckContext) -> None:
-    """Conditions refer only to declared keys (or SkiROS2's automatic Robot)."""
+    """Conditions refer only to declared keys (or SkiROS2's automatic Robot).
+
+    Only ``self.param("key")`` can name another key, and a faithful migration keeps a
+    legacy typo there verbatim (``"Hreon"`` beside a parameter ``Hero``), so the closest
+    declared keys are suggested, ranked as misspelt vocabulary is."""
+    declared = (*ctx.params, ROBOT_KEY)
     for record in ctx.trace.recorded:
         for key in dict.fromkeys(record.condition.param_keys()):
             if key in ctx.params or key == ROBOT_KEY:
                 continue
+            hints = tuple(closest_names(key, declared))
             ctx.add("undeclared_parameter",
                     f"{record.which}-condition {record.condition.final_label} refers to "
                     f"{key!r}, which the description does not declare (SkiROS2 keeps the "
-                    "condition, but nothing can ever bind that key)", record.file,
-                    record.line, param=key)
+                    "condition, but nothing can ever bind that key)"
+                    f"{did_you_mean(hints)}", record.file, record.line, param=key,
+                    suggestions=hints)
 
 
 def check_contradictions(ctx: CheckContext) -> None:
