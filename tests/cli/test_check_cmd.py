@@ -62,9 +62,10 @@ def test_legacy_children_of_a_migrated_base_are_reported(tmp_path: Path, layout:
 
     output = run.stdout + run.stderr
     assert run.returncode == 1, output  # NavigateSlow converts: it should have been
-    # issue 11: `path:line:col: CODE Skill: message`
+    # issue 11: `path:line:col: CODE [severity] Skill: message`
     lines = {line.split(": ")[1].split()[-1]: line for line in output.splitlines()
              if "skills.py:" in line}
-    assert "EZ901 NavigateSlow: legacy description not migrated yet" in lines["NavigateSlow"]
-    assert "EZ902 NavigateTwice: legacy description kept, not checked: a loop" \
+    assert "EZ901 [error] NavigateSlow: legacy description not migrated yet" \
+        in lines["NavigateSlow"]
+    assert "EZ902 [info] NavigateTwice: legacy description kept, not checked: a loop" \
         in lines["NavigateTwice"], lines

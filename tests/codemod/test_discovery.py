@@ -171,7 +171,11 @@ def test_children_of_a_base_an_earlier_run_migrated_are_counted(tmp_path: Path, 
 
     run = cli("rewrite", folder)
 
-    assert "3 skills found, 1 converted, 2 skipped" in run.stderr, run.stderr
+    # the EzSkiROS classes an earlier run wrote count as unchanged, as the report counts them
+    # (Navigate, and in the same file NavigateImpl, which derives from it there)
+    earlier = 2 if layout == "same file" else 1
+    assert (f"{3 + earlier} skills found, 1 converted, 2 skipped, 0 failed, {earlier} "
+            "unchanged") in run.stderr, run.stderr
     assert run.returncode == 0  # skipped with reasons: the run did its work
     reasons = _reasons(run.stderr)
     assert reasons["NavigateTwice"].startswith("skipped: a loop"), reasons

@@ -144,10 +144,13 @@ class Legacy(SkillDescription):
 
 
 def _load_error(tmp_path: Path, name: str, data: bytes) -> str:
-    """The stderr of ``verify`` on a file that does not compile against a version that does."""
+    """The stderr of ``verify`` on a file that does not compile against a version that does,
+    with no other Python to be found (none on PATH but ours, no pyenv): nothing loads it."""
     before = tree(tmp_path / "before", {name: data})
     after = tree(tmp_path / "after", {name: HEADER})
-    run = cli("verify", before, after)
+    alone = {"PYENV_ROOT": str(tmp_path / "no-pyenv"),
+             "PATH": os.pathsep.join([str(Path(sys.executable).parent), "/usr/bin", "/bin"])}
+    run = cli("verify", before, after, env=alone)
     assert run.returncode == 2, run.stderr
     return run.stderr
 
