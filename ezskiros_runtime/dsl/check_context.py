@@ -57,9 +57,14 @@ class CheckContext:
         return self.trace.skill
 
     def add(self, kind: str, message: str, file: str | None, line: int | None,
-            **details: Any) -> None:
-        """Record a finding unless policy switched its kind off."""
+            unresolved: bool = False, **details: Any) -> None:
+        """Record a finding unless policy switched its kind off. ``unresolved``: the check
+        could not decide (a prefix no loaded file defines: the lab's ontology may simply
+        not be loaded here), so the finding is ``info``, which the robot does not print and
+        strict mode does not raise."""
         severity = severity_of(kind)
+        if unresolved and severity != "off":
+            severity = "info"
         if severity != "off":
             self.findings.append(Finding(kind, severity, message, file, line, self.skill,
                                          **details))

@@ -59,9 +59,15 @@ def _other_kind(ctx: CheckContext, name: str) -> str | None:
     return _PROPERTY_NOUNS.get(info.kind) if info is not None else None
 
 
-def _unknown_reason(ctx: CheckContext, name: str, what: str) -> str:
+def _undefined_prefix(ctx: CheckContext, name: str) -> bool:
+    """Whether ``name``'s prefix is one no loaded file defines (a full IRI has none)."""
     prefix = normalized_name(ctx.index, name).partition(":")[0]
-    if prefix not in ctx.index.prefixes and "://" not in name:
+    return prefix not in ctx.index.prefixes and "://" not in name
+
+
+def _unknown_reason(ctx: CheckContext, name: str, what: str) -> str:
+    if _undefined_prefix(ctx, name):
+        prefix = normalized_name(ctx.index, name).partition(":")[0]
         return f"{what} {name}: prefix {prefix!r} is not defined by the loaded ontology"
     other = _other_kind(ctx, name)
     if other is not None:
@@ -81,8 +87,8 @@ def check_parameter_classes(ctx: CheckContext) -> None:
         file, line = ctx.param_location(spec.name)
         ctx.add("unknown_vocabulary",
                 f"parameter {spec.key}: {_unknown_reason(ctx, name, 'class')}"
-                f"{did_you_mean(hints)}", file, line, param=spec.key, actual=name,
-                suggestions=hints)
+                f"{did_you_mean(hints)}", file, line, _undefined_prefix(ctx, name),
+                param=spec.key, actual=name, suggestions=hints)
 
 
 def _check_condition(ctx: CheckContext, record: Recorded, cond: Cond) -> None:
@@ -116,7 +122,8 @@ def _check_condition(ctx: CheckContext, record: Recorded, cond: Cond) -> None:
                    f"{did_you_mean(hints)}")
     else:
         message = f"{_unknown_reason(ctx, cond.vocabulary, what)}{did_you_mean(hints)}"
-    ctx.add("unknown_vocabulary", message, record.file, record.line, param=cond.subject,
+    ctx.add("unknown_vocabulary", message, record.file, record.line,
+            note is None and _undefined_prefix(ctx, cond.vocabulary), param=cond.subject,
             relation=cond.vocabulary if what != "class" else None,
             actual=cond.vocabulary, suggestions=hints)
 
