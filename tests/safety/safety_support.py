@@ -34,6 +34,16 @@ def cli(*args: str | Path, cwd: Path | None = None, timeout: float = 900,
         capture_output=True, text=True, timeout=timeout, check=False, preexec_fn=preexec_fn)
 
 
+def no_newer_python(folder: Path) -> dict[str, str]:
+    """An environment in which no Python but ours can be found (PATH holds only its folder
+    and the system's, pyenv's root is empty): a file with newer syntax stays unimportable,
+    instead of being verified under the oldest newer Python that reads it."""
+    import os
+
+    return {**os.environ, "PYENV_ROOT": str(folder / "no-pyenv"),
+            "PATH": os.pathsep.join([str(Path(sys.executable).parent), "/usr/bin", "/bin"])}
+
+
 def start_cli(*args: str | Path, cwd: Path | None = None,
               env: dict[str, str] | None = None) -> subprocess.Popen[str]:
     """Start ``python -m ezmigrate ARGS`` without waiting (for the signal tests)."""

@@ -10,7 +10,15 @@ import shutil
 import subprocess
 
 import pytest
-from safety_support import BROKEN, ISOLATION, LEGACY, assert_no_traceback, cli, copy_fixtures
+from safety_support import (
+    BROKEN,
+    ISOLATION,
+    LEGACY,
+    assert_no_traceback,
+    cli,
+    copy_fixtures,
+    no_newer_python,
+)
 
 
 @pytest.fixture(scope="module")
@@ -96,7 +104,8 @@ def test_verify_command_over_messy_files_shows_no_traceback(messy, tmp_path):
 def test_stdin_mode_passes_a_broken_file_through_whole(name, tmp_path):
     data = (BROKEN / name).read_bytes()
     run = subprocess.run([*_python_m(), "rewrite", "-"], input=data, capture_output=True,
-                         timeout=300, check=False, cwd=tmp_path)  # no owl/ folder around
+                         timeout=300, check=False, cwd=tmp_path,  # no owl/ folder around
+                         env=no_newer_python(tmp_path))  # the PEP 701 file stays unloadable
     assert run.returncode == 1
     assert run.stdout == data  # an editor replacing its buffer with our output loses nothing
     assert_no_traceback(run.stderr.decode("utf-8", "replace"))

@@ -16,6 +16,7 @@ from safety_support import (
     copy_fixtures,
     expected_migration,
     libcst_parses,
+    no_newer_python,
     python_parses,
 )
 
@@ -66,7 +67,8 @@ def test_pep701_file_is_rewritten_without_verification(folder):
 @pytest.mark.skipif(sys.version_info >= (3, 12), reason="PEP 701 f-strings import on 3.12+")
 def test_pep701_file_with_verification_cannot_import_and_is_left_alone(folder):
     path, originals = folder
-    run = cli("rewrite", path / "fstring_pep701.py", "--timeout", "60")
+    run = cli("rewrite", path / "fstring_pep701.py", "--timeout", "60",
+              env=no_newer_python(path))
     assert run.returncode == 1
     assert_no_traceback(run.stderr, run.stdout)
     line = _line_for(run.stderr, path / "fstring_pep701.py")
