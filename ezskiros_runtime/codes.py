@@ -34,6 +34,10 @@ class Rule:
 
     ``enabled`` is False for rules that run only when selected (``--select EZ901``):
     "not migrated yet" is news only for a repository that finished migrating.
+
+    This is the one place a rule lives: the runtime's policy (``dsl/policy.py``), the
+    findings of every pass, docs/rules.md and the README's tables take its severity from
+    here, and tests hold them to it.
     """
 
     code: str
@@ -43,6 +47,10 @@ class Rule:
     fix: str
     kinds: tuple[str, ...] = ()
     enabled: bool = True
+    skiros2: str = ""
+    """What SkiROS2 does when the finding's mistake runs (the function that raises, drops
+    or misbehaves): every error names one, since an error in CI must mean SkiROS2 will
+    certainly fail or misbehave."""
 
     @property
     def group(self) -> str:
@@ -85,32 +93,50 @@ RULES: tuple[Rule, ...] = (
     Rule("EZ106", "default-type", "error",
          "The default value does not fit the parameter's declared type.",
          "Change the default or the annotation so that they agree.",
-         ("default-type",)),
+         ("default-type",),
+         skiros2="ezskiros_runtime raises SkillTypeError when the skill manager instantiates the "
+         "description (SkillManager.add_skill), so the skill is not loaded"),
     Rule("EZ107", "contradiction", "error",
          "One condition list wants the same fact true and false (or two different values), "
          "so it can never hold.",
          "Delete one of the two conditions.",
-         ("contradiction",)),
+         ("contradiction",),
+         skiros2="SkillCore.checkPreCond can never pass (NodeExecutor._ground fails the skill "
+         "every time); in post-conditions, SkillCore.checkPostCond turns every success "
+         "into a failure (NodeExecutor.postExecute)"),
     Rule("EZ108", "description-error", "error",
          "The EzSkiROS DSL is used in a way that cannot be lowered (`*args`, `~` on is_a, a "
          "malformed marker).",
          "Follow the message; docs/dsl.md lists the accepted forms.",
-         ("description",)),
+         ("description",),
+         skiros2="ezskiros_runtime raises SkillTypeError when the skill manager instantiates the "
+         "description (SkillManager.add_skill), so the skill is not loaded"),
     # EZ2xx: vocabulary and ontology
     Rule("EZ201", "domain", "error",
          "The subject's class is outside the relation's or property's domain.",
          "Use a relation whose domain contains the parameter's class, or change its type.",
-         ("domain",)),
+         ("domain",),
+         skiros2="no element of the parameter's class can take part in the relation: "
+         "ezskiros_runtime refuses the description when SkillManager.add_skill "
+         "instantiates it, and a legacy pre-condition never holds in "
+         "SkillCore.checkPreCond"),
     Rule("EZ202", "range", "error",
          "The object's class is outside the relation's range.",
          "Use a relation whose range contains the parameter's class, or change its type.",
-         ("range",)),
-    Rule("EZ203", "domain-unproven", "warning",
-         "The subject's class is wider than the domain: the relation may not hold for it.",
+         ("range",),
+         skiros2="no element of the parameter's class can take part in the relation: "
+         "ezskiros_runtime refuses the description when SkillManager.add_skill "
+         "instantiates it, and a legacy pre-condition never holds in "
+         "SkillCore.checkPreCond"),
+    Rule("EZ203", "domain-unproven", "info",
+         "The subject's class is wider than the domain: the relation may not hold for it. "
+         "Modelling advice (info): SkiROS2 grounds whatever the world model holds, and labs "
+         "set such properties on classes outside the declared domain on purpose.",
          "Narrow the parameter's type to a class inside the domain.",
          ("domain-unproven",)),
-    Rule("EZ204", "range-unproven", "warning",
-         "The object's class is wider than the range: the relation may not hold for it.",
+    Rule("EZ204", "range-unproven", "info",
+         "The object's class is wider than the range: the relation may not hold for it. "
+         "Modelling advice (info), as EZ203.",
          "Narrow the parameter's type to a class inside the range.",
          ("range-unproven",)),
     Rule("EZ205", "property-kind", "error",
@@ -118,16 +144,23 @@ RULES: tuple[Rule, ...] = (
          "property.",
          "Use a relation condition for object properties and a property condition for "
          "datatype properties.",
-         ("property-kind",)),
+         ("property-kind",),
+         skiros2="ConditionRelation looks the name up among relations (Element.getRelations) and "
+         "ConditionProperty among properties (Element.hasProperty): the condition never "
+         "holds, so SkillCore.checkPreCond fails the skill"),
     Rule("EZ206", "value-type", "error",
          "A property condition compares with a value of the wrong Python type for the "
          "property's datatype.",
          "Write the value with the type the property's range asks for.",
-         ("value-type",)),
+         ("value-type",),
+         skiros2="ConditionProperty compares with a value no element holds (Property.isSpecified "
+         "and == across types): the condition never holds in SkillCore.checkPreCond"),
     Rule("EZ207", "operator", "error",
          "An ordering operator (> < >= <=) on a property whose values are not numbers.",
          "Compare with = or use a numeric property.",
-         ("operator",)),
+         ("operator",),
+         skiros2="ConditionProperty orders values with Python's > and <, which raises TypeError on "
+         "strings and booleans of other types, or never holds"),
     Rule("EZ208", "unknown-operator", "warning",
          "An operator outside = > < >= <=, which SkiROS2's world model does not evaluate.",
          "Use one of = > < >= <=.",
@@ -141,7 +174,9 @@ RULES: tuple[Rule, ...] = (
     Rule("EZ210", "ambiguous-vocabulary", "error",
          "A local name that several prefixes define cannot be resolved to one IRI.",
          "Write the name with its prefix (A.relation(\"skiros:name\", B)).",
-         ("ambiguous-vocabulary",)),
+         ("ambiguous-vocabulary",),
+         skiros2="ezskiros_runtime cannot choose the IRI and raises SkillTypeError when "
+         "SkillManager.add_skill instantiates the description"),
     Rule("EZ211", "element-type-unqualified", "warning",
          "An Element type not written as prefix:Name; SkiROS2 stores it verbatim and it "
          "matches no class.",
@@ -151,19 +186,28 @@ RULES: tuple[Rule, ...] = (
          "A prefix that the ontology does not define but that is a typo of one it does "
          "(\"skiros;:Parameter\", \"skirso:Product\").",
          "Correct the prefix.",
-         ("prefix-typo",)),
+         ("prefix-typo",),
+         skiros2="the world model stores the type verbatim: WorldModelInterface.resolve_elements "
+         "matches no element of the misspelt class, so grounding the parameter fails "
+         '(NodeExecutor._autoParametrizeWm: "Can t autoparametrize param")'),
     Rule("EZ213", "class-spelling", "error",
          "An Element type that differs from a class of the ontology only in case or "
          "separators (\"skiros:largebox\" for skiros:LargeBox).",
          "Spell the class exactly as the ontology does.",
-         ("class-spelling",)),
+         ("class-spelling",),
+         skiros2="the world model stores the type verbatim: WorldModelInterface.resolve_elements "
+         "matches no element of the misspelt class, so grounding the parameter fails "
+         '(NodeExecutor._autoParametrizeWm: "Can t autoparametrize param")'),
     # EZ3xx: compound skills (the behaviour trees built in expand)
     Rule("EZ301", "unknown-child-type", "error",
          "A child type that no loadable description matches; the compound skill fails when "
          "it runs (\"No plugin with name ... found\").",
          "Fix the type name (see the suggestion), or add the library that defines it to "
          "[tool.ezmigrate] skill-libraries.",
-         ("unknown-child-type",)),
+         ("unknown-child-type",),
+         skiros2="SkillInstanciator finds no description or instance of the type: PluginLoader.get "
+         'raises "No plugin with name ... found!", or NodeExecutor.init raises "Skill ... '
+         'is not available" when the compound skill runs'),
     Rule("EZ302", "regex-child-type", "warning",
          "A child type that matches a description only as a regular expression (\"Pick()\"); "
          "SkiROS2 matches types with re.match, so it works by accident.",
@@ -173,12 +217,16 @@ RULES: tuple[Rule, ...] = (
          "The label names an implementation of another description type; SkiROS2 runs it "
          "without a check (upstream issue #80).",
          "Use a label that implements the child's type, or change the type.",
-         ("label-other-type",)),
+         ("label-other-type",),
+         skiros2="SkillInstanciator.assign_instance takes the labelled implementation of the other "
+         "type without a check (upstream issue #80): the child runs another skill's code"),
     Rule("EZ304", "remap-key-unknown", "error",
          "A remap key that neither the child nor anything below it declares: the remap does "
          "nothing (often a key renamed on one side only).",
          "Use the child's parameter name (see the suggestion), or delete the remap.",
-         ("remap-key-unknown",)),
+         ("remap-key-unknown",),
+         skiros2="SkillInterface.remap renames only keys the node and its children hold "
+         "(ParamHandler.remap): nothing is renamed, so the value never reaches the child"),
     Rule("EZ305", "remap-key-descendant", "info",
          "A remap key declared only below the child (by a grandchild): SkiROS2 passes the "
          "remap down, which is easy to miss when reading the tree.",
@@ -188,16 +236,21 @@ RULES: tuple[Rule, ...] = (
          "A remap onto a key the child already declares; SkiROS2 rejects it and renames "
          "nothing.",
          "Remap onto another key, or drop one of the child's parameters.",
-         ("remap-onto-declared",)),
+         ("remap-onto-declared",),
+         skiros2='SkillInterface.remap logs "Invalid remapping ... target key is already present" '
+         "and returns without renaming"),
     Rule("EZ307", "specify-key-unknown", "error",
          "A specify key the child does not declare after remapping; SkiROS2 drops the value "
          "(Wait given Time instead of Duration).",
          "Use the child's parameter name after remapping (see the suggestion).",
-         ("specify-key-unknown",)),
-    Rule("EZ308", "remap-dangling", "warning",
+         ("specify-key-unknown",),
+         skiros2='SkillCore.specifyParamDefault logs "No param ... found" and '
+         "ParamHandler.specifyDefault drops the value"),
+    Rule("EZ308", "remap-dangling", "info",
          "A remap value that no parameter of the compound skill and no other node of its "
          "tree declares: the child's parameter connects to nothing, unless something "
-         "outside the tree writes that blackboard key (a warning, not an error).",
+         "outside the tree writes that blackboard key (info: skills inserted at run time "
+         "and BbUnsetParam of an absent key do exactly that).",
          "Remap onto a parameter of the compound skill (see the suggestion) or one that "
          "another child writes.",
          ("remap-dangling",)),
@@ -209,17 +262,20 @@ RULES: tuple[Rule, ...] = (
          "be traced.",
          "Call a node with its children (self.skill(...)(child, ...)); spell the keywords "
          "as SkiROS2's self.skill(stype, slabel, remap, specify, preconditions).",
-         ("compound-call-shape",)),
+         ("compound-call-shape",),
+         skiros2="SkillBase.skill raises TypeError (an unknown keyword, a node as type) or "
+         "attaches nothing when expand runs, and the compound skill fails"),
     Rule("EZ310", "processor-not-upstream", "info",
          "A processor that SkiROS2's master and ros2 branches do not have (RetryOnFail is "
          "the ros2_roscon24_workshop branch's; Loop, InferInvalid are forks'). Reported "
          "once per project, naming where it exists.",
          "Use an upstream processor, or accept the dependency on the fork.",
          ("processor-not-upstream",)),
-    Rule("EZ311", "remap-disjoint", "warning",
-         "A remap between element parameters whose classes can never hold the same element "
-         "(disjoint in the class hierarchy). A warning: passing an element between "
-         "parameters of different classes is a blackboard idiom real trees use on purpose.",
+    Rule("EZ311", "remap-disjoint", "info",
+         "A remap between element parameters whose classes share no subclass in the loaded "
+         "ontology. Info: OWL does not make them disjoint without an axiom, and passing an "
+         "element between parameters of different classes is a blackboard idiom real trees "
+         "use on purpose.",
          "Remap onto a parameter of a compatible class, or fix one of the two types.",
          ("remap-disjoint",)),
     Rule("EZ312", "remap-narrower", "info",
@@ -238,12 +294,16 @@ RULES: tuple[Rule, ...] = (
          "further, so the value never reaches that node.",
          "Remap the key's new name (the one the node below gave it), or drop one of the two "
          "remaps.",
-         ("remap-key-remapped-below",)),
+         ("remap-key-remapped-below",),
+         skiros2='SkillInterface.remap logs "Key ... already remapped ... Can t remap" on the node '
+         "below and returns, so the value never reaches it"),
     Rule("EZ315", "specify-parameter-object", "error",
          "A specify value that is the parameter object self.params[\"X\"] rather than "
          "its value: SkiROS2 logs an error and leaves the child's parameter unset.",
          "Write self.params[\"X\"].value.",
-         ("specify-parameter-object",)),
+         ("specify-parameter-object",),
+         skiros2="ParamHandler.specifyDefault is given a Param where it wants values: "
+         "Param.setValues logs an error and the child's parameter stays unset"),
     Rule("EZ316", "child-not-launched", "info",
          "A child type whose implementations the launch file's skill_list does not load "
          "(the launch file may not be the one the robot uses: info).",
@@ -263,25 +323,35 @@ RULES: tuple[Rule, ...] = (
     Rule("EZ402", "scene-syntax", "error",
          "A world-model scene that is not valid Turtle: the world model cannot load it.",
          "Fix the Turtle at the line named.",
-         ("scene-syntax",)),
-    Rule("EZ403", "scene-two-parents", "error",
+         ("scene-syntax",),
+         skiros2="WorldModel.load_context cannot parse the file (rdflib raises), so the world "
+         "model does not start with the scene"),
+    Rule("EZ403", "scene-two-parents", "warning",
          "An element with two spatial parents (sub-properties of skiros:spatiallyRelated: "
-         "contain, hasA); SkiROS2 reads the scene as a tree, one parent per element.",
+         "contain, hasA) whose parent something reads: its pose, in a frame of its own, is "
+         "expressed in whichever parent comes first. An element without a pose of its own "
+         "only shows twice in the GUI's tree (info), and a property declared a "
+         "sub-property of spatiallyRelated that gives many elements a second parent is one "
+         "finding at its declaration.",
          "Keep one of the two relations.",
-         ("scene-two-parents",)),
+         ("scene-two-parents", "scene-spatial-declaration"),
+         skiros2="AauSpatialReasoner._getParentFrame takes the first spatial relation "
+         "(Element.getRelation) as the parent frame of the element's pose"),
     Rule("EZ404", "scene-dangling", "warning",
          "A relation whose object is defined nowhere in the scene: the world model holds a "
          "reference to nothing.",
          "Define the element in the scene, or fix the name.",
          ("scene-dangling",)),
-    Rule("EZ405", "scene-domain-range", "error",
+    Rule("EZ405", "scene-domain-range", "info",
          "A relation between elements whose classes lie outside its domain or range (with "
-         "the subclass closure, as in the description checks).",
+         "the subclass closure, as in the description checks). Modelling (info): the world "
+         "model stores the triple and grounding uses it as any other.",
          "Relate elements of the right classes, or fix an element's type.",
          ("scene-domain", "scene-range")),
-    Rule("EZ406", "scene-datatype", "error",
+    Rule("EZ406", "scene-datatype", "warning",
          "A data-property value that does not fit the property's datatype (a float written "
-         "as text, a boolean as a number).",
+         "as text, a boolean as a number): a property condition comparing it with a value "
+         "of the right type never holds.",
          "Write the value with the property's datatype (\"0.5\"^^xsd:float).",
          ("scene-datatype",)),
     Rule("EZ407", "scene-unknown-type", "info",
@@ -307,7 +377,9 @@ RULES: tuple[Rule, ...] = (
          "A legacy description that `ezmigrate rewrite` would convert is still in the "
          "repository (off by default: select it once the migration is finished).",
          "Run `ezmigrate rewrite PATH`.",
-         ("not-migrated",), enabled=False),
+         ("not-migrated",), enabled=False,
+         skiros2="none: kept off by default; selected, it is the repository's own rule that every "
+         "description is migrated"),
     Rule("EZ902", "kept-legacy", "info",
          "A legacy description that cannot be migrated automatically (a loop, a computed "
          "key...) is kept; its description is not statically checked.",
@@ -318,13 +390,17 @@ RULES: tuple[Rule, ...] = (
          "legacy one.",
          "Read the difference in the report; rewrite the description or keep the legacy "
          "form.",
-         ("not-equivalent", "failed")),
+         ("not-equivalent", "failed"),
+         skiros2="none: the migrated skill means something else than the legacy one, so SkiROS2 "
+         "would run a different skill; rewrite never writes it"),
     Rule("EZ904", "unloadable", "error",
          "The module could not be loaded to run the early checks (an exception while "
          "importing it). A load stopped by the sandbox's limits (a timeout, the memory "
          "limit, a crash) says nothing certain about the module: it is reported as info.",
          "Fix the error in the message; run `python -c 'import MODULE'` to reproduce.",
-         ("unloadable",)),
+         ("unloadable",),
+         skiros2="the module raises when the skill manager imports it (SkillManager.load_skills "
+         "through PluginLoader), so none of its skills is loaded"),
     Rule("EZ905", "unreadable", "warning",
          "The file could not be parsed or decoded (Python 2 syntax, an empty or truncated "
          "file), so it was skipped and nothing in it was checked; the class names in it "
@@ -338,13 +414,17 @@ RULES: tuple[Rule, ...] = (
          "stay as it was.",
          "A bug of ezmigrate: report it with the file. Meanwhile migrate that file by hand, "
          "or move the line named out of the way and run again.",
-         ("lossy-rewrite",)),
+         ("lossy-rewrite",),
+         skiros2="none: ezmigrate refused to write the file, which stays as it was"),
 )
 
 BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}
 _BY_KIND: dict[str, Rule] = {kind: rule for rule in RULES for kind in rule.kinds}
-FALLBACK_KIND = "description"
-"""What an unexpected kind is filed under: every finding has a code, even a new one."""
+
+
+class UnknownKind(KeyError):
+    """A finding kind no rule lists: a bug of the pass that emitted it, never filed under
+    some other code (it used to become EZ108, an error, silently)."""
 
 
 def normalize_kind(kind: str) -> str:
@@ -353,8 +433,12 @@ def normalize_kind(kind: str) -> str:
 
 
 def rule_for(kind: str) -> Rule:
-    """The rule of a finding kind (a kind the catalogue does not know is a DSL misuse)."""
-    return _BY_KIND.get(normalize_kind(kind)) or _BY_KIND[FALLBACK_KIND]
+    """The rule of a finding kind; ``UnknownKind`` for a kind no rule lists."""
+    try:
+        return _BY_KIND[normalize_kind(kind)]
+    except KeyError:
+        raise UnknownKind(f"finding kind {kind!r} is listed by no rule of "
+                          "ezskiros_runtime/codes.py") from None
 
 
 def code_for(kind: str) -> str:
@@ -380,5 +464,5 @@ def valid_selector(selector: str) -> bool:
             and any(matches(r.code, selector) for r in RULES))
 
 
-__all__ = ["BY_CODE", "CODE_PATTERN", "GROUPS", "RULES", "Rule", "code_for", "known_kind",
-           "matches", "normalize_kind", "rule_for", "valid_selector"]
+__all__ = ["BY_CODE", "CODE_PATTERN", "GROUPS", "RULES", "Rule", "UnknownKind", "code_for",
+           "known_kind", "matches", "normalize_kind", "rule_for", "valid_selector"]

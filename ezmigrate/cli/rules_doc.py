@@ -33,6 +33,25 @@ def render() -> str:
         "(several: `# ezskiros: ignore[EZ209,EZ201]`). Rules marked *off* run only when "
         "selected.",
         "",
+        "## Severity contract",
+        "",
+        "`check` is a CI gate, and a false error costs more than a missed warning. So:",
+        "",
+        "- **error**: SkiROS2's own code raises, refuses or drops something when the skill "
+        "is loaded or run. The rule names the SkiROS2 function (column *SkiROS2*).",
+        "- **warning**: SkiROS2 runs, and the skill misbehaves at a point the rule names: a "
+        "wrong element grounded, a value that never reaches a child, a planner state that "
+        "becomes false.",
+        "- **info**: advice, modelling, style, and anything the tool cannot resolve (a lab "
+        "prefix another package may define, a file it cannot parse, a tree it cannot trace).",
+        "- **One cause, one finding.** A declaration that gives many elements the same "
+        "problem is one finding at the declaration; a prefix, a missing scene file or a lab "
+        "idiom is reported once per project.",
+        "",
+        "A rule's severity is the most its findings get: a finding whose rule depends on "
+        "something this run cannot see or that does not hold there (a parameter nothing "
+        "reads, an element without a pose) is reported as info, and its message says why.",
+        "",
     ]
     for prefix, title in GROUPS.items():
         rules = [r for r in RULES if r.code.startswith(prefix)]
@@ -40,11 +59,12 @@ def render() -> str:
         if not rules:
             out += ["Reserved; no codes yet.", ""]
             continue
-        out += ["| code | name | severity | why | fix |", "|---|---|---|---|---|"]
+        out += ["| code | name | severity | why | fix | SkiROS2 |",
+                "|---|---|---|---|---|---|"]
         for r in rules:
             severity = r.severity if r.enabled else f"{r.severity} (off)"
             out.append(f"| {r.code} | {r.name} | {severity} | {_cell(r.rationale)} | "
-                       f"{_cell(r.fix)} |")
+                       f"{_cell(r.fix)} | {_cell(r.skiros2)} |")
         out.append("")
     out += precision_section()
     return "\n".join(out)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -87,11 +87,37 @@ def read_scenes(paths: Iterable[Path], index: OntologyIndex | None) -> list[Scen
     return out
 
 
+def once_per_project(per_scene: list[list[WorldFinding]]) -> list[list[WorldFinding]]:
+    """The scenes' findings with each declaration-caused EZ403 (a property the ontology
+    makes spatial, the finding's subject) kept at its first scene only, counting the
+    others: one cause, one finding."""
+    first: dict[str, tuple[int, int]] = {}
+    others: dict[str, int] = {}
+    kept: list[list[WorldFinding]] = []
+    for number, found in enumerate(per_scene):
+        mine: list[WorldFinding] = []
+        for f in found:
+            if f.kind == "scene-spatial-declaration":
+                if f.subject in first:
+                    others[f.subject] = others.get(f.subject, 0) + 1
+                    continue
+                first[f.subject] = (number, len(mine))
+            mine.append(f)
+        kept.append(mine)
+    for subject, count in others.items():
+        number, at = first[subject]
+        f = kept[number][at]
+        kept[number][at] = replace(f, message=f"{f.message}; the same in {count} other "
+                                              f"scene(s), reported once")
+    return kept
+
+
 def diagnostics_of(found: Iterable[WorldFinding], text: str, skill: str = ""
                    ) -> list[Diagnostic]:
     """World findings of one file as diagnostics (columns from ``text``)."""
     where = Positions(text)
-    return [diagnostic(f.path, where, f.kind, f.line, f.message, skill, f.fix) for f in found]
+    return [diagnostic(f.path, where, f.kind, f.line, f.message, skill, f.fix, f.lowered)
+            for f in found]
 
 
 def legacy_double_places(path: str, skill: str, facts: StaticDescription,
@@ -206,9 +232,10 @@ def world_diagnostics(run: WorldRun, legacy: Iterable[tuple[str, FileResult]],
         for f in ezskiros_double_places(path, sources.get(path, ""), found, index, entries):
             out += diagnostics_of([f], sources.get(path, ""), f.subject)
         models += [(path, m.name, m.line or 0, m) for m in found]
-    for read in read_scenes(run.scenes, index):
+    reads = read_scenes(run.scenes, index)
+    for read, kept in zip(reads, once_per_project([r.findings for r in reads]), strict=True):
         sources[str(read.path)] = read.text
-        out += diagnostics_of(read.findings, read.text)
+        out += diagnostics_of(kept, read.text)
     if run.start_scene is not None and index is not None:
         out += _start_diagnostics(run.start_scene, models, index, sources)
     return out

@@ -1,9 +1,10 @@
 """How serious each kind of finding is: defaults, strict mode, per-kind overrides.
 
-The paper's rule: type violations are errors (the skill must not load), unknown vocabulary
-is a warning (SkiROS2 accepts it, and real projects use vocabulary from files we may not
-have). Strict mode turns every finding into an error, for CI. ``collecting()`` lets
-``check()`` and the migrator load a description without raising, to *report* instead.
+The defaults are the catalogue's (``codes.RULES``): the paper's rule that type violations
+are errors (the skill must not load) and unknown vocabulary a warning (SkiROS2 accepts it,
+and real projects use vocabulary from files we may not have) is written there, once.
+Strict mode turns every finding into an error, for CI. ``collecting()`` lets ``check()``
+and the migrator load a description without raising, to *report* instead.
 """
 
 from __future__ import annotations
@@ -14,25 +15,15 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 from types import TracebackType
 
+from ..codes import RULES, rule_for
+
 STRICT_ENV = "EZSKIROS_STRICT"
 LEVELS: tuple[str, ...] = ("error", "warning", "info", "off")
 
 DEFAULT_SEVERITY: dict[str, str] = {
-    "domain": "error",             # subject's class outside the relation/property domain
-    "range": "error",              # object's class outside the relation range
-    "domain_unproven": "warning",  # subject's class wider than the domain: may not hold
-    "range_unproven": "warning",   # object's class wider than the range: may not hold
-    "property_kind": "error",      # relation over a datatype property, or the reverse
-    "value_type": "error",         # property value of the wrong Python type
-    "operator": "error",           # > < >= <= on a non-numeric property
-    "default_type": "error",       # default does not fit the annotation
-    "contradiction": "error",      # same condition wanted true and false in one list
-    "ambiguous_vocabulary": "error",  # A.name defined under several prefixes
-    "unknown_vocabulary": "warning",  # not in the loaded ontology (SkiROS2 accepts it)
-    "unknown_operator": "warning",    # operator outside = > < >= <=
-    "uninferable": "warning",         # INFERRED parameter no pre-condition mentions
-    "undeclared_parameter": "warning",  # condition on a key nobody declares
-}
+    kind.replace("-", "_"): rule.severity for rule in RULES for kind in rule.kinds}
+"""Each finding kind's severity, in the runtime's spelling (``range_unproven``), as the one
+catalogue (``codes.RULES``) gives it: nothing here is typed by hand."""
 
 _overrides: dict[str, str] = {}
 _strict: list[bool | None] = [None]
@@ -78,12 +69,13 @@ def set_severity(kind: str, level: str | None) -> None:
         return
     if level not in LEVELS:
         raise ValueError(f"severity {level!r}: expected one of {', '.join(LEVELS)}")
+    rule_for(kind)  # a kind no rule lists is a typo: UnknownKind, never a silent override
     _overrides[kind] = level
 
 
 def severity_of(kind: str) -> str:
     """The effective level: an explicit ``"off"`` stays off, strict makes the rest errors."""
-    level = _overrides.get(kind, DEFAULT_SEVERITY.get(kind, "warning"))
+    level = _overrides.get(kind) or rule_for(kind).severity
     if level == "off":
         return level
     return "error" if is_strict() else level

@@ -19,6 +19,9 @@ class WorldFinding:
     message: str
     subject: str = ""
     fix: str | None = None
+    lowered: str | None = None
+    """``info`` when the rule's condition for its own severity does not hold here (the
+    catalogue's severity is the most a finding gets; docs/rules.md, severity contract)."""
 
     @property
     def code(self) -> str:
@@ -26,16 +29,19 @@ class WorldFinding:
 
     @property
     def severity(self) -> str:
-        return rule_for(self.kind).severity
+        return self.lowered or rule_for(self.kind).severity
 
     def __str__(self) -> str:
         return f"{self.path}:{self.line}: {self.code} {self.message}"
 
 
 def finding(kind: str, path: str, line: int, message: str, subject: str = "",
-            fix: str | None = None) -> WorldFinding:
-    """A finding of a catalogue kind (the catalogue test reads the kinds passed here)."""
-    return WorldFinding(kind, path, line, message, subject, fix)
+            fix: str | None = None, severity: str | None = None) -> WorldFinding:
+    """A finding of a catalogue kind (the catalogue test reads the kinds passed here);
+    ``severity`` lowers it to info (see ``WorldFinding.lowered``)."""
+    if severity not in (None, "info"):
+        raise ValueError(f"a finding is only ever lowered to info, not to {severity!r}")
+    return WorldFinding(kind, path, line, message, subject, fix, severity)
 
 
 __all__ = ["WorldFinding", "finding"]

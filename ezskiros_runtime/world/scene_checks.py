@@ -18,7 +18,15 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from .findings import WorldFinding, finding
-from .scene import XSD, Scene, SceneError, Value, ontology_individuals, read_scene
+from .scene import (
+    XSD,
+    Relation,
+    Scene,
+    SceneError,
+    Value,
+    ontology_individuals,
+    read_scene,
+)
 from .vocabulary import (
     BOOKKEEPING_CLASSES,
     BOOKKEEPING_PROPERTIES,
@@ -30,6 +38,10 @@ if TYPE_CHECKING:
     from ..ontology.index import OntologyIndex
 
 SCENE_CLASS = SKIROS + "Scene"
+CORE_SPATIAL = frozenset({SKIROS + "contain", SKIROS + "hasA", SKIROS + "spatiallyRelated"})
+"""The core's spatial properties; another one in ``spatial_properties`` is the lab's."""
+POSE = ("FrameId", "PositionX", "PositionY", "PositionZ")
+"""Properties that give an element a pose of its own (the spatial reasoner publishes it)."""
 _NUMBERS = ("float", "double", "decimal")
 _INTEGERS = ("int", "integer", "long", "short", "byte", "nonNegativeInteger",
              "positiveInteger", "unsignedInt", "unsignedLong")
@@ -103,23 +115,51 @@ class _SceneChecker:
         return self.index.compact(iri) if self.index is not None else self.name(iri)
 
     def parents(self) -> list[WorldFinding]:
+        """Elements with two spatial parents. Through the core's ``contain``/``hasA``: a
+        warning for an element with a pose of its own (its frame is re-expressed in the
+        first parent found), info for one without (a second node in the GUI's tree).
+        Through a property the lab's ontology makes spatial (``adjacentLocation`` between
+        rooms and doors): one info finding per property at its first use here, counting
+        the elements it gives a second parent, since one declaration is the cause."""
         seen: dict[str, list[str]] = {}
         found = []
+        declared: dict[str, list[Relation]] = {}
         for r in sorted(self.scene.relations, key=lambda r: r.line):
             if r.property not in self.spatial:
                 continue
             first = seen.setdefault(r.object, [])
             if first and r.subject not in first:
-                found.append(finding(
-                    "scene-two-parents", self.scene.path, r.line,
-                    f"{self.name(r.object)} has two spatial parents: "
-                    f"{self.name(first[0])} and {self.name(r.subject)} "
-                    f"({self.vocabulary(r.property)}); SkiROS2 reads the scene as a tree, "
-                    "one parent per element", r.object,
-                    f"Keep one of the two relations to {self.name(r.object)}."))
+                if r.property not in CORE_SPATIAL:
+                    declared.setdefault(r.property, []).append(r)
+                else:
+                    found.append(self._two_parents(r, first[0]))
             if r.subject not in first:
                 first.append(r.subject)
+        for prop, uses in declared.items():
+            elements = sorted({self.name(r.object) for r in uses})
+            found.append(finding(
+                "scene-spatial-declaration", self.scene.path, uses[0].line,
+                f"{self.vocabulary(prop)} is a sub-property of skiros:spatiallyRelated in the "
+                f"loaded ontology, so it gives {len(elements)} element(s) of this scene a "
+                f"second spatial parent ({', '.join(elements[:3])}"
+                f"{', ...' if len(elements) > 3 else ''}); SkiROS2 stores every triple, and "
+                "only the GUI's tree shows them twice", prop,
+                f"Declare {self.vocabulary(prop)} outside skiros:spatiallyRelated if it is no "
+                "containment.", severity="info"))
         return found
+
+    def _two_parents(self, r: Relation, first: str) -> WorldFinding:
+        """The finding of ``r.object``'s second parent ``r.subject`` (``first`` the other)."""
+        posed = any(self.scene.values_of(r.object, SKIROS + name) for name in POSE)
+        tail = ("its pose, in a frame of its own, is expressed in whichever parent "
+                "SkiROS2 finds first" if posed else
+                "it has no pose of its own, so only the GUI's tree shows it twice")
+        return finding(
+            "scene-two-parents", self.scene.path, r.line,
+            f"{self.name(r.object)} has two spatial parents: {self.name(first)} and "
+            f"{self.name(r.subject)} ({self.vocabulary(r.property)}); {tail}", r.object,
+            f"Keep one of the two relations to {self.name(r.object)}.",
+            severity=None if posed else "info")
 
     def dangling(self) -> list[WorldFinding]:
         found = []

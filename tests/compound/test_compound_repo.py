@@ -74,8 +74,8 @@ def test_compound_errors_on_the_other_fixture_repositories_are_real() -> None:
               d["code"], d["severity"]) for d in found}
     assert {s for s in shown if s[4] == "error"} == set()
     assert {s for s in shown if s[3] == "EZ311"} == {
-        ("legacy", "mixed_impl.py", 103, "EZ311", "warning"),
-        ("migrated", "mixed_impl.py", 104, "EZ311", "warning")}
+        ("legacy", "mixed_impl.py", 103, "EZ311", "info"),
+        ("migrated", "mixed_impl.py", 104, "EZ311", "info")}
 
 
 def test_the_clean_tasks_use_the_standard_library_and_stay_silent() -> None:

@@ -118,3 +118,37 @@ def test_rules_doc_writes_to_the_path_given_or_prints_with_a_dash(
     assert target.read_text(encoding="utf-8") == rules_doc.render()
     assert rules_doc.main(["-"]) == 0
     assert capsys.readouterr().out == rules_doc.render()
+
+
+def test_the_readme_tables_say_the_catalogues_severities():
+    """A row of a README table that names finding kinds (`` `domain`, `range` | error``) says
+    the severity the catalogue gives each of them: the README is derived, not a fifth home."""
+    import re
+
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    rows = re.findall(r"^\| ((?:`[a-z_-]+`(?:, )?)+) \| (error|warning|info) \|", readme,
+                      flags=re.MULTILINE)
+    assert len(rows) >= 5, "the early-checks table was found"
+    for kinds, severity in rows:
+        for kind in re.findall(r"`([a-z_-]+)`", kinds):
+            assert BY_CODE[code_for(kind)].severity == severity, kind
+
+
+def test_a_kind_no_rule_lists_is_refused_not_filed_elsewhere():
+    from ezskiros_runtime.codes import UnknownKind, rule_for
+    from ezskiros_runtime.dsl.policy import set_severity, severity_of
+
+    with pytest.raises(UnknownKind):
+        rule_for("no-such-kind")
+    with pytest.raises(UnknownKind):
+        severity_of("no_such_kind")
+    with pytest.raises(UnknownKind):
+        set_severity("no_such_kind", "error")
+
+
+def test_every_error_names_what_skiros2_does():
+    """The severity contract (docs/rules.md): an error means SkiROS2 fails or misbehaves,
+    and says where."""
+    for rule in RULES:
+        if rule.severity == "error":
+            assert rule.skiros2, f"{rule.code} is an error and names no SkiROS2 behaviour"
