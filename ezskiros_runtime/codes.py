@@ -401,10 +401,12 @@ RULES: tuple[Rule, ...] = (
          ("unloadable",),
          skiros2="the module raises when the skill manager imports it (SkillManager.load_skills "
          "through PluginLoader), so none of its skills is loaded"),
-    Rule("EZ905", "unreadable", "warning",
+    Rule("EZ905", "unreadable", "info",
          "The file could not be parsed or decoded (Python 2 syntax, an empty or truncated "
          "file), so it was skipped and nothing in it was checked; the class names in it "
-         "still count as defined for compound skills.",
+         "still count as defined for compound skills. Info: what the tool cannot read says "
+         "nothing of the robot (a Python 2 repository runs on a Python 2 ROS), and "
+         "`rewrite` reports the same file as not processed.",
          "Fix the syntax or encoding error (port Python 2 code to Python 3).",
          ("unreadable", "syntax-error")),
     Rule("EZ906", "lossy-rewrite", "error",

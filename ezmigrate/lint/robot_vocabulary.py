@@ -8,8 +8,9 @@ file names in another package, which this run cannot read. So:
 - a class that a scene of the run types an individual with is known (no finding);
 - with a launch file whose ``workspace_dir`` cannot be read, an unknown class or property
   is ``info``, and says which folder was not read;
-- a prefix the ontology does not define is one finding per project (at its first use),
-  with its count of uses, instead of one per use.
+- a prefix the ontology does not define is one ``info`` finding per project (at its
+  first use), with its count of uses, instead of one per use: a lab prefix is usually
+  defined by an ontology another package loads (issue 30), as the runtime says too.
 """
 
 from __future__ import annotations
@@ -75,6 +76,7 @@ def as_the_robot_resolves(diagnostics: Sequence[Diagnostic], typed: set[str],
             uses.append(len(out))
             if len(uses) > 1:
                 continue
+            d = replace(d, severity="info")  # another package's ontology may define it
         if unread_workspace is not None:
             d = replace(d, severity="info", message=(
                 f"{d.message} (the launch file's workspace_dir {unread_workspace} could not "

@@ -27,12 +27,12 @@ def _json(run: subprocess.CompletedProcess[str]) -> list[dict[str, object]]:
     return json.loads(run.stdout)
 
 
-def test_an_unparsable_or_empty_discovered_file_is_a_warning_and_skipped(tmp_path: Path):
+def test_an_unparsable_or_empty_discovered_file_is_info_and_skipped(tmp_path: Path):
     repo = _repo(tmp_path, {"pkg/old.py": PY2, "pkg/skill.py": UNKNOWN, "owl/empty.owl": ""})
     run = cli(".", "--output-format", "json", cwd=repo)
     assert run.returncode == 0, run.stderr
     found = {(Path(str(d["path"])).name, d["code"], d["severity"]) for d in _json(run)}
-    assert found == {("old.py", "EZ905", "warning"), ("skill.py", "EZ209", "warning")}
+    assert found == {("old.py", "EZ905", "info"), ("skill.py", "EZ209", "warning")}
     assert "empty.owl" in run.stderr and "skipped" in run.stderr
     # near miss: the same repository with the file fixed reports only the real finding
     (repo / "pkg" / "old.py").write_text(PY2.replace('print "python 2"', 'print("3")'))
