@@ -509,7 +509,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     Exit 0 when no finding at error severity remains, 1 when one does, 2 on usage errors.
     """
     from ..lint.select import Selection, SelectorError, apply, parse_selectors
-    from ..project.check import run_check
+    from ..project.check import needs_trees, run_check
     from .output_formats import FORMATS, STATISTICS
 
     if statistics and output_format not in STATISTICS:
@@ -544,7 +544,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
         if sys.stderr.isatty() and not quiet else None
     outcome = run_check(list(paths), index, pool, options.exclude, progress,
                         options.skill_libraries,
-                        compounds=any(c.startswith("EZ3") for c in selection.codes()),
+                        compounds=needs_trees(selection.codes()),
                         world=_world_run(paths, options.exclude, scene),
                         include_vendored=include_vendored,
                         cache_dir=None if no_cache else _cache_dir(paths, options),

@@ -99,6 +99,18 @@ def implementations(tree: ast.Module) -> list[tuple[str, str | None]]:
     return found
 
 
+def described_classes(tree: ast.Module) -> list[tuple[str, ast.ClassDef]]:
+    """``(description, class)`` of every implementation class of a module, for checks that
+    read what an implementation does with its description's parameters."""
+    found: list[tuple[str, ast.ClassDef]] = []
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            description, _ = _described(node)
+            if description is not None:
+                found.append((description, node))
+    return found
+
+
 def modified_params(tree: ast.Module) -> list[tuple[str, str, str | None, bool]]:
     """``(description, key, element type, on the wrapper)`` for each literal ``addParam``
     in an implementation's ``modifyDescription(self, skill)``.
@@ -142,8 +154,7 @@ def _element_type(call: ast.Call) -> str | None:
 def implementation_classes(tree: ast.Module) -> set[str]:
     """Names of the module's implementation classes (their ``createDescription`` calls
     ``setDescription``): whatever label they register, they are no descriptions."""
-    return {node.name for node in tree.body
-            if isinstance(node, ast.ClassDef) and _described(node)[0] is not None}
+    return {cls.name for _, cls in described_classes(tree)}
 
 
 def _described(cls: ast.ClassDef) -> tuple[str | None, str]:

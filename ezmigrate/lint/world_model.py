@@ -9,12 +9,14 @@ and its fix in the file's own form, and makes diagnostics of them.
 from __future__ import annotations
 
 import ast
+import os
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ezskiros_runtime.model import SkillModel
+from ezskiros_runtime.ontology.vendored import vendored_skip
 from ezskiros_runtime.world.findings import WorldFinding, finding
 from ezskiros_runtime.world.grounding import can_start
 from ezskiros_runtime.world.postconditions import (
@@ -38,8 +40,10 @@ SCENE_SUFFIX = ".turtle"
 
 
 def scene_files(paths: Sequence[Path], exclude: Sequence[str] = ()) -> list[Path]:
-    """The scenes a run checks: ``*.turtle`` files named on the command line, and those in
-    an ``owl`` folder (at any depth) under the folders named, less ``exclude``."""
+    """The scenes a run checks: ``*.turtle`` files named on the command line, and every
+    one under the folders named (SkiROS2 saves its scenes as ``.turtle``; labs keep them in
+    ``owl/``, beside a launch file or beside the code), less ``exclude``, hidden and build
+    folders and vendored SkiROS2 packages (whose scenes are upstream's demos)."""
     found: dict[str, Path] = {}
     for given in paths:
         if given.is_file():
@@ -49,13 +53,16 @@ def scene_files(paths: Sequence[Path], exclude: Sequence[str] = ()) -> list[Path
         if not given.is_dir():
             continue
         skip = excluded_under(given, exclude)
-        for path in sorted(given.rglob(f"*{SCENE_SUFFIX}")):
-            parts = path.relative_to(given).parts[:-1]
-            if any(p in ALWAYS_EXCLUDED or p.startswith(".") for p in parts) or skip(path):
-                continue
-            if "owl" in parts or "owl" in given.parts:
-                found.setdefault(str(path.resolve()), path)
-    return list(found.values())
+        vendored = vendored_skip(given)
+        for folder, dirs, names in os.walk(given):
+            here = Path(folder)
+            dirs[:] = sorted(d for d in dirs if d not in ALWAYS_EXCLUDED
+                             and not d.startswith(".") and not skip(here / d)
+                             and not vendored(here / d))
+            for name in sorted(names):
+                if name.endswith(SCENE_SUFFIX) and not skip(here / name):
+                    found.setdefault(str((here / name).resolve()), here / name)
+    return sorted(found.values())
 
 
 @dataclass

@@ -12,11 +12,13 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ezskiros_runtime.compound.library import SkillIndex
+from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.model import SkillModel
 
 from ..files.discover import Candidate, discover
@@ -34,6 +36,7 @@ from .launch import Launch, with_init_scene
 from .load_cache import LoadCache, cached_loads
 from .progress import Progress
 from .settle import settle
+from .uninferable import UNINFERABLE
 
 if TYPE_CHECKING:
     from ezskiros_runtime.diagnostics import ClassError
@@ -141,6 +144,12 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
             yield item.candidate, item.original, item.result
 
 
+def needs_trees(codes: Iterable[str]) -> bool:
+    """Whether a selection needs the compound skills' trees: the EZ3xx checks, and EZ105,
+    judged by what the trees pass to their children (``uninferable``)."""
+    return any(code.startswith("EZ3") or code == UNINFERABLE for code in codes)
+
+
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               exclude: tuple[str, ...] = (),
               progress: Callable[[str], None] | None = None,
@@ -228,11 +237,12 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     outcomes = cached_loads([job_for(c.path, None, c.root) for c in loadable],
                             [data_of[c.path] for c in loadable],
                             lambda jobs: run_jobs(jobs, pool), cache)
+    compound = _Compound()
     if trees is not None:
-        outcome.diagnostics += _compound(read, results, list(zip(loadable, outcomes,
-                                                                 strict=True)),
-                                         index, pool, skill_libraries, outcome.sources, trees,
-                                         standby[0] if standby else None)
+        compound = _compound(read, results, list(zip(loadable, outcomes, strict=True)),
+                             index, pool, skill_libraries, outcome.sources, trees,
+                             standby[0] if standby else None)
+        outcome.diagnostics += compound.diagnostics
     for candidate, loaded in zip(loadable, outcomes, strict=True):
         path = str(candidate.path)
         where = Positions(outcome.sources[path])
@@ -254,19 +264,72 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
         [(str(c.path), [SkillModel.from_json(m) for m in o.models])
          for c, o in zip(loadable, outcomes, strict=True) if o.loaded], index,
         outcome.sources)
+    outcome.diagnostics = _judge_uninferable(outcome.diagnostics, read, compound, world,
+                                             index)
     outcome.diagnostics.sort(key=lambda d: (d.path, d.line, d.column, d.code))
     return outcome
+
+
+@dataclass
+class _Compound:
+    """What the compound pass found: its diagnostics, the trees and the skill index."""
+
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    models: list[CompoundModel] = field(default_factory=list)
+    skills: SkillIndex | None = None
+
+
+def _judge_uninferable(diagnostics: list[Diagnostic], read: list[tuple[Candidate, bytes]],
+                       compound: _Compound, world: WorldRun,
+                       index: OntologyIndex | None) -> list[Diagnostic]:
+    """EZ105 kept a warning only where grounding by type can pick the wrong element
+    (``uninferable``): implementations read, parents' trees, the scenes' elements."""
+    from .uninferable import judge, keys_passed, keys_read
+
+    if not any(d.code == UNINFERABLE for d in diagnostics):
+        return diagnostics
+    trees = [tree for _, data in read if b"setDescription" in data
+             for tree in (parse(data),) if tree is not None]
+    passed = keys_passed(compound.models, compound.skills) \
+        if compound.skills is not None else {}
+    return judge(diagnostics, keys_read(trees), passed, _scene_counter(world, index))
+
+
+def _scene_counter(world: WorldRun, index: OntologyIndex | None
+                   ) -> Callable[[str], int | None]:
+    """How many elements of a class (or below it) the run's scenes hold together; None
+    without a scene that reads."""
+    from ezskiros_runtime.dsl.vocabulary import to_iri
+    from ezskiros_runtime.world.scene import SceneError, read_scene
+
+    types: list[tuple[list[str], set[str]]] = []  # (IRIs, as the scene writes them)
+    for path in world.scenes:
+        try:
+            scene = read_scene(path)
+        except (SceneError, OSError, UnicodeError):
+            continue
+        types += [(e.types, {scene.compact(t) for t in e.types})
+                  for e in scene.elements.values()]
+
+    def count(cls: str) -> int | None:
+        if not types:
+            return None
+        iri = to_iri(index, cls) if index is not None else None
+        if iri is None or index is None:  # a lab class the ontology lacks: by its name
+            return sum(1 for _, written in types if cls in written)
+        return sum(1 for kinds, _ in types if any(index.is_subclass(k, iri) for k in kinds))
+    return count
 
 
 def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
               loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
               pool: PoolConfig, libraries: tuple[Path, ...],
               sources: dict[str, str], trees: Trees,
-              standby: Standby | None = None) -> list[Diagnostic]:
+              standby: Standby | None = None) -> _Compound:
     """The compound skills' findings (EZ3xx), against this run's and the libraries'
-    descriptions."""
+    descriptions, with the trees and the index they were checked against."""
     if not any(b"expand" in data for _, data in read):
-        return []
+        return _Compound()
     from ezskiros_runtime.compound.library import SkillIndex
 
     from ..compound.analysis import add_descriptions, analyse, library_candidates
@@ -290,7 +353,8 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
         item = diagnostic(path, where, finding.kind, finding.line, finding.message,
                           finding.implementation, finding.suggestion, finding.severity)
         found.setdefault((path, item.line, item.code, item.message), item)
-    return list(found.values())
+    return _Compound(list(found.values()),
+                     [m for _, m in run.models if isinstance(m, CompoundModel)], skills)
 
 
 def _class_error(path: str, where: Positions, error: ClassError) -> Diagnostic:

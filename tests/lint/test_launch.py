@@ -74,8 +74,11 @@ def test_the_init_scene_of_the_launch_file_is_checked(tmp_path: Path):
     launched = repo(tmp_path / "a", {**broken, "launch/cell.launch": LAUNCH.format(
         workspace="/nowhere", scene="../scenes/cell.turtle")})
     assert ("cell.turtle", "EZ402", "error") in found(launched)
-    alone = repo(tmp_path / "b", broken)  # not in an owl/ folder, no launch file names it
-    assert found(alone) == []
+    # a scene anywhere in the repository is checked, named by a launch file or not (issue 30)
+    alone = repo(tmp_path / "b", broken)
+    assert found(alone) == [("cell.turtle", "EZ402", "error")]
+    fixed = repo(tmp_path / "c", {**broken, "scenes/cell.turtle": SCENE.format(kind="Gadget")})
+    assert ("cell.turtle", "EZ402", "error") not in found(fixed)
 
 
 def test_vocabulary_of_a_workspace_this_run_cannot_read_is_info(tmp_path: Path):

@@ -1,0 +1,99 @@
+"""EZ105 (an Inferred parameter no pre-condition mentions) judged by what the repository says.
+
+SkiROS2 grounds such a parameter by its type alone (``NodeExecutor._autoParametrizeWm`` takes
+the first match), and only when the blackboard left it unset (``skill_utils._ground``). That
+grounds the wrong element only when three things hold, so the finding is a warning only
+then, and info otherwise, saying which one failed (issue 30):
+
+- something reads the parameter: an implementation of the description names the key (its
+  ``self.params[...]``, a child it passes the key to);
+- a run can leave it unset: not every parent tree that runs the skill passes a value
+  (``specify``, a ``remap`` of the key, or a parameter of the same key on the parent,
+  which shares the blackboard);
+- the choice is real: the run's scenes, when there are any, hold two or more elements of
+  the parameter's class (a robot's one gripper is the right one).
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import replace
+
+from ezskiros_runtime.codes import code_for
+from ezskiros_runtime.compound.library import SkillIndex, type_name
+from ezskiros_runtime.compound.model import CompoundModel, ProcessorNode, SkillNode
+
+from ..compound.static import described_classes
+from ..lint.diagnostic import Diagnostic
+
+UNINFERABLE = code_for("uninferable")
+_SUBJECT = re.compile(r"INFERRED parameter (\S+) is mentioned by no pre-condition.*?"
+                      r"first element of (\S+) in the world model")
+
+
+def keys_read(trees: Iterable[ast.Module]) -> dict[str, set[str]]:
+    """``{description: every string literal in its implementations' bodies}``: a superset
+    of the keys they read or pass on, enough to tell a key nothing names."""
+    found: dict[str, set[str]] = {}
+    for tree in trees:
+        for description, cls in described_classes(tree):
+            strings = found.setdefault(description, set())
+            strings |= {n.value for n in ast.walk(cls)
+                        if isinstance(n, ast.Constant) and isinstance(n.value, str)}
+    return found
+
+
+def keys_passed(models: Iterable[CompoundModel], skills: SkillIndex
+                ) -> dict[str, dict[str, bool]]:
+    """``{child description: {key: whether every node of it passes a value}}`` over the
+    compound trees: a node passes ``key`` when it specifies or remaps it, or when its
+    parent's description declares it (the blackboard hands it down)."""
+    passed: dict[str, dict[str, bool]] = {}
+
+    def visit(nodes: Iterable[object], parent_keys: set[str]) -> None:
+        for node in nodes:
+            if isinstance(node, SkillNode):
+                child = skills.descriptions.get(type_name(node.type))
+                if child is not None:
+                    given = {k for k, _ in node.specify} | {k for k, _ in node.remap}
+                    mine = passed.setdefault(child.name, {})
+                    for key in child.params:
+                        mine[key] = mine.get(key, True) and (key in given
+                                                            or key in parent_keys)
+                visit(node.children, parent_keys)
+            elif isinstance(node, ProcessorNode):
+                visit(node.children, parent_keys)
+
+    for model in models:
+        parent = skills.descriptions.get(model.description or "")
+        visit(model.children, set(parent.params) if parent is not None else set())
+    return passed
+
+
+def judge(diagnostics: Sequence[Diagnostic], read: dict[str, set[str]],
+          passed: dict[str, dict[str, bool]],
+          elements_of: Callable[[str], int | None]) -> list[Diagnostic]:
+    """``diagnostics`` with each EZ105 kept a warning or lowered to info, as the module
+    doc says; ``elements_of(class)`` is the number of elements of that class the run's
+    scenes hold (None: no scene)."""
+    out = []
+    for d in diagnostics:
+        subject = _SUBJECT.search(d.message) if d.code == UNINFERABLE else None
+        if subject is None or d.severity != "warning":
+            out.append(d)
+            continue
+        key, cls = subject.group(1), subject.group(2)
+        why = None
+        if key not in read.get(d.skill, set()):
+            why = "no implementation of it in the repository reads it"
+        elif passed.get(d.skill, {}).get(key, False):
+            why = "every tree that runs it passes a value"
+        else:
+            count = elements_of(cls)
+            if count is not None and count < 2:
+                why = f"the scenes hold {count} element(s) of {cls}"
+        out.append(d if why is None else
+                   replace(d, severity="info", message=f"{d.message}; info: {why}"))
+    return out
