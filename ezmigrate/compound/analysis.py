@@ -232,11 +232,15 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
                 index.package_names[str(candidate.path)] = package
     run = CompoundRun(models=trees.models)
     for path, model in trees.models:
-        run.findings += [(path, f) for f in check_model(model, index, ontology)]
-        if isinstance(model, Unanalysable):
-            run.findings += [(path, CompoundFinding(kind, line, message, model.implementation))
-                             for kind, line, message in trees.syntax.get(
-                                 (path, model.implementation), ())]
+        found = check_model(model, index, ontology)
+        run.findings += [(path, f) for f in found]
+        # what the syntax shows of every self.skill call: a traced tree took one branch of
+        # expand, so a mistake in another (a keyword typo behind an if) shows only here
+        seen = {(f.kind, f.line) for f in found}
+        run.findings += [(path, CompoundFinding(kind, line, message, model.implementation))
+                         for kind, line, message in trees.syntax.get(
+                             (path, model.implementation), ())
+                         if (kind, line) not in seen]
     run.findings = once_per_project(run.findings)
     return run
 

@@ -156,3 +156,19 @@ def test_parameters_modify_description_adds_to_the_wrapper_are_declared(tmp_path
     [dropped] = [d for d in found if d.code.startswith("EZ3")]
     assert dropped.code == "EZ307" and "'Pressure'" in dropped.message
     assert "modifyDescription to itself" in dropped.message
+
+
+def test_a_keyword_typo_in_a_branch_the_trace_did_not_take_is_found(tmp_path: Path) -> None:
+    """``expand`` branches on a run-time value: tracing takes one branch, the syntax shows
+    every ``self.skill`` call (issue 30, a fork's operate_handle)."""
+    branch = '''\
+        kind = self.params["Pause"].value
+        if kind == 1.0:
+            skill(self.skill("Wait", "", specify={"Duration": 1.0}))
+        else:
+            skill(self.skill("Wait", "", TYPO={"Duration": 2.0}))
+        '''
+    found = ez3(tmp_path / "typo", branch.replace("TYPO", "specfiy"))
+    assert [(d.code, d.line, d.severity) for d in found] == [("EZ309", 22, "error")]
+    assert "specfiy=" in found[0].message and "specify=" in found[0].message
+    assert ez3(tmp_path / "fine", branch.replace("TYPO", "specify")) == []
