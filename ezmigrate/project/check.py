@@ -36,7 +36,7 @@ from .launch import Launch, with_init_scene
 from .load_cache import LoadCache, cached_loads
 from .progress import Progress
 from .settle import settle
-from .uninferable import UNINFERABLE
+from .uninferable import UNINFERABLE, UNKNOWN
 
 if TYPE_CHECKING:
     from ezskiros_runtime.diagnostics import ClassError
@@ -145,9 +145,9 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
 
 
 def needs_trees(codes: Iterable[str]) -> bool:
-    """Whether a selection needs the compound skills' trees: the EZ3xx checks, and EZ105,
-    judged by what the trees pass to their children (``uninferable``)."""
-    return any(code.startswith("EZ3") or code == UNINFERABLE for code in codes)
+    """Whether a selection needs the compound skills' trees: the EZ3xx checks, and EZ105
+    and EZ209, judged by what the trees pass to their children (``uninferable``)."""
+    return any(code.startswith("EZ3") or code in (UNINFERABLE, UNKNOWN) for code in codes)
 
 
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
@@ -286,7 +286,7 @@ def _judge_uninferable(diagnostics: list[Diagnostic], read: list[tuple[Candidate
     (``uninferable``): implementations read, parents' trees, the scenes' elements."""
     from .uninferable import judge, keys_passed, keys_read
 
-    if not any(d.code == UNINFERABLE for d in diagnostics):
+    if not any(d.code in (UNINFERABLE, UNKNOWN) for d in diagnostics):
         return diagnostics
     trees = [tree for _, data in read if b"setDescription" in data
              for tree in (parse(data),) if tree is not None]

@@ -12,6 +12,9 @@ then, and info otherwise, saying which one failed (issue 30):
   which shares the blackboard);
 - the choice is real: the run's scenes, when there are any, hold two or more elements of
   the parameter's class (a robot's one gripper is the right one).
+
+The same facts judge EZ209 on a parameter's class: a class no ontology defines matters only
+when SkiROS2 grounds the parameter, which it never does when every tree passes a value.
 """
 
 from __future__ import annotations
@@ -29,8 +32,10 @@ from ..compound.static import described_classes
 from ..lint.diagnostic import Diagnostic
 
 UNINFERABLE = code_for("uninferable")
+UNKNOWN = code_for("unknown-vocabulary")
 _SUBJECT = re.compile(r"INFERRED parameter (\S+) is mentioned by no pre-condition.*?"
                       r"first element of (\S+) in the world model")
+_PARAMETER_CLASS = re.compile(r"^parameter (\S+): class ")
 
 
 def keys_read(trees: Iterable[ast.Module]) -> dict[str, set[str]]:
@@ -80,6 +85,14 @@ def judge(diagnostics: Sequence[Diagnostic], read: dict[str, set[str]],
     scenes hold (None: no scene)."""
     out = []
     for d in diagnostics:
+        typed = _PARAMETER_CLASS.search(d.message) if d.code == UNKNOWN else None
+        if typed is not None and d.severity == "warning" \
+                and passed.get(d.skill, {}).get(typed.group(1), False):
+            # SkiROS2 matches a class only to ground a parameter; one every tree passes a
+            # value to is never grounded, so its unknown class changes nothing at run time
+            out.append(replace(d, severity="info", message=f"{d.message}; info: every tree "
+                                                           "that runs it passes a value"))
+            continue
         subject = _SUBJECT.search(d.message) if d.code == UNINFERABLE else None
         if subject is None or d.severity != "warning":
             out.append(d)

@@ -95,3 +95,24 @@ def test_one_element_of_the_class_in_the_scenes_is_info_two_warn(tmp_path):
             extra="skiros:TransformationPose-2 a skiros:TransformationPose, "
                   "owl:NamedIndividual .\n")})
     assert two == {"Pose": "warning", "Gripper": "info"}
+
+
+TYPO = DESCRIPTION.replace('self.addParam("Pose", Element("skiros:TransformationPose"), '
+                           'ParamTypes.Inferred)',
+                           'self.addParam("Pose", Element("skiros:TransformationPoze"), '
+                           'ParamTypes.Required)')
+
+
+def _ez209(tmp_path: Path, source: str) -> list[str]:
+    (tmp_path / "pkg").mkdir(parents=True)
+    (tmp_path / "pkg" / "skills.py").write_text(source, encoding="utf-8")
+    subprocess.run(["git", "init", "-q", str(tmp_path)], check=True)
+    run = cli(".", "--output-format", "json", "--select", "EZ209", cwd=tmp_path)
+    return [str(d["severity"]) for d in json.loads(run.stdout)]
+
+
+def test_an_unknown_class_every_tree_passes_a_value_to_is_info(tmp_path):
+    """SkiROS2 matches a parameter's class only to ground it: with the value always passed
+    (the parent remaps its own Goal onto Pose), the misspelt class changes nothing."""
+    assert _ez209(tmp_path / "alone", TYPO) == ["warning"]
+    assert _ez209(tmp_path / "passed", TYPO + PARENT) == ["info"]
