@@ -111,6 +111,13 @@ RULES: tuple[Rule, ...] = (
          ("description",),
          skiros2="ezskiros_runtime raises SkillTypeError when the skill manager instantiates the "
          "description (SkillManager.add_skill), so the skill is not loaded"),
+    Rule("EZ109", "implementation-unknown-key", "error",
+         "An implementation reads self.params[\"Key\"] with a key its description does not "
+         "declare (nor its modifyDescription, nor the automatic Robot).",
+         "Use a declared key (see the suggestion), or declare the parameter.",
+         ("implementation-unknown-key",),
+         skiros2="ParamHandler.__getitem__ logs \"Param ... is not in the map\" and returns "
+         "None, so the .value after it raises AttributeError when the line runs"),
     # EZ2xx: vocabulary and ontology
     Rule("EZ201", "domain", "error",
          "The subject's class is outside the relation's or property's domain.",
@@ -198,6 +205,13 @@ RULES: tuple[Rule, ...] = (
          skiros2="the world model stores the type verbatim: WorldModelInterface.resolve_elements "
          "matches no element of the misspelt class, so grounding the parameter fails "
          '(NodeExecutor._autoParametrizeWm: "Can t autoparametrize param")'),
+    Rule("EZ214", "implementation-element-typo", "warning",
+         "An Element(\"p:Class\") in implementation code (a world-model query, a new "
+         "element) names a class that no loaded ontology, owl file or scene defines and "
+         "that is one edit away from one that is: the world model matches types "
+         "verbatim, so the query finds nothing or the element gets the wrong type.",
+         "Use the class the suggestion names.",
+         ("implementation-element-typo",)),
     # EZ3xx: compound skills (the behaviour trees built in expand)
     Rule("EZ301", "unknown-child-type", "error",
          "A child type that no loadable description matches; the compound skill fails when "

@@ -32,6 +32,7 @@ from ..report.results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
 from . import holdpoint
 from .cross_file import RUNTIME_MARKER
+from .implementation_code import IMPLEMENTATION
 from .launch import Launch, with_init_scene
 from .load_cache import LoadCache, cached_loads
 from .progress import Progress
@@ -147,7 +148,8 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
 def needs_trees(codes: Iterable[str]) -> bool:
     """Whether a selection needs the compound skills' trees: the EZ3xx checks, and EZ105
     and EZ209, judged by what the trees pass to their children (``uninferable``)."""
-    return any(code.startswith("EZ3") or code in (UNINFERABLE, UNKNOWN) for code in codes)
+    return any(code.startswith("EZ3") or code in (UNINFERABLE, UNKNOWN, *IMPLEMENTATION)
+               for code in codes)
 
 
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
@@ -264,6 +266,9 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
         [(str(c.path), [SkillModel.from_json(m) for m in o.models])
          for c, o in zip(loadable, outcomes, strict=True) if o.loaded], index,
         outcome.sources)
+    if compound.skills is not None:
+        outcome.diagnostics += _implementations(read, compound.skills, index, world,
+                                                outcome.sources)
     outcome.diagnostics = _judge_uninferable(outcome.diagnostics, read, compound, world,
                                              index)
     outcome.diagnostics.sort(key=lambda d: (d.path, d.line, d.column, d.code))
@@ -293,6 +298,36 @@ def _judge_uninferable(diagnostics: list[Diagnostic], read: list[tuple[Candidate
     passed = keys_passed(compound.models, compound.skills) \
         if compound.skills is not None else {}
     return judge(diagnostics, keys_read(trees), passed, _scene_counter(world, index))
+
+
+def _implementations(read: list[tuple[Candidate, bytes]], skills: SkillIndex,
+                     index: OntologyIndex | None, world: WorldRun,
+                     sources: dict[str, str]) -> list[Diagnostic]:
+    """EZ109 and EZ214 in the implementation classes of the run (``implementation_code``):
+    classes are known when the ontology or a scene of the run types an element with them."""
+    from ezskiros_runtime.dsl.vocabulary import to_iri
+
+    from .implementation_code import implementation_findings
+
+    typed = scene_classes(world.scenes)
+    classes = {*(index.compact(c) for c in index.classes), *typed} if index else set(typed)
+
+    def known(name: str) -> bool:
+        iri = to_iri(index, name) if index is not None else None
+        return name in typed or (iri is not None and index is not None
+                                 and index.is_class(iri))
+
+    found = []
+    for candidate, data in read:
+        tree = parse(data) if b"setDescription" in data else None
+        if tree is None:
+            continue
+        path = str(candidate.path)
+        where = Positions(sources.get(path, ""))
+        found += [diagnostic(path, where, kind, line, message, skill, fix)
+                  for kind, line, message, skill, fix in
+                  implementation_findings(tree, skills, known, classes)]
+    return found
 
 
 def _scene_counter(world: WorldRun, index: OntologyIndex | None
@@ -328,7 +363,7 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
               standby: Standby | None = None) -> _Compound:
     """The compound skills' findings (EZ3xx), against this run's and the libraries'
     descriptions, with the trees and the index they were checked against."""
-    if not any(b"expand" in data for _, data in read):
+    if not any(b"expand" in data or b"setDescription" in data for _, data in read):
         return _Compound()
     from ezskiros_runtime.compound.library import SkillIndex
 

@@ -1,0 +1,114 @@
+"""The early checks carried into implementation code (issue 30: "the same checks inside a
+skill implementation").
+
+Read from the syntax of each implementation class (a class whose ``createDescription``
+calls ``setDescription(Desc(), ...)``), against what the repository declares:
+
+- ``self.params["Key"]`` with a key the implemented description does not declare: not its
+  own ``addParam``, not what an implementation adds to the wrapper or itself in
+  ``modifyDescription``, not the ``Robot`` SkiROS2 adds to every skill. SkiROS2's
+  ``ParamHandler.__getitem__`` logs "Param ... is not in the map" and returns None, so the
+  ``.value`` after it raises when the line runs (EZ109, error). A fork's tuple keys are not
+  strings and are left alone; a description this run could not read is not judged.
+- ``Element("p:Class")`` with a class no loaded ontology, owl file or scene defines that is
+  one edit away from one that is (EZ214, warning, with the did-you-mean): the world model
+  matches element types verbatim, so a query or a new element of that type finds or makes
+  the wrong thing. A class far from every known one is more likely the lab's own
+  vocabulary from a file this run cannot see, and is left alone.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Callable, Iterable
+
+from ezskiros_runtime.codes import code_for
+from ezskiros_runtime.compound.library import SkillIndex
+
+from ..compound.static import described_classes
+
+IMPLEMENTATION = (code_for("implementation-unknown-key"), code_for("implementation-element-typo"))
+"""The codes of these checks, which need the skill index the compound pass builds."""
+
+Finding = tuple[str, int, str, str, "str | None"]
+"""``(kind, line, message, implementation class, fix)``."""
+
+
+def implementation_findings(tree: ast.Module, skills: SkillIndex,
+                            known_class: Callable[[str], bool],
+                            classes: Iterable[str]) -> list[Finding]:
+    """Every finding of the module's implementation classes (see the module doc);
+    ``known_class`` answers for a ``prefix:Name``, ``classes`` lists the known ones."""
+    found: list[Finding] = []
+    known = sorted(set(classes))
+    for description, cls in described_classes(tree):
+        declared = _declared(description, skills)
+        for node in ast.walk(cls):
+            key = _params_key(node)
+            if key is not None and declared is not None and key[0] not in declared:
+                found.append(("implementation-unknown-key", key[1],
+                              f"self.params[{key[0]!r}]: {description} declares no such "
+                              "parameter, so SkiROS2's ParamHandler returns None (\"Param "
+                              "... is not in the map\") and the line raises when it runs",
+                              cls.name, _closest(key[0], sorted(declared))))
+            literal = _element_class(node)
+            if literal is not None and not known_class(literal[0]):
+                near = [c for c in known if _one_edit(literal[0], c)]
+                if near:
+                    found.append(("implementation-element-typo", literal[1],
+                                  f"Element({literal[0]!r}): no loaded ontology, owl file or "
+                                  f"scene defines {literal[0]}; did you mean {near[0]}? The "
+                                  "world model matches types verbatim", cls.name,
+                                  f"Element({near[0]!r})"))
+    return found
+
+
+def _declared(description: str, skills: SkillIndex) -> set[str] | None:
+    """The keys ``self.params`` holds in an implementation of ``description`` (None when
+    the description could not be read: nothing is judged then)."""
+    info = skills.descriptions.get(description)
+    if info is None or not info.complete:
+        return None
+    return info.declared() | skills.self_added.get(description, set())
+
+
+def _params_key(node: ast.AST) -> tuple[str, int] | None:
+    """``("Key", line)`` for ``self.params["Key"]`` (any first-argument name)."""
+    if isinstance(node, ast.Subscript) and isinstance(node.value, ast.Attribute) \
+            and node.value.attr == "params" and isinstance(node.value.value, ast.Name) \
+            and node.value.value.id == "self" and isinstance(node.slice, ast.Constant) \
+            and isinstance(node.slice.value, str):
+        return node.slice.value, node.lineno
+    return None
+
+
+def _element_class(node: ast.AST) -> tuple[str, int] | None:
+    """``("p:Class", line)`` for ``Element("p:Class")`` with a literal ``prefix:Name``."""
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
+            and node.func.id == "Element" and node.args \
+            and isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str):
+        value = node.args[0].value
+        prefix, _, local = value.partition(":")
+        if prefix and local and " " not in value:
+            return value, node.lineno
+    return None
+
+
+def _one_edit(a: str, b: str) -> bool:
+    """Whether ``a`` becomes ``b`` by one insertion, deletion, substitution or swap of two
+    neighbouring characters (and not when they are equal)."""
+    if a == b or abs(len(a) - len(b)) > 1:
+        return False
+    if len(a) == len(b):
+        diff = [i for i, (x, y) in enumerate(zip(a, b, strict=True)) if x != y]
+        return len(diff) == 1 or (len(diff) == 2 and diff[1] == diff[0] + 1
+                                  and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]])
+    short, long = (a, b) if len(a) < len(b) else (b, a)
+    i = next((i for i, (x, y) in enumerate(zip(short, long, strict=False)) if x != y), len(short))
+    return short[i:] == long[i + 1:]
+
+
+def _closest(key: str, declared: list[str]) -> str | None:
+    """A declared key one edit away, as the fix (None when there is none)."""
+    near = [d for d in declared if _one_edit(key, d) or key.lower() == d.lower()]
+    return f"self.params[{near[0]!r}]" if near else None

@@ -1,0 +1,75 @@
+"""The early checks inside implementation code (issue 30): ``self.params["Key"]`` against
+the implemented description (EZ109) and ``Element("p:Class")`` literals one edit away from
+a known class (EZ214). Each has its trigger and its near miss, in a real repository checked
+by the real CLI."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+from pathlib import Path
+
+import pytest
+from check_support import cli
+
+MODULE = """\
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+from skiros2_skill.core.primitive import PrimitiveBase
+
+
+class Inspect(SkillDescription):
+    def createDescription(self):
+        self.addParam("Target", Element("skiros:Location"), ParamTypes.Required)
+
+
+class inspect(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Inspect(), self.__class__.__name__)
+
+    def modifyDescription(self, skill):
+        skill.addParam("Camera", Element("skiros:DepthCamera"), ParamTypes.Optional)
+
+    def execute(self):
+        target = self.params["{key}"].value
+        robot = self.params["Robot"].value
+        camera = self.params["Camera"].value
+        box = self._wmi.resolve_element(Element("{cls}"))
+        return self.success(str((target, robot, camera, box)))
+"""
+
+
+def _found(tmp_path: Path, key: str, cls: str) -> list[tuple[str, int, str]]:
+    (tmp_path / "pkg").mkdir(parents=True)
+    (tmp_path / "pkg" / "inspect.py").write_text(MODULE.format(key=key, cls=cls),
+                                                 encoding="utf-8")
+    subprocess.run(["git", "init", "-q", str(tmp_path)], check=True)
+    run = cli(".", "--output-format", "json", "--select", "EZ109,EZ214", cwd=tmp_path)
+    assert run.returncode in (0, 1), run.stderr
+    return [(str(d["code"]), int(d["line"]), str(d["severity"])) for d in json.loads(run.stdout)]
+
+
+@pytest.mark.parametrize(("key", "cls", "expected"), [
+    ("Traget", "skiros:Location", [("EZ109", 20, "error")]),
+    ("Target", "skiros:LargeBoxx", [("EZ214", 23, "warning")]),
+    ("Target", "skiros:LargeBox", []),  # near misses: declared key, known class
+    ("Target", "lab:Widget", []),  # far from every known class: the lab's own, unseen
+])
+def test_implementation_code_is_checked_against_what_the_repository_declares(
+        tmp_path: Path, key: str, cls: str, expected: list[tuple[str, int, str]]) -> None:
+    assert _found(tmp_path, key, cls) == expected
+
+
+def test_the_message_names_the_key_and_the_fix_the_class(tmp_path: Path) -> None:
+    (tmp_path / "a").mkdir()
+    (tmp_path / "a" / "inspect.py").write_text(MODULE.format(key="target",
+                                                             cls="skiros:LargeBoxx"),
+                                               encoding="utf-8")
+    subprocess.run(["git", "init", "-q", str(tmp_path)], check=True)
+    data = json.loads(cli(".", "--output-format", "json", "--select", "EZ109,EZ214",
+                          cwd=tmp_path).stdout)
+    by_code = {d["code"]: d for d in data}
+    assert "self.params['target']" in by_code["EZ109"]["message"]
+    assert by_code["EZ109"]["fix"] == "self.params['Target']"
+    assert "did you mean skiros:LargeBox?" in by_code["EZ214"]["message"]
