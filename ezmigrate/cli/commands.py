@@ -545,7 +545,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     outcome = run_check(list(paths), index, pool, options.exclude, progress,
                         options.skill_libraries,
                         compounds=needs_trees(selection.codes()),
-                        world=_world_run(paths, options.exclude, scene),
+                        world=_world_run(paths, options, scene),
                         include_vendored=include_vendored,
                         cache_dir=None if no_cache else _cache_dir(paths, options),
                         launch=_launch(anchor, launch_file, quiet), trace=not no_trace)
@@ -591,9 +591,10 @@ def _launch(anchor: Path, chosen: Path | None, quiet: bool) -> Any:
     return launch
 
 
-def _world_run(paths: tuple[Path, ...], exclude: tuple[str, ...], scene: Path | None) -> Any:
-    """``check``'s world-model settings: the project's ``single-valued``, the scenes under
-    ``paths``, and the ``--scene`` skills must start from (which must parse: exit 2)."""
+def _world_run(paths: tuple[Path, ...], options: Options, scene: Path | None) -> Any:
+    """``check``'s world-model settings: the project's ``single-valued`` (resolved once in
+    ``options``), the scenes under ``paths``, and the ``--scene`` skills must start from
+    (which must parse: exit 2)."""
     from ezskiros_runtime.world.scene import SceneError, read_scene
 
     from ..lint.world_model import WorldRun, scene_files
@@ -603,8 +604,8 @@ def _world_run(paths: tuple[Path, ...], exclude: tuple[str, ...], scene: Path | 
             read_scene(scene)
         except SceneError as error:
             raise click.BadParameter(str(error), param_hint="'--scene'") from None
-    return WorldRun(single_valued=load_project_config(paths[0]).single_valued,
-                    scenes=tuple(scene_files(list(paths), exclude)), start_scene=scene)
+    return WorldRun(single_valued=options.single_valued,
+                    scenes=tuple(scene_files(list(paths), options.exclude)), start_scene=scene)
 
 
 @main.command()

@@ -11,7 +11,9 @@ cannot drift apart (``rewrite -`` once ignored the project's ``timeout``). The p
 * ``select``, ``ignore`` and ``extend-select`` follow ruff: a ``--select`` on the command
   line replaces the project's whole selection (its ``ignore`` and ``extend-select`` too);
   without one, the command line's ``--ignore`` and ``--extend-select`` add to the project's;
-* ``skill-libraries`` has no command-line option: the project's value, or none.
+* ``skill-libraries`` and ``single-valued`` have no command-line option: the project's
+  value, or none. They are resolved here once, from the project of the first path (for
+  stdin, the file it stands for), and nothing re-reads the configuration later.
 
 The ontology is not here: its precedence (``--ontology``, then ``EZSKIROS_ONTOLOGY``, then
 the project, then discovery) is the runtime's, which robots use without this command line
@@ -84,6 +86,8 @@ class Options:
     """The project's ``target-version``; None: decided from the repository (``target``)."""
     source: str = "[tool.ezmigrate]"
     """The pyproject.toml the settings came from, for messages."""
+    single_valued: tuple[str, ...] | None = None
+    """The relations EZ401 keeps to one parent or one place; None: the default list."""
 
     def pool(self, ontology: tuple[str, ...], workers: int | None = None) -> PoolConfig:
         """The sandbox's settings for these options, loading ``ontology`` (resolved files;
@@ -116,6 +120,7 @@ class Options:
             skill_libraries=pyproject.skill_libraries,
             project=pyproject.source.parent if pyproject.source else None,
             target_version=pyproject.target_version, source=where,
+            single_valued=pyproject.single_valued,
         )
 
 

@@ -244,3 +244,22 @@ def test_the_markdown_report_draws_the_repositorys_scenes(tmp_path: Path) -> Non
     assert "### `" in section and section.count("```mermaid") == 2
     assert "**EZ403**" in section and "default1:Ur5-3" in section
     assert section.count("flowchart TD") == 2
+
+
+@pytest.mark.parametrize("setting", ['single-valued = ["skiros:at"]', "single-valued = []"])
+def test_stdin_takes_the_single_valued_setting_of_the_file_it_stands_for(
+        tmp_path: Path, setting: str) -> None:
+    """``check - --stdin-filename skills.py`` reads the project of the named file, once,
+    as ``check skills.py`` does (issue 29): the same EZ401 findings, by line."""
+    project = tmp_path / "project"
+    project.mkdir()
+    (project / "pyproject.toml").write_text(f"[tool.ezmigrate]\n{setting}\n")
+    (project / "skills.py").write_text(LEGACY)
+    named = [(d["line"], d["code"]) for d in _check(project / "skills.py", "--select",
+                                                     "EZ401", cwd=tmp_path)]
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--output-format",
+                          "json", "--exit-zero", "--select", "EZ401", "--stdin-filename",
+                          str(project / "skills.py"), "-"], cwd=tmp_path, input=LEGACY,
+                         capture_output=True, text=True, timeout=300, check=False)
+    assert run.returncode == 0, run.stderr
+    assert [(d["line"], d["code"]) for d in json.loads(run.stdout)] == named
