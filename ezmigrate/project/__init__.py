@@ -7,7 +7,8 @@ back the skills that will not be written; `session` is ``rewrite`` (it writes wh
 under `interrupt`'s deferral) and `earlier` adds what an earlier run migrated to its report;
 `check` is ``check``, with `load_cache` for its second run, `launch` for the launch
 files it reads, `uninferable` judging EZ105 and EZ209 by what the trees pass and the scenes
-hold, and `implementation_code` for the checks inside implementation classes; `target` says which robot's Python the code is for; `progress` draws the
-progress line; `holdpoint` lets a test stop a run at a named point. May import `compound`,
+hold, and `implementation_code` for the checks inside implementation classes; `target`
+says which robot's Python the code is for; `progress` draws the progress line;
+`holdpoint` lets a test stop a run at a named point. May import `compound`,
 `lint`, `codemod`, `verify`, `report` and `files`; never the command line.
 """
