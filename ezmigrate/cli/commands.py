@@ -283,11 +283,11 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     compounds: list[str] = []
     scenes: list[str] = []
     if report is not None and report.suffix.lower() == ".md":
-        from ..compound.analysis import report_section
+        from ..project.check import compound_report
 
-        compounds = report_section(
+        compounds = compound_report(
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
-            options.pool(ontology_files))
+            options.pool(ontology_files), options.skill_libraries, paths, options.exclude)
         scenes = _scene_section(paths, options.exclude, index)
     _finish(results, report, request.writes, check, strict,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,

@@ -27,7 +27,6 @@ from ..files.package_xml import package_name, ros_flavour
 from ..report.results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_batched
 from ..verify.protocol import LoadOutcome
-from .diagram import markdown_section
 from .repository import RepositoryScan, description_of
 from .static import (
     NeedsTrace,
@@ -302,14 +301,3 @@ def library_candidates(paths: Sequence[Path]) -> list[tuple[Candidate, bytes]]:
         except OSError:
             continue
     return items
-
-
-def report_section(items: Sequence[tuple[Candidate, bytes, FileResult]],
-                   ontology: OntologyIndex | None, pool: PoolConfig) -> list[str]:
-    """The Markdown report's "Compound skills" section for the files of a run."""
-    if not any(MARKER in data for _, data, _ in items):
-        return []
-    index = SkillIndex.with_standard_library()
-    add_descriptions(index, [(c, r) for c, _, r in items], [], "repository")
-    run = analyse([(c, d) for c, d, _ in items], index, ontology, pool)
-    return markdown_section(run.models, run.findings)

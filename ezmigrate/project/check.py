@@ -43,7 +43,7 @@ if TYPE_CHECKING:
     from ezskiros_runtime.diagnostics import ClassError
     from ezskiros_runtime.ontology.index import OntologyIndex
 
-    from ..compound.analysis import Trees
+    from ..compound.analysis import CompoundRun, Trees
     from ..verify.protocol import LoadOutcome
 
 UNRESOLVED_LOAD = {"timeout": "info", "memory": "info", "crashed": "info"}
@@ -361,17 +361,18 @@ def _scene_counter(world: WorldRun, index: OntologyIndex | None
     return count
 
 
-def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
-              loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
-              pool: PoolConfig, libraries: tuple[Path, ...],
-              sources: dict[str, str], trees: Trees,
-              standby: Standby | None = None) -> _Compound:
-    """The compound skills' findings (EZ3xx), against this run's and the libraries'
-    descriptions, with the trees and the index they were checked against."""
+def compound_pass(read: list[tuple[Candidate, bytes]],
+                  results: list[tuple[Candidate, FileResult]],
+                  loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
+                  pool: PoolConfig, libraries: tuple[Path, ...], trees: Trees,
+                  standby: Standby | None = None) -> tuple[CompoundRun, SkillIndex] | None:
+    """The one compound pass (issue 29): every compound skill of the run read or traced and
+    checked against the index of this run's descriptions, the repository's around them,
+    the standard library's and ``libraries``'. ``check`` and the review report of
+    ``rewrite --report`` both call it, so they judge the same trees the same way. None when
+    no file defines a compound skill or implements a description."""
     if not any(b"expand" in data or b"setDescription" in data for _, data in read):
-        return _Compound()
-    from ezskiros_runtime.compound.library import SkillIndex
-
+        return None
     from ..compound.analysis import add_descriptions, analyse, library_candidates
     from ..compound.repository import scan_repository
 
@@ -386,7 +387,37 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
         skills.add_description(info)
     add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],
                      "repository")
-    run = analyse(read, skills, index, pool, library, trees, standby, around)
+    return analyse(read, skills, index, pool, library, trees, standby, around), skills
+
+
+def compound_report(items: list[tuple[Candidate, bytes, FileResult]],
+                    index: OntologyIndex | None, pool: PoolConfig,
+                    libraries: tuple[Path, ...], paths: tuple[Path, ...],
+                    exclude: tuple[str, ...]) -> list[str]:
+    """The Markdown report's "Compound skills" section for the files of a ``rewrite``:
+    ``compound_pass`` over them, as ``check`` runs it on the same repository."""
+    from ..compound.analysis import Trees
+    from ..compound.diagram import markdown_section
+
+    if not any(b"expand" in data for _, data, _ in items):
+        return []
+    trees = Trees(named=paths, exclude=exclude)
+    done = compound_pass([(c, d) for c, d, _ in items], [(c, r) for c, _, r in items], [],
+                         index, pool, libraries, trees)
+    return markdown_section(done[0].models, done[0].findings) if done is not None else []
+
+
+def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
+              loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
+              pool: PoolConfig, libraries: tuple[Path, ...],
+              sources: dict[str, str], trees: Trees,
+              standby: Standby | None = None) -> _Compound:
+    """``compound_pass`` as ``check``'s diagnostics (EZ3xx), with the trees and the index
+    they were checked against."""
+    done = compound_pass(read, results, loaded, index, pool, libraries, trees, standby)
+    if done is None:
+        return _Compound()
+    run, skills = done
     found: dict[tuple[str, int, str, str], Diagnostic] = {}
     for path, finding in run.findings:  # a traced loop adds the same mistake once a turn
         where = Positions(sources.get(path, ""))

@@ -166,3 +166,23 @@ def test_no_compound_error_on_generated_repositories(tmp_path: Path) -> None:
     assert trees >= 20  # the generated repository has compound skills to check
     found = _check(tmp_path / "repo", "--select", "EZ3")
     assert [d for d in found if d["severity"] == "error"] == []
+
+
+def test_the_review_report_judges_compound_skills_as_check_does(tmp_path: Path) -> None:
+    """One compound pass (issue 29): with ``skill-libraries`` configured, the report of
+    ``rewrite --report r.md`` lists what ``check`` finds (EZ307, EZ314), not the EZ301 a
+    report without the library would claim."""
+    (tmp_path / "lib").mkdir()
+    (tmp_path / "lib" / "library.py").write_text(LIBRARY)
+    project = tmp_path / "project"
+    project.mkdir()
+    (project / "patrol.py").write_text(PROJECT)
+    (project / "pyproject.toml").write_text('[tool.ezmigrate]\nskill-libraries = ["../lib"]\n')
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", "rewrite", "--dry-run",
+                          "--no-verify", "--report", str(tmp_path / "r.md"), "."], cwd=project,
+                         capture_output=True, text=True, timeout=300, check=False)
+    assert run.returncode in (0, 1), run.stderr
+    report = (tmp_path / "r.md").read_text(encoding="utf-8")
+    listed = set(re.findall(r"- \*\*(EZ3\d\d)\*\* line (\d+):", report))
+    checked = {(d["code"], str(d["line"])) for d in _check(project, "--select", "EZ3")}
+    assert listed == checked == {("EZ307", "17"), ("EZ314", "18")}
