@@ -3,8 +3,7 @@
 `commands` holds the ``ezmigrate`` group (``rewrite``, ``verify``, ``check``, ``scene``):
 each turns its options into settings, calls the project and prints what comes back, so no
 decision is taken here. `options` and `config` resolve the settings a command runs with
-(the command line over ``[tool.ezmigrate]``); `stdin` is ``rewrite -`` (one file in, one
-whole file out); `fixes` is ``check --fix`` and ``--diff``; `output_formats` renders
+(the command line over ``[tool.ezmigrate]``); `output_formats` renders
 ``check``'s findings for machines (JSON, SARIF, GitHub, JUnit); `rules_doc` with
 `rules_precision` writes docs/rules.md from the catalogue. May import `project`,
 `compound`, `lint`, `codemod`, `verify`, `report` and `files`; only ``ezmigrate.__main__``

@@ -232,13 +232,15 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     options = _options(start, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
                                           python=python))
     if reads_stdin:
-        from .stdin import rewrite_stdin, stdin_roots
+        from ..project.stdin import rewrite_stdin, stdin_roots
 
         index, ontology_files, used = _load_index(ontology, start, stdin_roots(stdin_filename),
                                                   options)
-        data, result = rewrite_stdin(index, ontology_files, options, verify=verify,
-                                     ignore_order=ignore_order, ignore_labels=ignore_labels,
-                                     filename=stdin_filename)
+        data = sys.stdin.buffer.read()
+        result = rewrite_stdin(data, index, options.pool(ontology_files),
+                               options.target_version, verify=verify,
+                               ignore_order=ignore_order, ignore_labels=ignore_labels,
+                               filename=stdin_filename)
         shown = str(stdin_filename) if stdin_filename else "-"
         _print_result(shown, shown, data, result, dry_run, check, color, debug)
         if not (dry_run or check):  # whatever happened, stdout gets a whole file
@@ -376,11 +378,11 @@ def _finish(results: list[FileResult], report: Path | None, writes: bool, check:
     exit code every ``rewrite`` ends with."""
     if report is not None:
         _write_report(report, results if reported is None else reported, options)
+    from ..project.session import exit_code
+
     summary = Summary.of(results)
     click.echo(f"ezmigrate: {summary.line(dry=not writes)}", err=True)
-    would_change = summary.changed_files > 0 and check
-    sys.exit(EXIT_ATTENTION if would_change or summary.needs_attention(strict) or refused
-             else EXIT_OK)
+    sys.exit(exit_code(summary, check, strict, refused))
 
 
 @main.command()
@@ -520,11 +522,11 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     roots: Sequence[Path] = paths
     anchor = paths[0]
     if [str(p) for p in paths] == ["-"]:
-        from .stdin import stdin_file, stdin_roots
+        from ..project.stdin import stdin_file, stdin_roots
 
         if fix or show_diff:
             raise click.UsageError("--fix and --diff work on files, not on stdin")
-        copy = stdin_file(stdin_filename)
+        copy = stdin_file(stdin_filename, sys.stdin.buffer.read())
         shown_as[str(copy)] = str(stdin_filename) if stdin_filename else "-"
         paths, roots, anchor = (copy,), stdin_roots(stdin_filename), stdin_filename or Path.cwd()
     options = _options(anchor, CommandLine(
@@ -554,12 +556,21 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it
              for d in apply(outcome.diagnostics, outcome.sources, selection)]
     if fix or show_diff:
-        from .fixes import fix_findings
+        from ..project.fixes import apply_fixes
 
-        found, fixable = fix_findings(found, paths, write=fix and not show_diff,
-                                      colour_diff=sys.stdout.isatty())
+        writes = fix and not show_diff
+        fixes = apply_fixes(found, paths, write=writes)
+        for diff in fixes.diffs:
+            click.echo(colour(diff) if sys.stdout.isatty() else diff, nl=False)
+        for refused in fixes.refused:
+            click.echo(f"ezmigrate: {refused}", err=True)
+        if fixes.fixed or writes:
+            click.echo(f"ezmigrate: {'fixed' if writes else 'would fix'} "
+                       f"{counted(fixes.fixed, 'finding')} in {counted(fixes.files, 'file')}",
+                       err=True)
+        found = fixes.remaining
         if show_diff:
-            sys.exit(EXIT_ATTENTION if fixable else EXIT_OK)
+            sys.exit(EXIT_ATTENTION if fixes.fixed else EXIT_OK)
     shown = [d for d in found if d.severity == "error"] if quiet else found
     click.echo((STATISTICS if statistics else FORMATS)[output_format](shown), nl=False)
     errors = sum(1 for d in found if d.severity == "error")

@@ -9,6 +9,8 @@ under `interrupt`'s deferral) and `earlier` adds what an earlier run migrated to
 files it reads, `uninferable` judging EZ105 and EZ209 by what the trees pass and the scenes
 hold, and `implementation_code` for the checks inside implementation classes; `target`
 says which robot's Python the code is for; `progress` draws the progress line;
-`holdpoint` lets a test stop a run at a named point. May import `compound`,
+`holdpoint` lets a test stop a run at a named point; `stdin` is ``rewrite -`` and
+``check -`` (one file in, one whole file out) and `fixes` is ``check --fix`` and ``--diff``
+(the command line prints what they return). May import `compound`,
 `lint`, `codemod`, `verify`, `report` and `files`; never the command line.
 """

@@ -13,7 +13,7 @@ earlier changed nothing.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from ..files.discover import Candidate, discover
 from ..files.package_xml import packages_of, with_runtime_depend
 from ..files.writing import WriteRefused, atomic_write, digest, remove_stale_temporary
+from ..report.reports import Summary
 from ..verify.verdicts import Comparison
 from . import holdpoint, interrupt
 from .progress import Progress
@@ -250,3 +251,11 @@ def _mode_of(path: Path) -> int | None:
         return path.stat().st_mode & 0o7777
     except OSError:
         return None
+
+
+def exit_code(summary: Summary, check: bool, strict: bool, refused: Sequence[str]) -> int:
+    """The exit code every ``rewrite`` ends with, as black's: 1 when ``--check`` found
+    changes, a verification failed, a file could not be processed or written (with
+    ``--strict`` also a skipped skill), else 0. Pure: the command line only exits with it."""
+    would_change = summary.changed_files > 0 and check
+    return 1 if would_change or summary.needs_attention(strict) or refused else 0

@@ -4,16 +4,17 @@ Whatever happens, stdout gets a whole file: the migrated source, or the input un
 (an editor replacing its buffer with our output must never lose a line). Problems go to
 stderr on one line each; user code runs only when verifying, in isolated children.
 
-Its settings are the ``Options`` every command resolves (``options.Options.resolve``), so
-the project's ``[tool.ezmigrate]`` (``timeout``, ``python``, ``jobs``) holds here exactly
-as for ``rewrite PATH``; ``--ignore-order`` and ``--ignore-labels`` do too.
+Its settings are those every command resolves (``cli.options.Options.resolve``): the CLI
+passes the pool they make and the project's ``target-version``, so the project's
+``[tool.ezmigrate]`` (``timeout``, ``python``, ``jobs``) holds here exactly as for ``rewrite
+PATH``; ``--ignore-order`` and ``--ignore-labels`` do too. The CLI reads stdin and prints;
+nothing here touches the process's streams.
 """
 
 from __future__ import annotations
 
 import atexit
 import shutil
-import sys
 import tempfile
 from dataclasses import replace
 from pathlib import Path
@@ -24,19 +25,19 @@ from ezskiros_runtime.ontology.discovery import enclosing_project
 from ..report.results import FileResult
 
 if TYPE_CHECKING:
-    from .options import Options
+    from ..verify.pool import PoolConfig
 
 NAME = "stdin_module.py"
 """What the one file of the project is called on disk while it is migrated and loaded."""
 
 
-def stdin_file(filename: Path | None) -> Path:
+def stdin_file(filename: Path | None, data: bytes) -> Path:
     """Stdin's bytes in a private folder (removed when the process ends), named as the file
     it stands for (``check -``: findings are then mapped back to that name)."""
     folder = Path(tempfile.mkdtemp(prefix="ezmigrate-stdin-"))
     atexit.register(shutil.rmtree, folder, True)
     path = folder / (filename.name if filename is not None else NAME)
-    path.write_bytes(sys.stdin.buffer.read())
+    path.write_bytes(data)
     return path
 
 
@@ -51,10 +52,11 @@ def stdin_roots(filename: Path | None) -> list[Path]:
     return [cwd] if enclosing_project(cwd) is not None else []
 
 
-def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, verify: bool,
+def rewrite_stdin(data: bytes, index: Any, pool: PoolConfig,
+                  target_version: tuple[int, int] | None, *, verify: bool,
                   ignore_order: bool = False, ignore_labels: bool = False,
-                  filename: Path | None = None) -> tuple[bytes, FileResult]:
-    """Stdin's bytes and their result; ``new_source`` is set only when it verified (or
+                  filename: Path | None = None) -> FileResult:
+    """The result of stdin's bytes; ``new_source`` is set only when it verified (or
     verification is off). The command line prints and exits exactly as for a file.
 
     Stdin is a project of one file: written to a private folder, it is settled like any
@@ -64,18 +66,18 @@ def rewrite_stdin(index: Any, ontology: tuple[str, ...], options: Options, *, ve
     that (a project that says ``jobs = 1`` has its reasons, memory most often).
     """
     from ..files.discover import Candidate
-    from ..project.settle import Checks, settle
-    from ..project.target import robot_python, target_for
     from ..verify.verdicts import Comparison
+    from .settle import Checks, settle
+    from .target import robot_python, target_for
 
-    data = sys.stdin.buffer.read()
-    robot = target_for([filename or Path.cwd()], options.target_version)
-    pool = replace(options.pool(ontology, workers=min(2, options.jobs)),
-                   python=robot_python(robot, options.python, verify))
+    robot = target_for([filename or Path.cwd()], target_version)
+    pool = replace(pool, workers=min(2, pool.workers),
+                   python=robot_python(robot, pool.python if pool.python_given else None,
+                                       verify))
     checks = Checks(pool, Comparison(ignore_order, ignore_labels)) if verify else None
     with tempfile.TemporaryDirectory(prefix="ezmigrate-stdin-") as folder:
         path = Path(folder) / NAME
         path.write_bytes(data)
         [item] = settle([Candidate(path, path.parent)], index, 1, checks, target=robot.version,
-                         refuse_unloadable=True)
-    return data, replace(item.result, path=str(filename) if filename else "-")
+                        refuse_unloadable=True)
+    return replace(item.result, path=str(filename) if filename else "-")

@@ -25,13 +25,10 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import click
-
 from ..files.paths import from_repository, shown
 from ..files.writing import WriteRefused, atomic_write, digest
 from ..lint.diagnostic import Diagnostic
-from ..report.diffs import colour, unified_diff
-from ..report.reports import counted
+from ..report.diffs import unified_diff
 
 FIXABLE = frozenset({"EZ101"})
 """Codes ``--fix`` knows how to fix."""
@@ -144,32 +141,41 @@ def _applied(lines: list[str], edits: Iterable[Edit]) -> str:
     return "".join(out)
 
 
-def fix_findings(found: Sequence[Diagnostic], roots: Sequence[Path], *, write: bool,
-                 colour_diff: bool) -> tuple[list[Diagnostic], int]:
+@dataclass
+class FixOutcome:
+    """What ``--fix`` or ``--diff`` did: the findings still standing, how many were (or
+    would be) fixed in how many files, each file's diff (``--diff``) and why a file was
+    left whole (``--fix``). The command line prints it; nothing here prints."""
+
+    remaining: list[Diagnostic]
+    fixed: int = 0
+    files: int = 0
+    diffs: list[str] = field(default_factory=list)
+    refused: list[str] = field(default_factory=list)
+
+
+def apply_fixes(found: Sequence[Diagnostic], roots: Sequence[Path], *,
+                write: bool) -> FixOutcome:
     """``--fix`` (``write``) or ``--diff``: make or show the fixes of ``found``.
 
-    ``--diff`` prints each file's diff on stdout (headers relative to the repository root,
-    so ``git apply`` takes it) and writes nothing. ``--fix`` writes each file atomically, or
-    leaves it whole and says why. Returns the findings still standing and how many were (or
-    would be) fixed; a message on stderr says so, as ruff does.
+    ``--diff`` gives each file's diff (headers relative to the repository root, so ``git
+    apply`` takes it) and writes nothing. ``--fix`` writes each file atomically, or leaves it
+    whole and says why.
     """
     resolved: set[int] = set()
-    count = files = 0
+    outcome = FixOutcome([])
     for fix in plan_fixes(found):
         if write:
             try:
                 atomic_write(Path(fix.path), fix.after, digest(fix.before), roots=list(roots))
             except (WriteRefused, OSError) as error:
-                click.echo(f"ezmigrate: {shown(fix.path)}: not fixed ({error})", err=True)
+                outcome.refused.append(f"{shown(fix.path)}: not fixed ({error})")
                 continue
         else:
-            diff = unified_diff(from_repository(fix.path), fix.before, fix.after)
-            click.echo(colour(diff) if colour_diff else diff, nl=False)
+            outcome.diffs.append(unified_diff(from_repository(fix.path), fix.before,
+                                              fix.after))
         resolved.update(id(d) for d in fix.fixed)
-        count += len(fix.fixed)
-        files += 1
-    if count or write:
-        verb = "fixed" if write else "would fix"
-        click.echo(f"ezmigrate: {verb} {counted(count, 'finding')} in "
-                   f"{counted(files, 'file')}", err=True)
-    return [d for d in found if id(d) not in resolved], count
+        outcome.fixed += len(fix.fixed)
+        outcome.files += 1
+    outcome.remaining = [d for d in found if id(d) not in resolved]
+    return outcome
