@@ -59,7 +59,7 @@ from .core.reader import (
 from .core.replay import replay
 from .core.syntax_facts import ClassFacts, FunctionFacts, SyntaxFacts
 from .core.tree_walk import walk
-from .rules import RULES
+from .rules import CONSTRUCTS
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -428,7 +428,7 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         create = plan.create
         assert create is not None  # both parsers see the same class body
         lines = StatementLines(module, func.body, create.spans)
-        ctx = ExtractContext(module=module, names=names, lines=lines, skill=skill, rules=RULES,
+        ctx = ExtractContext(module=module, names=names, lines=lines, skill=skill, rules=CONSTRUCTS,
                              constants=constants,
                              self_name=self_parameter(func), class_name=cls.name,
                              class_names=frozenset(n for n, _ in bindings),
@@ -438,7 +438,7 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         read_operations(func, create.bound, ctx)
         params = emitted_params(skill)
         model = checked_model(cls.name, skill.operations, params)
-        emit = EmitContext(index=settings.index, rules=RULES, self_name=ctx.self_name,
+        emit = EmitContext(index=settings.index, rules=CONSTRUCTS, self_name=ctx.self_name,
                            aliases=aliases,
                            reserved=_reserved(skill, settings.index, ctx.self_name),
                            column=create.column + 4, target=settings.target,

@@ -66,7 +66,7 @@ class RewriteOptions:
         return not (self.dry_run or self.check)
 
     @property
-    def checks(self) -> Checks | None:
+    def verification(self) -> Checks | None:
         """How ``settle`` verifies (None: ``--no-verify``)."""
         if not self.verify:
             return None
@@ -114,7 +114,7 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     notes += _stale_notes(stale, options.writes)
     holdpoint.reach("discovered")
     with Progress.for_stream(len(candidates)) as progress:  # gone before anything is said
-        migrated = settle(candidates, index, options.jobs, options.checks, progress,
+        migrated = settle(candidates, index, options.jobs, options.verification, progress,
                           options.target, refuse_unloadable=True)
     outcome = RewriteOutcome(migrated, notes)
     if not options.writes:

@@ -27,7 +27,6 @@ from rdflib.namespace import OWL, RDF, RDFS, XSD
 from .closure import reflexive_transitive_closure
 from .expressions import ClassExpr, ComplementOf, IntersectionOf, Named, UnionOf, Unsupported
 from .index import OntologyIndex, PropertyInfo
-from .loading import OntologyFile, parse_ontology_file
 from .naming import (
     DEFAULT_PREFIX,
     SKIROS_NAMESPACE,
@@ -35,6 +34,7 @@ from .naming import (
     derive_prefix,
     split_iri,
 )
+from .parsing import OntologyFile, parse_ontology_file
 
 _CLASS_TYPES = (OWL.Class, RDFS.Class)
 _KIND_BY_TYPE = {

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 from .index import OntologyIndex
 
 if TYPE_CHECKING:
-    from .loading import OntologyFile
+    from .parsing import OntologyFile
 
 CACHE_FORMAT_VERSION = "2"  # 2: sub-properties add their parents' domains and ranges
 """Bump when the pickled shape of the index changes incompatibly."""
@@ -38,8 +38,8 @@ _INDEX_CODE = (
     "dtd_guard.py",
     "expressions.py",
     "index.py",
-    "loading.py",
     "naming.py",
+    "parsing.py",
 )
 """Modules whose code decides what the index contains (their source is part of the key)."""
 

@@ -42,7 +42,7 @@ def load_index(
     # that only handles indexes, and `from .x import y` avoids the package's __getattr__.
     from .cache import default_cache_dir, read_cached_index, write_cached_index
     from .cache import fingerprint as content_fingerprint
-    from .loading import collect_ontology_files, read_ontology_files
+    from .parsing import collect_ontology_files, read_ontology_files
 
     requested = _as_path_list(paths) or [bundled_ontology_path()]
     files = read_ontology_files(collect_ontology_files(requested))

@@ -258,7 +258,7 @@ def ontology_individuals(paths: list[str]) -> dict[str, list[str]]:
     from rdflib import URIRef
 
     from ..ontology.errors import OntologyError
-    from ..ontology.loading import (
+    from ..ontology.parsing import (
         collect_ontology_files,
         parse_ontology_file,
         read_ontology_files,

@@ -13,7 +13,7 @@ import pytest
 import ezmigrate.codemod.rules
 from ezmigrate.codemod.core.registry import CONDITION_EMITTERS, CONDITION_REPLAYERS, RuleTable
 from ezmigrate.codemod.migrate import migrate
-from ezmigrate.codemod.rules import RULES, unsupported
+from ezmigrate.codemod.rules import CONSTRUCTS, unsupported
 
 CORE = Path(ezmigrate.codemod.rules.__file__).parents[1] / "core"
 
@@ -25,14 +25,14 @@ def _functions(table: RuleTable) -> set[object]:
 
 
 def test_the_catch_all_is_asked_last_whatever_the_statements_are() -> None:
-    assert RULES.statement_rules[-1] is unsupported.unsupported
-    assert unsupported.unsupported not in RULES.statements
-    shuffled = RuleTable(**{**vars(RULES), "statements": tuple(reversed(RULES.statements))})
+    assert CONSTRUCTS.statement_rules[-1] is unsupported.unsupported
+    assert unsupported.unsupported not in CONSTRUCTS.statements
+    shuffled = RuleTable(**{**vars(CONSTRUCTS), "statements": tuple(reversed(CONSTRUCTS.statements))})
     assert shuffled.statement_rules[-1] is unsupported.unsupported
 
 
 def test_every_rule_module_has_its_rules_in_the_table() -> None:
-    table = _functions(RULES)
+    table = _functions(CONSTRUCTS)
     modules = [name for _, name, _ in pkgutil.iter_modules(ezmigrate.codemod.rules.__path__)]
     assert len(modules) >= 8
     for name in modules:
@@ -68,9 +68,9 @@ class S(SkillDescription):
         self.addParam("A", 1.0, ParamTypes.Optional)
 """
     assert migrate(source).skills[0].status == "converted"
-    without_params = RuleTable(**{**vars(RULES), "statements": tuple(
-        rule for rule in RULES.statements if rule.__name__ != "add_param")})
-    monkeypatch.setattr("ezmigrate.codemod.migrate.RULES", without_params)
+    without_params = RuleTable(**{**vars(CONSTRUCTS), "statements": tuple(
+        rule for rule in CONSTRUCTS.statements if rule.__name__ != "add_param")})
+    monkeypatch.setattr("ezmigrate.codemod.migrate.CONSTRUCTS", without_params)
     [skill] = migrate(source).skills
     assert skill.status == "skipped"
     assert skill.reason is not None and "self.addParam(...) at line 7" in skill.reason

@@ -4,7 +4,7 @@ The first statement rule that claims a statement handles it, so the order below 
 the meaning: a condition added to a list before a parameter, a kept statement before a
 local, and ``unsupported`` (the catch-all that explains why a statement cannot be
 translated) asked last by construction. A new construct is a module here, its entries in
-``RULES``, and a test module in ``tests/codemod``. Emitters and replayers of condition kinds
+``CONSTRUCTS``, and a test module in ``tests/codemod``. Emitters and replayers of condition kinds
 register themselves with decorators next to the rule that reads the kind: order does not
 matter there.
 """
@@ -22,7 +22,7 @@ from . import (
     unsupported,
 )
 
-RULES = RuleTable(
+CONSTRUCTS = RuleTable(
     statements=(
         condition_lists.add_condition,
         add_param.add_param,
@@ -40,4 +40,4 @@ RULES = RuleTable(
     condition_replayers=CONDITION_REPLAYERS,
 )
 
-__all__ = ["RULES"]
+__all__ = ["CONSTRUCTS"]

@@ -25,7 +25,7 @@ from ezskiros_runtime.ontology.config import load_source, resolve_ontology_paths
 from ezskiros_runtime.ontology.dtd_guard import FIRST_READ, MAX_ENTITY_TEXT, refusal
 from ezskiros_runtime.ontology.errors import OntologyLoadError
 from ezskiros_runtime.ontology.load import load_index
-from ezskiros_runtime.ontology.loading import OntologyFile, parse_ontology_file
+from ezskiros_runtime.ontology.parsing import OntologyFile, parse_ontology_file
 
 active = importlib.import_module("ezskiros_runtime.ontology.active")
 

@@ -9,7 +9,7 @@ import pytest
 
 from ezskiros_runtime.ontology.errors import OntologyError, OntologyLoadError
 from ezskiros_runtime.ontology.load import load_index
-from ezskiros_runtime.ontology.loading import collect_ontology_files
+from ezskiros_runtime.ontology.parsing import collect_ontology_files
 
 REPO = Path(__file__).resolve().parents[3]
 FIXTURES = REPO / "fixtures" / "ontology"
