@@ -25,6 +25,13 @@ class Diagnostic:
     skill: str = ""
     end_line: int = 0
     end_column: int = 0
+    param: str | None = None
+    """The parameter the finding is about (a key of ``skill``), when it is about one."""
+    term: str | None = None
+    """The vocabulary it names as written (``skiros:Location``, ``skiros:contain``), when
+    it names one: what later judgements read, instead of the message."""
+    term_is_class: bool = False
+    """``term`` is the class of ``param`` (not a relation or property)."""
 
     @property
     def text(self) -> str:
@@ -53,7 +60,8 @@ class Positions:
 
 def diagnostic(path: str, positions: Positions, kind: str, line: int, message: str,
                skill: str = "", fix: str | None = None,
-               severity: str | None = None) -> Diagnostic:
+               severity: str | None = None, param: str | None = None,
+               term: str | None = None, term_is_class: bool = False) -> Diagnostic:
     """The diagnostic of a finding kind, with the catalogue's code, severity and fix.
 
     ``severity`` lowers the code's own for one finding that rests on something the tool
@@ -63,7 +71,7 @@ def diagnostic(path: str, positions: Positions, kind: str, line: int, message: s
     column, end_line, end_column = positions.span(line)
     return Diagnostic(path, max(line, 1), column, rule.code, severity or rule.severity,
                       message, fix or without_suggestion(rule.fix), skill, end_line,
-                      end_column)
+                      end_column, param, term, term_is_class)
 
 
 def without_suggestion(fix: str) -> str:

@@ -44,6 +44,11 @@ class Hit:
     line: int
     message: str
     fix: str | None = None
+    param: str | None = None
+    term: str | None = None
+    """The parameter and the vocabulary it names, when the finding has them (the runtime's
+    ``Finding.param`` and ``.actual``)."""
+    term_is_class: bool = False
 
 
 def _cond(fact: CondFact) -> Cond:
@@ -193,7 +198,8 @@ def legacy_hits(skill: str, path: str, facts: StaticDescription,
             continue  # said more precisely by a spelling finding
         line = f.line or lines.get(f.param or "", 0)
         fix = f"Did you mean {f.suggestions[0]}?" if f.suggestions else None
-        hits.append(Hit(f.kind, line, f.message, fix))
+        hits.append(Hit(f.kind, line, f.message, fix, f.param, f.actual,
+                        f.actual is not None and f.relation is None))
     return sorted(hits, key=lambda h: h.line)
 
 

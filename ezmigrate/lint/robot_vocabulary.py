@@ -15,8 +15,7 @@ file names in another package, which this run cannot read. So:
 
 from __future__ import annotations
 
-import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Collection, Iterable, Sequence
 from dataclasses import replace
 from pathlib import Path
 
@@ -27,8 +26,6 @@ from .diagnostic import Diagnostic
 from .world_model import scene_files
 
 UNKNOWN = code_for("unknown-vocabulary")
-_CLASS = re.compile(r"\bclass (\S+?)(?::? is not in|: prefix |: \S+ is )")
-_PREFIX = re.compile(r"prefix '([^']+)' is not defined by the loaded ontology")
 
 
 def scene_classes(scenes: Iterable[Path]) -> set[str]:
@@ -59,20 +56,21 @@ def typing_scenes(paths: Sequence[Path], scenes: Sequence[Path],
 
 
 def as_the_robot_resolves(diagnostics: Sequence[Diagnostic], typed: set[str],
-                          unread_workspace: str | None) -> list[Diagnostic]:
-    """``diagnostics`` with EZ209 judged as described in the module doc."""
+                          unread_workspace: str | None,
+                          prefixes: Collection[str] = ()) -> list[Diagnostic]:
+    """``diagnostics`` with EZ209 judged as described in the module doc, by the term each
+    names (``Diagnostic.term``); ``prefixes``: those the loaded ontology defines."""
     out: list[Diagnostic] = []
-    prefixes: dict[str, list[int]] = {}
+    uses_of: dict[str, list[int]] = {}
     for d in diagnostics:
-        if d.code != UNKNOWN:
+        if d.code != UNKNOWN or d.term is None:
             out.append(d)
             continue
-        term = _CLASS.search(d.message)
-        if term is not None and term.group(1) in typed:
+        if d.term_is_class and d.term in typed:
             continue  # the scene types individuals with it: the world model matches it
-        prefix = _PREFIX.search(d.message)
-        if prefix is not None:
-            uses = prefixes.setdefault(prefix.group(1), [])
+        prefix, colon, _ = d.term.partition(":")
+        if colon and "://" not in d.term and prefix not in prefixes:
+            uses = uses_of.setdefault(prefix, [])
             uses.append(len(out))
             if len(uses) > 1:
                 continue
@@ -82,7 +80,7 @@ def as_the_robot_resolves(diagnostics: Sequence[Diagnostic], typed: set[str],
                 f"{d.message} (the launch file's workspace_dir {unread_workspace} could not "
                 "be read by this run: it may define it)"))
         out.append(d)
-    for name, uses in prefixes.items():
+    for name, uses in uses_of.items():
         if len(uses) > 1:
             first = out[uses[0]]
             out[uses[0]] = replace(first, message=(

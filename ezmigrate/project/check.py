@@ -87,7 +87,8 @@ def _legacy(path: str, result: FileResult, positions: Positions,
             if skill.static is not None:
                 for hit in legacy_hits(skill.name, path, skill.static, index):
                     found.append(diagnostic(path, positions, hit.kind, hit.line or skill.line,
-                                            hit.message, skill.name, hit.fix))
+                                            hit.message, skill.name, hit.fix, param=hit.param,
+                                            term=hit.term, term_is_class=hit.term_is_class))
         elif skill.status == "skipped":
             reason = (skill.reason or "").splitlines()[0] if skill.reason else ""
             found.append(diagnostic(path, positions, "kept-legacy", skill.line,
@@ -190,7 +191,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         outcome.files += len(world.scenes)
         outcome.diagnostics = as_the_robot_resolves(
             outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
-            launch.workspace_unresolved if launch is not None else None)
+            launch.workspace_unresolved if launch is not None else None,
+            index.prefixes if index is not None else ())
         return outcome
     finally:
         for workers in standby:
@@ -265,7 +267,9 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
         for found in loaded.findings:
             outcome.diagnostics.append(diagnostic(
                 path, where, found.kind, found.line or 0, found.message, found.skill,
-                f"Did you mean {found.suggestions[0]}?" if found.suggestions else None))
+                f"Did you mean {found.suggestions[0]}?" if found.suggestions else None,
+                found.severity if found.severity == "info" else None, found.param,
+                found.actual, found.actual is not None and found.relation is None))
     outcome.diagnostics += world_diagnostics(
         world, [(str(c.path), r) for c, r in results],
         [(str(c.path), [SkillModel.from_json(m) for m in o.models])

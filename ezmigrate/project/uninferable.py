@@ -20,7 +20,6 @@ when SkiROS2 grounds the parameter, which it never does when every tree passes a
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import replace
 
@@ -33,9 +32,6 @@ from ..lint.diagnostic import Diagnostic
 
 UNINFERABLE = code_for("uninferable")
 UNKNOWN = code_for("unknown-vocabulary")
-_SUBJECT = re.compile(r"INFERRED parameter (\S+) is mentioned by no pre-condition.*?"
-                      r"first element of (\S+) in the world model")
-_PARAMETER_CLASS = re.compile(r"^parameter (\S+): class ")
 
 
 def keys_read(trees: Iterable[ast.Module]) -> dict[str, set[str]]:
@@ -85,28 +81,25 @@ def judge(diagnostics: Sequence[Diagnostic], read: dict[str, set[str]],
     scenes hold (None: no scene)."""
     out = []
     for d in diagnostics:
-        typed = _PARAMETER_CLASS.search(d.message) if d.code == UNKNOWN else None
-        if typed is not None and d.severity == "warning" \
-                and passed.get(d.skill, {}).get(typed.group(1), False):
+        if d.code == UNKNOWN and d.term_is_class and d.param and d.severity == "warning" \
+                and passed.get(d.skill, {}).get(d.param, False):
             # SkiROS2 matches a class only to ground a parameter; one every tree passes a
             # value to is never grounded, so its unknown class changes nothing at run time
             out.append(replace(d, severity="info", message=f"{d.message}; info: every tree "
                                                            "that runs it passes a value"))
             continue
-        subject = _SUBJECT.search(d.message) if d.code == UNINFERABLE else None
-        if subject is None or d.severity != "warning":
+        if d.code != UNINFERABLE or d.severity != "warning" or not d.param:
             out.append(d)
             continue
-        key, cls = subject.group(1), subject.group(2)
         why = None
-        if key not in read.get(d.skill, set()):
+        if d.param not in read.get(d.skill, set()):
             why = "no implementation of it in the repository reads it"
-        elif passed.get(d.skill, {}).get(key, False):
+        elif passed.get(d.skill, {}).get(d.param, False):
             why = "every tree that runs it passes a value"
-        else:
-            count = elements_of(cls)
+        elif d.term is not None:
+            count = elements_of(d.term)
             if count is not None and count < 2:
-                why = f"the scenes hold {count} element(s) of {cls}"
+                why = f"the scenes hold {count} element(s) of {d.term}"
         out.append(d if why is None else
                    replace(d, severity="info", message=f"{d.message}; info: {why}"))
     return out

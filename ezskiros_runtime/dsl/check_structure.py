@@ -57,7 +57,7 @@ def check_inferable(ctx: CheckContext) -> None:
                 f"grounds it by type alone, to the first element of {kind} in the world "
                 "model: ambiguous when several elements fit (add a pre-condition relating "
                 "it to another parameter, or make it REQUIRED)",
-                file, line, param=key)
+                file, line, param=key, actual=spec.element_type)
 
 
 def check_declared(ctx: CheckContext) -> None:

@@ -29,6 +29,20 @@ def prop(subject: str, name: str, op: str, value: str) -> str:
             f'{value}, True))')
 
 
+IMPLEMENTATION = """
+
+from skiros2_skill.core.primitive import PrimitiveBase
+
+
+class skill_impl(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Skill(), self.__class__.__name__)
+
+    def execute(self):
+        found = self._wmi.resolve_element(Element("{cls}"))
+        return self.success(str((self.params["{key}"].value, found)))
+"""
+
 COMPOUND = legacy(f"{LOC}\n{PROD}") + """
 
 from skiros2_skill.core.skill import RetryOnFail, Sequential, SkillBase
@@ -152,6 +166,10 @@ CASES: dict[str, tuple[str, str]] = {
               legacy(f'{LOC}\n{PROD}\nself.addParam("Bin", Element("skiros:Location"), {REQ})\n'
                      f'{rel("Box", "Item")}\n{rel("Box", "Item", which="Post", desired="False")}'
                      f'\n{rel("Bin", "Item", which="Post")}')),
+    "EZ109": (legacy(LOC) + IMPLEMENTATION.format(key="Boks", cls="skiros:Location"),
+              legacy(LOC) + IMPLEMENTATION.format(key="Box", cls="skiros:Location")),
+    "EZ214": (legacy(LOC) + IMPLEMENTATION.format(key="Box", cls="skiros:Locaton"),
+              legacy(LOC) + IMPLEMENTATION.format(key="Box", cls="skiros:Location")),
     "EZ901": (legacy(f'self.addParam("Speed", 0.1, {REQ})'),
               ezskiros("def description(self, Speed: float = 0.1):\n    pass")),
     "EZ902": (legacy(f'for key in ("A", "B"):\n    self.addParam(key, 0.1, {REQ})'),
