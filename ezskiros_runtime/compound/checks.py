@@ -11,9 +11,11 @@ sibling, a key declared only by a grandchild) stay silent or informational.
 from __future__ import annotations
 
 import difflib
-from collections.abc import Iterable
+from collections import Counter
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from types import MappingProxyType
+from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from .library import ROBOT, DescriptionInfo, SkillIndex, type_name
 from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
@@ -68,7 +70,194 @@ def check_model(model: CompoundModel | Unanalysable, index: SkillIndex,
     return _Checker(model, index, ontology).run()
 
 
+T = TypeVar("T")
+NOTHING_TAKEN: Mapping[str, str] = MappingProxyType({})
+
+
+class _View:
+    """The skill index as one compound skill's file sees it, each question asked once.
+
+    A tree names the same few types again and again, and what lies below a node is asked
+    for every other node of the tree: asking the index each time made a tree's check
+    quadratic in its size, each answer comparing file paths (issue 31). Nothing changes the
+    index while a tree is checked and the file is fixed, so each answer here depends on the
+    type alone and is kept by it. Answers are shared: callers must not change them.
+    """
+
+    def __init__(self, index: SkillIndex, path: str) -> None:
+        self.index = index
+        self.path = path
+        self._resolved: dict[str, tuple[list[DescriptionInfo], bool]] = {}
+        self._nearest: dict[str, list[DescriptionInfo]] = {}
+        self._one: dict[str, DescriptionInfo | None] = {}
+        self._launched: dict[str, list[str] | None] = {}
+
+    def resolve(self, stype: str) -> tuple[list[DescriptionInfo], bool]:
+        """``SkillIndex.resolve`` of a child's type."""
+        if stype not in self._resolved:
+            self._resolved[stype] = self.index.resolve(stype)
+        return self._resolved[stype]
+
+    def nearest(self, info: DescriptionInfo) -> list[DescriptionInfo]:
+        """``SkillIndex.nearest`` from this file. By name: ``info`` is always the index's
+        own description of that name (``resolve`` returns nothing else)."""
+        if info.name not in self._nearest:
+            self._nearest[info.name] = self.index.nearest(info, self.path)
+        return self._nearest[info.name]
+
+    def one(self, stype: str) -> DescriptionInfo | None:
+        """The one description a child type names, seen from this file (None when several
+        match, or several files of the repository define it equally near with different
+        parameters)."""
+        if stype not in self._one:
+            self._one[stype] = self._only(self.resolve(stype)[0])
+        return self._one[stype]
+
+    def _only(self, matches: list[DescriptionInfo]) -> DescriptionInfo | None:
+        if len(matches) != 1:
+            return None
+        found = self.nearest(matches[0])
+        if any(f.params != found[0].params or f.complete != found[0].complete
+               for f in found[1:]):
+            return None
+        return found[0]
+
+    def launched_implementations(self, description: str) -> list[str] | None:
+        """``SkillIndex.launched_implementations`` for this file."""
+        if description not in self._launched:
+            self._launched[description] = self.index.launched_implementations(description,
+                                                                               self.path)
+        return self._launched[description]
+
+
+@dataclass(frozen=True)
+class _Expansion(Generic[T]):
+    """What a walk below one node found, and what that answer rests on.
+
+    A walk stops where a type repeats (a tree containing itself) or beyond ``_MAX_DEPTH``
+    levels, so its answer depends on the types above it (``seen``). ``names`` are the types
+    the walk tested against ``seen``, ``depth`` the deepest level below its start that it
+    tested: a walk done with nothing above gives the same answer under any ``seen`` that
+    shares none of ``names`` and keeps every tested level within the limit.
+    """
+
+    value: T
+    names: frozenset[str]
+    depth: int
+
+    def holds_under(self, seen: frozenset[str]) -> bool:
+        """Whether this answer, found with nothing above, is also the answer under ``seen``."""
+        return not seen or (self.names.isdisjoint(seen)
+                            and len(seen) + self.depth <= _MAX_DEPTH)
+
+
+class _Trail:
+    """The names and depth of a walk being done (see ``_Expansion``)."""
+
+    def __init__(self, name: str) -> None:
+        self.names = {name}
+        self.depth = 0
+
+    def add(self, below: _Expansion[Any]) -> None:
+        """A walk one level further down, done or answered from the memo."""
+        self.names |= below.names
+        self.depth = max(self.depth, below.depth + 1)
+
+    def done(self, value: T) -> _Expansion[T]:
+        return _Expansion(value, frozenset(self.names), self.depth)
+
+
+class _Walks(Generic[T]):
+    """One kind of walk below nodes, each kept by (the node's children, the child's type).
+
+    Every walk is first done with nothing above (``fresh``) and reused wherever
+    ``holds_under`` proves it gives the same answer; only where it does not (near a cycle
+    or the depth limit) is it done again for that ``seen`` and kept for it (``exact``). So
+    each type's tree is walked once per checked tree, not once per path that reaches it.
+    Nodes without children of their own (nearly all) share their type's walk; those with
+    children are told apart by the children's identity, alive in the model while it is
+    checked.
+    """
+
+    def __init__(self, walk: Callable[[SkillNode, DescriptionInfo, frozenset[str]],
+                                      _Expansion[T]], stopped: T) -> None:
+        self.walk = walk
+        self.stopped = stopped
+        self.fresh: dict[tuple[int, str], _Expansion[T]] = {}
+        self.exact: dict[tuple[int, str, frozenset[str]], _Expansion[T]] = {}
+        self.open: list[tuple[int, str] | None] = []
+        """The walks in progress, innermost last: a fresh one's key, None for an exact one."""
+
+    def below(self, node: SkillNode, child: DescriptionInfo,
+              seen: frozenset[str] = frozenset()) -> _Expansion[T]:
+        """The walk below ``node`` (whose type is ``child``) under the types ``seen``."""
+        if child.name in seen or len(seen) > _MAX_DEPTH or not child.complete:
+            return _Expansion(self.stopped, frozenset({child.name}), 0)
+        key = (id(node.children) if node.children else 0, child.name)
+        fresh = self.fresh.get(key)
+        if fresh is None and self._may_start(key):
+            fresh = self.fresh[key] = self._run(key, node, child, frozenset())
+        if fresh is not None and fresh.holds_under(seen):
+            return fresh
+        exact = self.exact.get((key[0], key[1], seen))
+        if exact is None:
+            exact = self.exact[(key[0], key[1], seen)] = self._run(None, node, child, seen)
+        return exact
+
+    def _may_start(self, key: tuple[int, str]) -> bool:
+        """A fresh walk starts at the top or right below another fresh one, never inside
+        itself, and at most ``_MAX_DEPTH`` deep: the stack stays as shallow as the walks
+        it replaces (one redone for its ``seen`` starts none, and goes where they went)."""
+        if not self.open:
+            return True
+        return self.open[-1] is not None and key not in self.open \
+            and len(self.open) <= _MAX_DEPTH
+
+    def _run(self, key: tuple[int, str] | None, node: SkillNode, child: DescriptionInfo,
+             seen: frozenset[str]) -> _Expansion[T]:
+        self.open.append(key)
+        try:
+            return self.walk(node, child, seen)
+        finally:
+            self.open.pop()
+
+
+class _Writes:
+    """What the skill nodes of one tree write on the blackboard, counted once per tree.
+
+    Each node's share (its remap targets, its type's keys and the keys below it) is
+    counted over the tree, so that what the *other* nodes write is the count less the
+    node's own share: it used to be the union over every other node, done again for every
+    node. A node object may stand at several places of a tree: all of them are its own.
+    """
+
+    def __init__(self, shares: Iterable[tuple[SkillNode, frozenset[str], bool]]) -> None:
+        self.counts: Counter[str] = Counter()
+        self.unknown = 0
+        """Places whose share is not completely known."""
+        self.own: dict[int, tuple[frozenset[str], bool, int]] = {}
+        for node, keys, whole in shares:
+            self.counts.update(keys)
+            self.unknown += not whole
+            times = self.own[id(node)][2] if id(node) in self.own else 0
+            self.own[id(node)] = (keys, whole, times + 1)
+
+    def complete_without(self, node: SkillNode) -> bool:
+        """Whether every other node's share is completely known."""
+        _, whole, times = self.own[id(node)]
+        return self.unknown == (0 if whole else times)
+
+    def by_others(self, node: SkillNode, key: str) -> bool:
+        """Whether a node other than ``node`` writes ``key``."""
+        keys, _, times = self.own[id(node)]
+        return self.counts[key] > (times if key in keys else 0)
+
+
 class _Checker:
+    """The checks of one tree. What the index says about a type, what lies below a node
+    and what each node writes are each worked out once for the tree (``_View``, ``_Walks``,
+    ``_Writes``) and then asked for freely: the cost follows the size of the tree."""
+
     def __init__(self, model: CompoundModel, index: SkillIndex,
                  ontology: OntologyIndex | None) -> None:
         self.model = model
@@ -76,6 +265,14 @@ class _Checker:
         self.ontology = ontology
         self.found: list[CompoundFinding] = []
         self.parent = index.descriptions.get(model.description or "")
+        self.nodes = model.walk()
+        self.view = _View(index, model.path)
+        self.keys: _Walks[tuple[frozenset[str], bool]] = _Walks(self._keys_walk,
+                                                                (frozenset(), False))
+        self.reaches: _Walks[tuple[frozenset[str], Mapping[str, str]]] = _Walks(
+            self._reach_walk, (frozenset(), NOTHING_TAKEN))
+        self.writes: _Writes | None = None
+        self.hints: dict[str, str | None] = {}
 
     def add(self, kind: str, line: int, message: str, child: str = "",
             suggestion: str | None = None, severity: str | None = None) -> None:
@@ -84,28 +281,15 @@ class _Checker:
                                           f"{message} ({how})", self.model.implementation,
                                           child, suggestion, severity))
 
-    def _one(self, matches: list[DescriptionInfo]) -> DescriptionInfo | None:
-        """The one description a child type names, seen from this compound's file (None
-        when several match, or several files of the repository define it equally near
-        with different parameters)."""
-        if len(matches) != 1:
-            return None
-        found = self.index.nearest(matches[0], self.model.path)
-        if any(f.params != found[0].params or f.complete != found[0].complete
-               for f in found[1:]):
-            return None
-        return found[0]
-
     def run(self) -> list[CompoundFinding]:
         self._processor(self.model.processor, self.model.expand_line)
-        nodes = self.model.walk()
-        for node, _ in nodes:
+        for node, _ in self.nodes:
             if isinstance(node, CallProblem):
                 self.add("compound-call-shape", node.line, node.message)
             elif isinstance(node, ProcessorNode):
                 self._processor(node.processor, node.line)
             else:
-                self._skill(node, [n for n, _ in nodes if n is not node])
+                self._skill(node)
         return self.found
 
     def _processor(self, name: str, line: int) -> None:
@@ -119,25 +303,10 @@ class _Checker:
 
     # -- one child ----------------------------------------------------------------------
 
-    def _skill(self, node: SkillNode, others: list[Node | CallProblem]) -> None:
-        matches, literal = self.index.resolve(node.type)
+    def _skill(self, node: SkillNode) -> None:
+        matches, literal = self.view.resolve(node.type)
         if not matches:
-            name = type_name(node.type)
-            own = {self.model.description, self.model.implementation}
-            close = difflib.get_close_matches(  # a description type, never this compound's
-                name, [n for n in self.index.names() if n not in own], 1, 0.6)
-            hint = f"Did you mean {close[0]!r}?" if close else None
-            why = (f" ({name} is a base other descriptions derive from; the skill manager "
-                   "loads only leaf descriptions)" if name in self.index.bases else "")
-            unread = self.index.unread
-            if unread:
-                why += (f"; {len(unread)} file(s) of the repository could not be read "
-                        f"({', '.join(unread[:3])}), so it may be defined there")
-            self.add("unknown-child-type", node.line,
-                     f"child type {node.type!r} matches no description the skill manager "
-                     "could load (the repository, skiros2_std_lib, [tool.ezmigrate] "
-                     f"skill-libraries){why}: the compound skill fails when it runs",
-                     node.type, hint, "info" if unread else None)
+            self._unknown(node)
             return
         if not literal:
             names = ", ".join(d.name for d in matches)
@@ -147,21 +316,44 @@ class _Checker:
                      f"Write the type name exactly: {matches[0].name!r}.")
         if len(matches) != 1:
             return
-        definitions = self.index.nearest(matches[0], self.model.path)
+        definitions = self.view.nearest(matches[0])
         found = []
         for child in definitions:  # two packages define the type: what holds for both
             before, self.found = self.found, []
-            self._judge(node, child, others)
+            self._judge(node, child)
             found.append(self.found)
             self.found = before
         self.found += [f for f in found[0] if all(
             any((g.kind, g.message) == (f.kind, f.message) for g in other)
             for other in found[1:])]
 
-    def _judge(self, node: SkillNode, child: DescriptionInfo,
-               others: list[Node | CallProblem]) -> None:
+    def _unknown(self, node: SkillNode) -> None:
+        name = type_name(node.type)
+        why = (f" ({name} is a base other descriptions derive from; the skill manager "
+               "loads only leaf descriptions)" if name in self.index.bases else "")
+        unread = self.index.unread
+        if unread:
+            why += (f"; {len(unread)} file(s) of the repository could not be read "
+                    f"({', '.join(unread[:3])}), so it may be defined there")
+        self.add("unknown-child-type", node.line,
+                 f"child type {node.type!r} matches no description the skill manager "
+                 "could load (the repository, skiros2_std_lib, [tool.ezmigrate] "
+                 f"skill-libraries){why}: the compound skill fails when it runs",
+                 node.type, self._closest_type(name), "info" if unread else None)
+
+    def _closest_type(self, name: str) -> str | None:
+        """A description type spelt like ``name``, never this compound's own (once a name:
+        it compares ``name`` with every type of the index)."""
+        if name not in self.hints:
+            own = {self.model.description, self.model.implementation}
+            close = difflib.get_close_matches(
+                name, [n for n in self.index.names() if n not in own], 1, 0.6)
+            self.hints[name] = f"Did you mean {close[0]!r}?" if close else None
+        return self.hints[name]
+
+    def _judge(self, node: SkillNode, child: DescriptionInfo) -> None:
         self._label(node, child)
-        unlaunched = self.index.launched_implementations(child.name, self.model.path)
+        unlaunched = self.view.launched_implementations(child.name)
         if unlaunched is not None and child.origin.startswith("repository"):
             self.add("child-not-launched", node.line,
                      f"child type {child.name} is implemented by {', '.join(unlaunched)}, "
@@ -171,7 +363,7 @@ class _Checker:
             return
         renamed = self._remaps(node, child)
         self._specify(node, child, renamed)
-        self._dangling(node, others)
+        self._dangling(node)
 
     def _label(self, node: SkillNode, child: DescriptionInfo) -> None:
         implements = self.index.implementations.get(node.label) if node.label else None
@@ -195,8 +387,8 @@ class _Checker:
                 renamed[key] = target
                 self._element_types(node, child, key, target)
                 continue
-            _, complete = self._descendant_keys(node, child)
-            reached, taken = self._reach(node, child)
+            _, complete = self.keys.below(node, child).value
+            reached, taken = self.reaches.below(node, child).value
             if key in reached:
                 self.add("remap-key-descendant", node.line,
                          f"remap key {key!r} is declared not by {child.name} but below it; "
@@ -215,7 +407,6 @@ class _Checker:
                          "declares it, so the remap does nothing", node.type,
                          _did_you_mean(key, declared - {k for k, _ in node.remap}))
         return renamed
-
     def _specify(self, node: SkillNode, child: DescriptionInfo,
                  renamed: dict[str, str]) -> None:
         keys = {renamed.get(k, k) for k in child.declared()}
@@ -236,14 +427,14 @@ class _Checker:
                          f"Did you mean {renamed[key]!r}?" if key in renamed
                          else _did_you_mean(key, keys - specified))
 
-    def _dangling(self, node: SkillNode, others: list[Node | CallProblem]) -> None:
+    def _dangling(self, node: SkillNode) -> None:
         if not node.remap or self.parent is None or not self.parent.complete:
             return
-        written, complete = self._written(others)
-        if not complete:
+        writes = self._tree_writes()
+        if not writes.complete_without(node):
             return
         for key, target in node.remap:
-            if target not in self.parent.declared() and target not in written:
+            if target not in self.parent.declared() and not writes.by_others(node, target):
                 close = difflib.get_close_matches(target, sorted(self.parent.declared()), 1, 0.6)
                 self.add("remap-dangling", node.line,
                          f"remap {key!r} -> {target!r}: no parameter of "
@@ -278,56 +469,75 @@ class _Checker:
 
     # -- what reaches where -------------------------------------------------------------
 
-    def _descendant_keys(self, node: SkillNode, child: DescriptionInfo,
-                         seen: frozenset[str] = frozenset()) -> tuple[set[str], bool]:
+    def _keys_walk(self, node: SkillNode, child: DescriptionInfo,
+                   seen: frozenset[str]) -> _Expansion[tuple[frozenset[str], bool]]:
         """Keys declared below ``node``: its own children and its type's compound trees.
 
         Complete only when every type below resolves and every compound tree below is
         known; a type that contains itself (directly or further down) is not complete.
         """
-        if child.name in seen or len(seen) > _MAX_DEPTH or not child.complete:
-            return set(), False
         seen = seen | {child.name}
+        trail = _Trail(child.name)
         keys: set[str] = set()
-        complete = self._below(node.children, keys, seen)
+        complete = self._below(node.children, keys, seen, trail)
         if child.name in self.index.unknown_compounds:
             complete = False
         for tree in self.index.compounds.get(child.name, ()):
-            complete &= self._below(tree.children, keys, seen)
-        return keys, complete
+            complete &= self._below(tree.children, keys, seen, trail)
+        return trail.done((frozenset(keys), complete))
 
-    def _reach(self, node: SkillNode, child: DescriptionInfo,
-               seen: frozenset[str] = frozenset()) -> tuple[set[str], dict[str, str]]:
+    def _below(self, nodes: Iterable[Node | CallProblem], keys: set[str],
+               seen: frozenset[str], trail: _Trail) -> bool:
+        complete = True
+        for node in nodes:
+            if isinstance(node, CallProblem):
+                continue
+            if isinstance(node, ProcessorNode):
+                complete &= self._below(node.children, keys, seen, trail)
+                continue
+            child = self.view.one(node.type)
+            if child is None:
+                complete = False
+                continue
+            keys.update(child.declared())
+            below = self.keys.below(node, child, seen)
+            trail.add(below)
+            keys |= below.value[0]
+            complete &= below.value[1]
+        return complete
+
+    def _reach_walk(self, node: SkillNode, child: DescriptionInfo, seen: frozenset[str]
+                    ) -> _Expansion[tuple[frozenset[str], Mapping[str, str]]]:
         """Keys below ``node`` that a remap passed down would still rename, and keys a node
         below already remapped (key -> its new name): SkiROS2 drops a second remap of a
         key at the node that remapped it first, and does not pass it further down."""
+        seen = seen | {child.name}
+        trail = _Trail(child.name)
         reached: set[str] = set()
         taken: dict[str, str] = {}
-        if child.name in seen or len(seen) > _MAX_DEPTH or not child.complete:
-            return reached, taken
-        seen = seen | {child.name}
         nodes: list[Node | CallProblem] = list(node.children)
         for tree in self.index.compounds.get(child.name, ()):
             nodes += tree.children
         for below in nodes:
-            self._reach_node(below, reached, taken, seen)
-        return reached, taken
+            self._reach_node(below, reached, taken, seen, trail)
+        return trail.done((frozenset(reached), taken))
 
     def _reach_node(self, node: Node | CallProblem, reached: set[str],
-                    taken: dict[str, str], seen: frozenset[str]) -> None:
+                    taken: dict[str, str], seen: frozenset[str], trail: _Trail) -> None:
         if isinstance(node, CallProblem):
             return
         keys: set[str] = set()
         if isinstance(node, ProcessorNode):
             for inner in node.children:
-                self._reach_node(inner, keys, taken, seen)
+                self._reach_node(inner, keys, taken, seen, trail)
         else:
-            matches, _ = self.index.resolve(node.type)
-            child = self._one(matches)
+            child = self.view.one(node.type)
             if child is None:
                 return
             keys = child.declared()
-            deeper, deeper_taken = self._reach(node, child, seen)
+            below = self.reaches.below(node, child, seen)
+            trail.add(below)
+            deeper, deeper_taken = below.value
             keys |= deeper
             for key, target in deeper_taken.items():
                 taken.setdefault(key, target)
@@ -338,41 +548,26 @@ class _Checker:
                 taken.setdefault(key, target)
         reached |= keys
 
-    def _below(self, nodes: Iterable[Node | CallProblem], keys: set[str],
-               seen: frozenset[str]) -> bool:
-        complete = True
-        for node in nodes:
-            if isinstance(node, CallProblem):
-                continue
-            if isinstance(node, ProcessorNode):
-                complete &= self._below(node.children, keys, seen)
-                continue
-            matches, _ = self.index.resolve(node.type)
-            child = self._one(matches)
-            if child is None:
-                complete = False
-                continue
-            keys.update(child.declared())
-            below, whole = self._descendant_keys(node, child, seen)
-            keys |= below
-            complete &= whole
-        return complete
+    def _tree_writes(self) -> _Writes:
+        """What each skill node of the tree writes, worked out once for the whole tree."""
+        if self.writes is None:
+            shares: dict[int, tuple[frozenset[str], bool]] = {}
+            places = []
+            for node, _ in self.nodes:
+                if isinstance(node, SkillNode):
+                    if id(node) not in shares:
+                        shares[id(node)] = self._share(node)
+                    places.append((node, *shares[id(node)]))
+            self.writes = _Writes(places)
+        return self.writes
 
-    def _written(self, others: list[Node | CallProblem]) -> tuple[set[str], bool]:
-        """Blackboard keys the other nodes declare or remap onto (and those below them)."""
-        keys: set[str] = set()
-        complete = True
-        for node in others:
-            if not isinstance(node, SkillNode):
-                continue
-            keys.update(target for _, target in node.remap)
-            matches, _ = self.index.resolve(node.type)
-            child = self._one(matches)
-            if child is None or not child.complete:
-                complete = False
-                continue
-            keys.update(child.declared())
-            below, whole = self._descendant_keys(node, child)
-            keys |= below
-            complete &= whole
-        return keys, complete
+    def _share(self, node: SkillNode) -> tuple[frozenset[str], bool]:
+        """Blackboard keys one node declares or remaps onto (and those below it), and
+        whether that is all of them."""
+        keys = {target for _, target in node.remap}
+        child = self.view.one(node.type)
+        if child is None or not child.complete:
+            return frozenset(keys), False
+        keys |= child.declared()
+        below, whole = self.keys.below(node, child).value
+        return frozenset(keys | below), whole

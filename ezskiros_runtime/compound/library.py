@@ -10,6 +10,7 @@ the list in the shared doc), and further libraries a project names
 
 from __future__ import annotations
 
+import functools
 import os
 import re
 from collections.abc import Iterable, Mapping
@@ -28,6 +29,23 @@ def type_name(stype: str) -> str:
 ROBOT = "Robot"
 ROBOT_TYPE = "sumo:Agent"
 """SkiROS2 gives every description an inferred ``Robot`` parameter (legacy-skiros2-api §8.1)."""
+
+
+@functools.lru_cache(maxsize=4096)
+def _folders(path: str) -> tuple[str, ...]:
+    """The folders of an absolute file path, outermost first. Kept: ``nearest`` compares the
+    same few files for every child of every tree, and splitting them was most of its cost."""
+    return PurePath(path).parent.parts
+
+
+def _shared(here: tuple[str, ...], there: tuple[str, ...]) -> int:
+    """How many leading folders two paths share."""
+    count = 0
+    for a, b in zip(here, there):
+        if a != b:
+            break
+        count += 1
+    return count
 
 
 @dataclass(frozen=True)
@@ -144,18 +162,10 @@ class SkillIndex:
             return [info]
         if not path:
             return list(others)
-
-        def shared(other: DescriptionInfo) -> int:
-            count = 0
-            for a, b in zip(PurePath(os.path.abspath(path)).parent.parts,
-                            PurePath(os.path.abspath(other.path)).parent.parts):
-                if a != b:
-                    break
-                count += 1
-            return count
-
-        best = max(shared(o) for o in others)
-        return [o for o in others if shared(o) == best]
+        here = _folders(os.path.abspath(path))
+        shared = [_shared(here, _folders(os.path.abspath(o.path))) for o in others]
+        best = max(shared)
+        return [o for o, count in zip(others, shared) if count == best]
 
     def add_modified(self, description: str, key: str, element: str | None,
                      on_wrapper: bool) -> None:
