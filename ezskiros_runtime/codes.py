@@ -222,11 +222,16 @@ RULES: tuple[Rule, ...] = (
          skiros2="SkillInstanciator finds no description or instance of the type: PluginLoader.get "
          'raises "No plugin with name ... found!", or NodeExecutor.init raises "Skill ... '
          'is not available" when the compound skill runs'),
-    Rule("EZ302", "regex-child-type", "warning",
-         "A child type that matches a description only as a regular expression (\"Pick()\"); "
-         "SkiROS2 matches types with re.match, so it works by accident.",
+    Rule("EZ302", "regex-child-type", "error",
+         "A child type that matches a description only as a regular expression (\"Pick()\"). "
+         "SkiROS2 finds the description that way, but looks its instances up under the "
+         "literal type: a node without a label fails; one with a label loads the "
+         "implementation by name and works (info).",
          "Write the description's class name exactly.",
-         ("regex-child-type",)),
+         ("regex-child-type",),
+         skiros2="SkillInstanciator.assign_instance finds no instance under the literal type "
+         "and, with no label to load one by, NodeExecutor.init raises \"Skill ... is not "
+         "available\""),
     Rule("EZ303", "label-other-type", "error",
          "The label names an implementation of another description type; SkiROS2 runs it "
          "without a check (upstream issue #80).",

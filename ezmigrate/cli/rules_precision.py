@@ -1,14 +1,19 @@
-"""Measured precision of rule groups, rendered into docs/rules.md by ``rules_doc``.
+"""Measured precision of the rules, rendered into docs/rules.md by ``rules_doc``.
 
-The figures are what ``tests/lint/test_world_check.py`` (EZ4xx, on the fixture
-repositories) and ``tests/lint/test_lab_precision.py`` (every code, on
-``fixtures/lab_repo``) measure with every finding labelled by hand; the tests fail when a
-run reports other figures than these, so the document cannot claim what the tool does not do.
+The public repositories' figures come from ``bench/verdicts.csv`` (every warning and error
+line of ``check`` at their roots, judged by hand; ``bench/bench_precision.py`` measures a
+run against it, since CI has no copy of those repositories). The fixtures' figures are what
+``tests/lint/test_world_check.py`` (EZ4xx) and ``tests/lint/test_lab_precision.py`` (every
+code, on ``fixtures/lab_repo``) measure with every finding labelled by hand; the tests fail
+when a run reports other figures than these, so the document cannot claim what the tool
+does not do.
 """
 
 from __future__ import annotations
 
+import csv
 from dataclasses import dataclass
+from pathlib import Path
 
 from ezskiros_runtime.codes import BY_CODE
 
@@ -81,10 +86,55 @@ def _share(real: int, reported: int) -> str:
     return f"{real / reported:.0%}" if reported else "-"
 
 
+VERDICTS = Path(__file__).resolve().parents[2] / "bench" / "verdicts.csv"
+"""Every warning and error ``check`` reported at the root of the public SkiROS2 repositories,
+judged by hand against SkiROS2's source (``bench/bench_precision.py`` measures a run
+against it)."""
+PUBLIC_BEFORE = (126, 37)
+"""Warning and error lines on the same repositories before the severity contract (issue
+30): reported, judged real."""
+
+
+def public_rows(path: Path = VERDICTS) -> tuple[Row, ...]:
+    """One row per code of the verdicts' warning and error lines."""
+    with path.open(encoding="utf-8", newline="") as handle:
+        rows = [r for r in csv.DictReader(handle) if r["severity"] in ("warning", "error")]
+    codes = sorted({r["code"] for r in rows})
+    return tuple(Row(code, sum(r["code"] == code for r in rows),
+                     sum(r["code"] == code and r["verdict"] == "real" for r in rows))
+                 for code in codes)
+
+
+def _public_section() -> list[str]:
+    with VERDICTS.open(encoding="utf-8", newline="") as handle:
+        repositories = len({r["repository"] for r in csv.DictReader(handle)})
+    before_reported, before_real = PUBLIC_BEFORE
+    return [
+        "## Precision on the public SkiROS2 repositories",
+        "",
+        "Measured as a lab runs it: `ezmigrate check .` at the root of 21 public SkiROS2 "
+        "repositories (SkiROS2 itself, its standard, test and template libraries and their "
+        "forks, and the labs' repositories), every warning and error line judged by hand "
+        "against SkiROS2's source, each verdict naming the function that makes it real or "
+        f"not: `bench/verdicts.csv` ({repositories} repositories with a warning or an "
+        "error, commit, path, line, code, verdict, why). `python bench/bench_precision.py "
+        "FOLDER` runs `check` over a folder of checkouts and prints this table against the "
+        "verdicts; it fails on a line no verdict covers. These repositories were not "
+        "written for the tool.",
+        "",
+        *_table(public_rows()),
+        f"Before the severity contract the same repositories gave {before_reported} warning "
+        f"and error lines, {before_real} of them real "
+        f"({_share(before_real, before_reported)}).",
+        "",
+    ]
+
+
 def precision_section() -> list[str]:
     """The "Precision" part of docs/rules.md."""
     before_reported, before_real, missed = LAB_REPOSITORY_BEFORE
     out = [
+        *_public_section(),
         "## Precision of EZ4xx (world model)",
         "",
         f"Measured with `ezmigrate check {' '.join(WORLD_MODEL_PATHS)} --select EZ4` (each "
@@ -121,5 +171,6 @@ def precision_section() -> list[str]:
     return out
 
 
-__all__ = ["LAB_REPOSITORY", "LAB_REPOSITORY_BEFORE", "LAB_REPOSITORY_PATH", "WORLD_MODEL",
-           "WORLD_MODEL_PATHS", "WORLD_MODEL_SCENE", "Row", "precision_section"]
+__all__ = ["LAB_REPOSITORY", "LAB_REPOSITORY_BEFORE", "LAB_REPOSITORY_PATH", "PUBLIC_BEFORE",
+           "VERDICTS", "WORLD_MODEL", "WORLD_MODEL_PATHS", "WORLD_MODEL_SCENE", "Row",
+           "precision_section", "public_rows"]

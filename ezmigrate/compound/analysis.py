@@ -64,7 +64,7 @@ class Trees:
     labels: list[tuple[str, str | None]] = field(default_factory=list)
     bases: list[tuple[str, str]] = field(default_factory=list)
     """``(class, base)`` for every top-level class deriving from a named class."""
-    modified: list[tuple[str, str, str | None, bool]] = field(default_factory=list)
+    modified: list[tuple[str, str, str | None, bool, str]] = field(default_factory=list)
     """Parameters implementations add in ``modifyDescription`` (``static.modified_params``)."""
     seen: set[str] = field(default_factory=set)
     on_first_trace: Callable[[], None] | None = None
@@ -208,9 +208,9 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
         index.add_implementation(label, description)
     index.bases |= {base for cls, base in [*library.bases, *around.bases, *trees.bases]
                     if cls in index.descriptions and base in index.descriptions}
-    for description, key, element, on_wrapper in [*library.modified, *around.modified,
-                                                  *trees.modified]:
-        index.add_modified(description, key, element, on_wrapper)
+    for description, key, element, on_wrapper, label in [*library.modified,
+                                                         *around.modified, *trees.modified]:
+        index.add_modified(description, key, element, on_wrapper, label)
     index.unread = list(around.unread)
     index.launched = read.launched if read is not None else None
     index.launched_libraries = read.libraries if read is not None else frozenset()

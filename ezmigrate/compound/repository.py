@@ -54,7 +54,7 @@ class RepositoryScan:
     descriptions: list[DescriptionInfo] = field(default_factory=list)
     labels: list[tuple[str, str | None]] = field(default_factory=list)
     bases: list[tuple[str, str]] = field(default_factory=list)
-    modified: list[tuple[str, str, str | None, bool]] = field(default_factory=list)
+    modified: list[tuple[str, str, str | None, bool, str]] = field(default_factory=list)
     compounds: list[CompoundModel] = field(default_factory=list)
     untraced: set[str] = field(default_factory=set)
     """Description types whose compound implementation needs tracing (not done here)."""

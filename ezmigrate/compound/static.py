@@ -111,19 +111,19 @@ def described_classes(tree: ast.Module) -> list[tuple[str, ast.ClassDef]]:
     return found
 
 
-def modified_params(tree: ast.Module) -> list[tuple[str, str, str | None, bool]]:
-    """``(description, key, element type, on the wrapper)`` for each literal ``addParam``
-    in an implementation's ``modifyDescription(self, skill)``.
+def modified_params(tree: ast.Module) -> list[tuple[str, str, str | None, bool, str]]:
+    """``(description, key, element type, on the wrapper, implementation label)`` for each
+    literal ``addParam`` in an implementation's ``modifyDescription(self, skill)``.
 
     SkiROS2's ``SkillWrapper.setInstance`` calls ``instance.modifyDescription(wrapper)``:
     what is added to ``skill`` (the wrapper) is declared like the description's own
     parameters; what is added to ``self`` is not on the wrapper, so a ``specify`` of it is
     dropped."""
-    found: list[tuple[str, str, str | None, bool]] = []
+    found: list[tuple[str, str, str | None, bool, str]] = []
     for node in tree.body:
         if not isinstance(node, ast.ClassDef):
             continue
-        description, _ = _described(node)
+        description, label = _described(node)
         for member in node.body:
             if not (isinstance(member, ast.FunctionDef) and member.name == "modifyDescription"
                     and len(member.args.args) == 2 and description is not None):
@@ -138,7 +138,7 @@ def modified_params(tree: ast.Module) -> list[tuple[str, str, str | None, bool]]
                         and isinstance(call.args[0].value, str)):
                     continue
                 found.append((description, call.args[0].value, _element_type(call),
-                              call.func.value.id == wrapper))
+                              call.func.value.id == wrapper, label))
     return found
 
 

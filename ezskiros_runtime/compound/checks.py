@@ -312,8 +312,14 @@ class _Checker:
             names = ", ".join(d.name for d in matches)
             self.add("regex-child-type", node.line,
                      f"child type {node.type!r} matches {names} only as a regular "
-                     "expression (SkiROS2 matches types with re.match)", node.type,
-                     f"Write the type name exactly: {matches[0].name!r}.")
+                     "expression (SkiROS2 matches types with re.match)"
+                     + (": SkillInstanciator.assign_instance looks for an instance under "
+                        "the literal type, finds none, and the node has no label to load "
+                        "one by, so the compound skill fails when it runs" if not node.label
+                        else f"; the node's label {node.label!r} loads the implementation "
+                        "all the same (SkillInstanciator.add_instance)"), node.type,
+                     f"Write the type name exactly: {matches[0].name!r}.",
+                     None if not node.label else "info")
         if len(matches) != 1:
             return
         definitions = self.view.nearest(matches[0])
@@ -378,11 +384,15 @@ class _Checker:
         renamed: dict[str, str] = {}
         for key, target in node.remap:
             if key in declared:
-                if target in declared and target != key:
+                held = self.index.held_by(child.name, target, node.label) \
+                    if target in declared and target != key else False
+                if held is not False:  # None: modifyDescription of an unlabelled choice
                     self.add("remap-onto-declared", node.line,
                              f"remap {key!r} -> {target!r}: {child.name} already declares "
-                             f"{target!r}, so SkiROS2 rejects the remap and renames nothing",
-                             node.type)
+                             f"{target!r}, so SkiROS2 rejects the remap and renames nothing"
+                             + ("" if held else " (when an implementation whose "
+                                "modifyDescription adds it runs: the node has no label)"),
+                             node.type, None, None if held else "info")
                     continue
                 renamed[key] = target
                 self._element_types(node, child, key, target)

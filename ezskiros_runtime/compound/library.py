@@ -130,6 +130,10 @@ class SkillIndex:
     unread: list[str] = field(default_factory=list)
     """Files of the repository whose classes could not be read at all: a type not found may
     be defined there, so "unknown child type" is then at most informational."""
+    modified_by: dict[str, dict[str, set[str]]] = field(default_factory=dict)
+    """``{description: {key: labels}}`` for keys only some implementations add to the
+    wrapper in ``modifyDescription``: a node holds them only when one of those runs
+    (``SkillWrapper.setInstance``), so the node's label decides."""
 
     @classmethod
     def with_standard_library(cls) -> SkillIndex:
@@ -168,17 +172,31 @@ class SkillIndex:
         return [o for o, count in zip(others, shared) if count == best]
 
     def add_modified(self, description: str, key: str, element: str | None,
-                     on_wrapper: bool) -> None:
-        """A parameter an implementation of ``description`` adds in ``modifyDescription``:
-        to the wrapper (``skill.addParam``: declared like the description's own), or to
-        itself (``self.addParam``: not on the wrapper)."""
+                     on_wrapper: bool, label: str = "") -> None:
+        """A parameter the implementation ``label`` of ``description`` adds in
+        ``modifyDescription``: to the wrapper (``skill.addParam``: declared like the
+        description's own, but only on nodes that implementation runs: ``modified_by``),
+        or to itself (``self.addParam``: not on the wrapper)."""
         if not on_wrapper:
             self.self_added.setdefault(description, set()).add(key)
             return
         info = self.descriptions.get(description)
-        if info is not None and key not in info.params:
+        added = self.modified_by.setdefault(description, {})
+        if info is not None and (key not in info.params or key in added):
+            added.setdefault(key, set()).add(label)
             self.descriptions[description] = replace(info, params={**info.params,
                                                                    key: element})
+
+    def held_by(self, description: str, key: str, label: str) -> bool | None:
+        """Whether a node of ``description`` labelled ``label`` holds ``key`` that some
+        implementation adds in ``modifyDescription``: True or False when the label decides,
+        None when it is empty (the skill manager picks an implementation at run time)."""
+        labels = self.modified_by.get(description, {}).get(key)
+        if labels is None:
+            return True
+        if not label:
+            return None
+        return label in labels
 
     def launched_implementations(self, description: str, path: str) -> list[str] | None:
         """The labels implementing ``description``, when none is in the launch file's

@@ -172,3 +172,67 @@ def test_a_keyword_typo_in_a_branch_the_trace_did_not_take_is_found(tmp_path: Pa
     assert [(d.code, d.line, d.severity) for d in found] == [("EZ309", 22, "error")]
     assert "specfiy=" in found[0].message and "specify=" in found[0].message
     assert ez3(tmp_path / "fine", branch.replace("TYPO", "specify")) == []
+
+
+@pytest.mark.parametrize(("label", "severity"), [("", "error"), ("wait_here", "info")])
+def test_a_type_matched_only_as_a_regular_expression_fails_without_a_label(
+        tmp_path: Path, label: str, severity: str) -> None:
+    """SkillInstanciator finds the description by regex but its instances by the literal
+    type: without a label nothing loads one (issue 30, a lab's "cubes_and_update()")."""
+    found = ez3(tmp_path, f'skill(self.skill("Wai.", "{label}", specify={{"Duration": 1.0}}))')
+    assert [(d.code, d.severity) for d in found] == [("EZ302", severity)]
+
+
+TWO_IMPLEMENTATIONS = '''\
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+from skiros2_skill.core.skill import SkillBase
+from skiros2_skill.core.primitive import PrimitiveBase
+
+
+class Go(SkillDescription):
+    def createDescription(self):
+        self.addParam("Target", Element("skiros:Location"), ParamTypes.Required)
+
+
+class go_plain(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Go(), "go_plain")
+
+
+class go_via(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Go(), "go_via")
+
+    def modifyDescription(self, skill):
+        skill.addParam("Via", Element("skiros:Location"), ParamTypes.Optional)
+
+
+class Tour(SkillDescription):
+    def createDescription(self):
+        self.addParam("Via", Element("skiros:Location"), ParamTypes.Required)
+
+
+class tour(SkillBase):
+    def createDescription(self):
+        self.setDescription(Tour(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill(self.skill("Go", "LABEL", remap={"Target": "Via"}))
+'''
+
+
+@pytest.mark.parametrize(("label", "expected"), [
+    ("go_plain", []),  # adds nothing: the remap renames Target
+    ("go_via", [("EZ306", "error")]),  # its modifyDescription declares Via on the node
+    ("", [("EZ306", "info")]),  # the skill manager picks one at run time
+])
+def test_a_remap_onto_a_key_modify_description_adds_depends_on_the_label(
+        tmp_path: Path, label: str, expected: list[tuple[str, str]]) -> None:
+    """What an implementation adds in modifyDescription is on the nodes it runs, not on
+    every node of its description (issue 30, a lab's navigate_and_open_doors)."""
+    path = tmp_path / "tour.py"
+    path.write_text(TWO_IMPLEMENTATIONS.replace("LABEL", label), encoding="utf-8")
+    outcome = run_check([path], None, PoolConfig(workers=1))
+    assert codes([d for d in outcome.diagnostics if d.code.startswith("EZ3")]) == expected
