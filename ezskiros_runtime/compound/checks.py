@@ -441,15 +441,15 @@ class _Checker:
         if not node.remap or self.parent is None or not self.parent.complete:
             return
         writes = self._tree_writes()
-        if not writes.complete_without(node):
-            return
+        unsure = "" if writes.complete_without(node) else (
+            ", unless a node whose parameters this run could not read writes it")
         for key, target in node.remap:
             if target not in self.parent.declared() and not writes.by_others(node, target):
                 close = difflib.get_close_matches(target, sorted(self.parent.declared()), 1, 0.6)
                 self.add("remap-dangling", node.line,
                          f"remap {key!r} -> {target!r}: no parameter of "
                          f"{self.parent.name} and no other node of the tree declares "
-                         f"{target!r}, so it connects to nothing", node.type,
+                         f"{target!r}, so it connects to nothing{unsure}", node.type,
                          f"Did you mean {close[0]!r}?" if close else None)
 
     def _element_types(self, node: SkillNode, child: DescriptionInfo, key: str,

@@ -236,3 +236,18 @@ def test_a_remap_onto_a_key_modify_description_adds_depends_on_the_label(
     path.write_text(TWO_IMPLEMENTATIONS.replace("LABEL", label), encoding="utf-8")
     outcome = run_check([path], None, PoolConfig(workers=1))
     assert codes([d for d in outcome.diagnostics if d.code.startswith("EZ3")]) == expected
+
+
+def test_a_remap_onto_nothing_is_said_even_where_part_of_the_tree_is_unknown(
+        tmp_path: Path) -> None:
+    """A remap value no parameter and no known node declares (the value never reaches the
+    child) is EZ308 also when another node's parameters are unknown, saying so (issue 30,
+    a lab's Problem1 remapped onto 'Object1' while its parent declares 'Waste1')."""
+    body = ('skill(self.skill("Mystery", ""),\n'
+            '      self.skill("Wait", "", remap={"Duration": "Nowhere"}))')
+    found = [d for d in ez3(tmp_path / "a", body) if d.code == "EZ308"]
+    assert [(d.code, d.severity) for d in found] == [("EZ308", "info")]
+    assert "unless a node whose parameters this run could not read writes it" in \
+        found[0].message
+    fine = body.replace('"Nowhere"', '"Pause"')
+    assert [d for d in ez3(tmp_path / "b", fine) if d.code == "EZ308"] == []
