@@ -24,11 +24,18 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 
 
+OUTPUTS: dict[str, set[str]] = {}
+"""What each ``check`` printed on stdout, by command: speed never changes a finding."""
+
+
 def _timed(args: list[str], cwd: Path) -> float:
     started = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "ezmigrate", *args], cwd=cwd, check=False,
-                   capture_output=True, timeout=3600)
-    return time.perf_counter() - started
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", *args], cwd=cwd, check=False,
+                         capture_output=True, text=True, timeout=3600)
+    elapsed = time.perf_counter() - started
+    if args[0] == "check":
+        OUTPUTS.setdefault("check", set()).add(run.stdout)
+    return elapsed
 
 
 def main() -> None:
@@ -50,16 +57,22 @@ def main() -> None:
                 _timed(["rewrite", "--no-verify", "."], repo))
             shutil.rmtree(repo / ".ezmigrate_cache", ignore_errors=True)
             rows.setdefault("check, empty cache", []).append(
-                _timed(["check", "--exit-zero", "."], repo))
+                _timed(["check", "--exit-zero", "--output-format", "json", "."], repo))
             rows.setdefault("check again, cache of the first", []).append(
-                _timed(["check", "--exit-zero", "."], repo))
+                _timed(["check", "--exit-zero", "--output-format", "json", "."], repo))
             rows.setdefault("check --no-cache", []).append(
-                _timed(["check", "--exit-zero", "--no-cache", "."], repo))
+                _timed(["check", "--exit-zero", "--no-cache", "--output-format", "json", "."],
+                       repo))
     print(f"| whole command ({options.files} files, skill share {options.skill_share}) "
           "| median s |")
     print("|---|---:|")
     for name, times in rows.items():
         print(f"| {name} | {statistics.median(times):.2f} |")
+    same = len(OUTPUTS["check"]) == 1
+    print(f"\ncheck's output with an empty cache, with its cache and with --no-cache: "
+          f"{'byte-identical' if same else 'DIFFERENT'}")
+    if not same:
+        raise SystemExit(1)
 
 
 if __name__ == "__main__":

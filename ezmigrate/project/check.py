@@ -35,6 +35,7 @@ from .cross_file import RUNTIME_MARKER
 from .implementation_code import IMPLEMENTATION
 from .launch import Launch, with_init_scene
 from .load_cache import LoadCache, cached_loads
+from .outcome_cache import OutcomeCache, read_all, run_key
 from .progress import Progress
 from .settle import settle
 from .uninferable import UNINFERABLE, UNKNOWN
@@ -172,6 +173,10 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     candidates, notes = discover([p for p in paths if p.suffix != SCENE_SUFFIX], exclude,
                                  include_vendored=include_vendored)
     outcome = CheckOutcome(files=len(candidates), notes=notes)
+    kept = _kept_run(paths, candidates, world, launch, skill_libraries, index, pool,
+                     compounds, trace, cache_dir)
+    if kept is not None and kept[1] is not None:
+        return kept[1]
     if progress is not None:
         progress(f"checking {len(candidates)} files")
     trees = None
@@ -193,10 +198,47 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
             outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
             launch.workspace_unresolved if launch is not None else None,
             index.prefixes if index is not None else ())
+        if kept is not None:
+            OutcomeCache(kept[0][0]).put(kept[0][1], outcome.files, outcome.skills,
+                                         outcome.notes, outcome.diagnostics)
         return outcome
     finally:
         for workers in standby:
             workers.close()
+
+
+def _kept_run(paths: list[Path], candidates: list[Candidate], world: WorldRun,
+              launch: Launch | None, libraries: tuple[Path, ...],
+              index: OntologyIndex | None, pool: PoolConfig, compounds: bool, trace: bool,
+              cache_dir: Path | None
+              ) -> tuple[tuple[Path, str], CheckOutcome | None] | None:
+    """``((cache folder, key), the kept outcome or None)`` for a run over folders with a
+    cache (``outcome_cache``), None when the run is not kept (named files, ``--no-cache``,
+    a file that cannot be read)."""
+    if cache_dir is None or not paths or not all(p.is_dir() for p in paths):
+        return None
+    from ..compound.analysis import library_candidates
+
+    extra = [*world.scenes, *([launch.path] if launch is not None else []),
+             *(c.path for c, _ in library_candidates(list(libraries)))]
+    files = read_all([*(c.path for c in candidates), *extra])
+    if files is None:
+        return None
+    key = run_key(files, {
+        "ontology": index.fingerprint if index is not None else "",
+        "interpreter": pool.python or "", "timeout": pool.timeout,
+        "single_valued": list(world.single_valued) if world.single_valued is not None
+        else None, "start_scene": str(world.start_scene or ""),
+        "launch": sorted(launch.values.items()) if launch is not None else None,
+        "compounds": compounds, "trace": trace, "paths": [str(p) for p in paths]})
+    hit = OutcomeCache(cache_dir).get(key)
+    if hit is None:
+        return (cache_dir, key), None
+    read = {str(c.path) for c in candidates} | {str(p) for p in world.scenes}
+    sources = {path: _text(data) for path, data in files if path in read}
+    return (cache_dir, key), CheckOutcome(files=hit["files"], skills=hit["skills"],
+                                          diagnostics=hit["diagnostics"], sources=sources,
+                                          notes=hit["notes"])
 
 
 def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyIndex | None,

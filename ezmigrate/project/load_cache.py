@@ -67,18 +67,24 @@ class LoadCache:
     def put(self, key: str, outcome: LoadOutcome) -> None:
         if outcome.status not in CACHED:
             return
-        folder = self.folder / key[:2]
-        try:
-            if not self.folder.exists():
-                self.folder.mkdir(parents=True)
-                (self.folder / ".gitignore").write_text("# made by ezmigrate check\n*\n")
-            folder.mkdir(exist_ok=True)
-            handle, temporary = tempfile.mkstemp(dir=folder, suffix=".tmp")
-            with os.fdopen(handle, "w", encoding="utf-8") as stream:
-                json.dump(outcome.to_json(), stream)
-            os.replace(temporary, folder / f"{key}.json")
-        except OSError:  # a read-only checkout: no cache, same results
-            return
+        write_entry(self.folder, key[:2], f"{key}.json", json.dumps(outcome.to_json()))
+
+
+def write_entry(cache: Path, folder: str, name: str, text: str) -> None:
+    """``cache/folder/name`` holding ``text``, written whole (a temporary file renamed into
+    place); the cache folder gets its ``.gitignore`` when it is made. A read-only checkout
+    keeps nothing: same results, no cache."""
+    try:
+        if not cache.exists():
+            cache.mkdir(parents=True)
+            (cache / ".gitignore").write_text("# made by ezmigrate check\n*\n")
+        (cache / folder).mkdir(exist_ok=True)
+        handle, temporary = tempfile.mkstemp(dir=cache / folder, suffix=".tmp")
+        with os.fdopen(handle, "w", encoding="utf-8") as stream:
+            stream.write(text)
+        os.replace(temporary, cache / folder / name)
+    except OSError:
+        return
 
 
 def cached_loads(jobs: Sequence[LoadJob], sources: Sequence[bytes],

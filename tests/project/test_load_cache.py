@@ -12,6 +12,8 @@ from ezmigrate.project.load_cache import FOLDER, LoadCache, cached_loads
 from ezmigrate.verify.protocol import LoadJob, LoadOutcome
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
+LOADS = "[0-9a-f][0-9a-f]/*.json"
+"""The loads' entries (whole runs are kept apart, in ``outcomes/``: test_outcome_cache)."""
 
 
 def _check(repo: Path, *extra: str) -> subprocess.CompletedProcess[str]:
@@ -33,7 +35,7 @@ def test_the_second_run_reads_the_cache_and_finds_the_same(tmp_path: Path) -> No
     repo = _repo(tmp_path)
     first = _check(repo)
     assert first.returncode == 0, first.stderr
-    entries = sorted((repo / FOLDER).glob("*/*.json"))
+    entries = sorted((repo / FOLDER).glob(LOADS))
     assert len(entries) == 3  # one loaded outcome per EzSkiROS file
     assert (repo / FOLDER / ".gitignore").read_text().splitlines()[-1] == "*"
     stamps = [entry.stat().st_mtime_ns for entry in entries]
@@ -47,14 +49,14 @@ def test_the_second_run_reads_the_cache_and_finds_the_same(tmp_path: Path) -> No
 def test_a_changed_file_misses_and_a_damaged_entry_is_a_miss(tmp_path: Path) -> None:
     repo = _repo(tmp_path)
     first = _check(repo)
-    for entry in (repo / FOLDER).glob("*/*.json"):
+    for entry in (repo / FOLDER).glob(LOADS):
         entry.write_text("{not json")
     assert _check(repo).stdout == first.stdout
     helper = repo / "helpers.py"  # any Python file of the run may be imported: all miss
     helper.write_text("X = 1\n")
-    before = len(list((repo / FOLDER).glob("*/*.json")))
+    before = len(list((repo / FOLDER).glob(LOADS)))
     _check(repo)
-    assert len(list((repo / FOLDER).glob("*/*.json"))) == before + 3
+    assert len(list((repo / FOLDER).glob(LOADS))) == before + 3
 
 
 def test_cached_loads_loads_only_the_misses_in_one_batch(tmp_path: Path) -> None:

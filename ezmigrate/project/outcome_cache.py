@@ -1,0 +1,90 @@
+"""``check``'s cache of whole runs: a second ``check`` of an unchanged repository reads and
+hashes its files, and nothing else (issue 31).
+
+``load_cache`` keeps the loads of EzSkiROS files; the static pass, the compound trees, the
+checks inside implementations and the world model ran again on every run, and on a large
+repository they are most of what is left. Their findings depend on nothing but what the
+run reads and how it is set up, so the key is all of it: every Python file of the run
+(path and bytes), every scene (the run's and the launch file's ``init_scene``), the launch
+file, the skill libraries' files, the ontology's fingerprint, the interpreter, the settings
+that change what is analysed (single-valued relations, whether trees are read, whether
+user code may run) and the code of this release (a digest of the two packages' sources,
+so that a changed rule never meets an old entry). A hit is the outcome as the run left it
+(diagnostics before selection, so ``--select`` and suppressions apply as on a miss);
+anything missing or damaged is a miss. Only runs over folders are kept: a run over named
+files (pre-commit) also reads the repository around them, which the key would have to
+read too.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import hashlib
+import json
+import sys
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Any
+
+from .. import __version__
+from ..lint.diagnostic import Diagnostic
+from .load_cache import write_entry
+
+OUTCOMES = "outcomes"
+"""The sub-folder of ``.ezmigrate_cache`` the runs are kept in."""
+
+
+@functools.lru_cache(maxsize=1)
+def code_digest() -> str:
+    """A digest of this release's source (``ezmigrate`` and ``ezskiros_runtime``)."""
+    digest = hashlib.sha256(__version__.encode())
+    root = Path(__file__).resolve().parents[2]
+    for package in ("ezmigrate", "ezskiros_runtime"):
+        for path in sorted((root / package).rglob("*.py")):
+            digest.update(path.relative_to(root).as_posix().encode() + b"\0")
+            digest.update(hashlib.sha256(path.read_bytes()).digest())
+    return digest.hexdigest()
+
+
+def run_key(files: Iterable[tuple[str, bytes]], settings: dict[str, Any]) -> str:
+    """The key of a run: every file it reads (path and bytes), its settings and the code."""
+    digest = hashlib.sha256(json.dumps({**settings, "code": code_digest(),
+                                        "python": sys.version}, sort_keys=True).encode())
+    for path, data in sorted(files):
+        digest.update(path.encode() + b"\0" + hashlib.sha256(data).digest())
+    return digest.hexdigest()
+
+
+def read_all(paths: Iterable[Path]) -> list[tuple[str, bytes]] | None:
+    """``(path, bytes)`` of each file; None when one cannot be read (no caching then)."""
+    found = []
+    for path in paths:
+        try:
+            found.append((str(path), path.read_bytes()))
+        except OSError:
+            return None
+    return found
+
+
+class OutcomeCache:
+    """Whole runs of ``check`` by key, in ``folder/outcomes``."""
+
+    def __init__(self, folder: Path) -> None:
+        self.folder = folder
+
+    def get(self, key: str) -> dict[str, Any] | None:
+        """The stored run (``diagnostics`` as ``Diagnostic`` objects), or None."""
+        try:
+            data = json.loads((self.folder / OUTCOMES / f"{key}.json").read_text("utf-8"))
+            data["diagnostics"] = [Diagnostic(**d) for d in data["diagnostics"]]
+        except (OSError, ValueError, TypeError, KeyError):
+            return None
+        return dict(data)
+
+    def put(self, key: str, files: int, skills: int, notes: list[str],
+            diagnostics: list[Diagnostic]) -> None:
+        """Keep a run (written whole; a read-only checkout keeps nothing)."""
+        payload = {"files": files, "skills": skills, "notes": notes,
+                   "diagnostics": [dataclasses.asdict(d) for d in diagnostics]}
+        write_entry(self.folder, OUTCOMES, f"{key}.json", json.dumps(payload))

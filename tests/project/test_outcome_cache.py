@@ -1,0 +1,103 @@
+"""``check`` keeps whole runs (issue 31): a second run of an unchanged repository gives the
+same bytes without analysing anything again, and any change of what the run reads misses.
+
+"Without analysing" is held by construction, not by a clock: a compound skill whose tree
+only tracing can read writes a marker file when the tracing child imports it, so a run that
+traced it leaves the marker and one that did not leaves none.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+from ezmigrate.project.load_cache import FOLDER
+from ezmigrate.project.outcome_cache import OUTCOMES
+
+TRACED = '''\
+import pathlib
+pathlib.Path(__file__).with_name("traced.marker").write_text("imported")
+
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+from skiros2_skill.core.skill import SkillBase
+
+
+class Tour(SkillDescription):
+    def createDescription(self):
+        self.addParam("Pause", 1.0, ParamTypes.Optional)
+
+
+class tour(SkillBase):
+    def createDescription(self):
+        self.setDescription(Tour(), self.__class__.__name__)
+
+    def expand(self, skill):
+        for key in ("Duration",):
+            skill(self.skill("Wait", "", specify={"Time": 1.0}))
+'''
+
+SCENE = """\
+@prefix owl: <http://www.w3.org/2002/07/owl#> .
+@prefix skiros: <http://rvmi.aau.dk/ontologies/skiros.owl#> .
+skiros:Scene-0 a skiros:Scene, owl:NamedIndividual ;
+    skiros:contain skiros:Location-1 .
+skiros:Location-1 a skiros:Location, owl:NamedIndividual{extra} .
+"""
+
+
+def _check(repo: Path, *extra: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero",
+                           "--output-format", "json", *extra, "."], cwd=repo,
+                          capture_output=True, text=True, timeout=600, check=False)
+
+
+def _repo(tmp_path: Path) -> Path:
+    repo = tmp_path / "repo"
+    (repo / "pkg").mkdir(parents=True)
+    (repo / "pkg" / "tour.py").write_text(TRACED, encoding="utf-8")
+    (repo / "scene.turtle").write_text(SCENE.format(extra=""), encoding="utf-8")
+    subprocess.run(["git", "init", "-q", str(repo)], check=True)
+    return repo
+
+
+def test_an_unchanged_repository_is_answered_from_the_kept_run(tmp_path: Path) -> None:
+    repo = _repo(tmp_path)
+    marker = repo / "pkg" / "traced.marker"
+    first = _check(repo)
+    assert first.returncode == 0, first.stderr
+    assert "EZ307" in first.stdout and marker.exists()  # the tree was traced
+    assert len(list((repo / FOLDER / OUTCOMES).glob("*.json"))) == 1
+    marker.unlink()
+    second = _check(repo)
+    assert (second.stdout, second.stderr) == (first.stdout, first.stderr)
+    assert not marker.exists()  # nothing was traced again
+    uncached = _check(repo, "--no-cache")
+    assert uncached.stdout == first.stdout and marker.exists()
+
+
+def test_what_the_run_reads_is_the_key(tmp_path: Path) -> None:
+    repo = _repo(tmp_path)
+    first = _check(repo)
+    (repo / "scene.turtle").write_text(SCENE.format(extra=" ;\n    skiros:hasA skiros:Gone-9"),
+                                       encoding="utf-8")
+    changed = _check(repo)
+    assert "EZ404" in changed.stdout and "EZ404" not in first.stdout
+    (repo / "pkg" / "tour.py").write_text(TRACED.replace('"Time"', '"Duration"'),
+                                          encoding="utf-8")
+    fixed = _check(repo)
+    assert "EZ307" not in fixed.stdout
+    for entry in (repo / FOLDER / OUTCOMES).glob("*.json"):
+        entry.write_text("{not json")  # a damaged entry is a miss, and the run is redone
+    assert _check(repo).stdout == fixed.stdout
+
+
+def test_a_run_over_named_files_is_not_kept(tmp_path: Path) -> None:
+    repo = _repo(tmp_path)
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero",
+                          "pkg/tour.py"], cwd=repo, capture_output=True,
+                         text=True, timeout=600, check=False)
+    assert run.returncode == 0, run.stderr
+    assert not (repo / FOLDER / OUTCOMES).exists()
