@@ -5,12 +5,12 @@ back, repeat); `runner` reads the files and runs the codemod in parallel workers
 `import_scan` and `cross_file` for what links files; `holding` and `static_refusal` hold
 back the skills that will not be written; `session` is ``rewrite`` (it writes what settled,
 under `interrupt`'s deferral) and `earlier` adds what an earlier run migrated to its report;
-`check` is ``check``, with `load_cache` for its second run, `launch` for the launch
-files it reads, `uninferable` judging EZ105 and EZ209 by what the trees pass and the scenes
-hold, and `implementation_code` for the checks inside implementation classes; `target`
-says which robot's Python the code is for; `progress` draws the progress line;
-`holdpoint` lets a test stop a run at a named point; `stdin` is ``rewrite -`` and
-``check -`` (one file in, one whole file out) and `fixes` is ``check --fix`` and ``--diff``
-(the command line prints what they return). May import `compound`,
+`check` is ``check``, with `load_cache` and `outcome_cache` for its second run,
+`launch` for the launch files it reads, `uninferable` judging EZ105 and EZ209 by what the
+trees pass and the scenes hold, and `implementation_code` for the checks inside
+implementation classes; `target` says which robot's Python the code is for; `progress`
+draws the progress line; `holdpoint` lets a test stop a run at a named point; `stdin` is
+``rewrite -`` and ``check -`` (one file in, one whole file out) and `fixes` is ``check
+--fix`` and ``--diff`` (the command line prints what they return). May import `compound`,
 `lint`, `codemod`, `verify`, `report` and `files`; never the command line.
 """
