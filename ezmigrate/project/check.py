@@ -317,11 +317,13 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
         [(str(c.path), [SkillModel.from_json(m) for m in o.models])
          for c, o in zip(loadable, outcomes, strict=True) if o.loaded], index,
         outcome.sources)
+    implementing = [(c, tree) for c, data in read if b"setDescription" in data
+                    for tree in (parse(data),) if tree is not None]  # parsed once for both
     if compound.skills is not None:
-        outcome.diagnostics += _implementations(read, compound.skills, index, world,
+        outcome.diagnostics += _implementations(implementing, compound.skills, index, world,
                                                 outcome.sources)
-    outcome.diagnostics = _judge_uninferable(outcome.diagnostics, read, compound, world,
-                                             index)
+    outcome.diagnostics = _judge_uninferable(outcome.diagnostics, implementing, compound,
+                                             world, index)
     outcome.diagnostics.sort(key=lambda d: (d.path, d.line, d.column, d.code))
     return outcome
 
@@ -335,7 +337,8 @@ class _Compound:
     skills: SkillIndex | None = None
 
 
-def _judge_uninferable(diagnostics: list[Diagnostic], read: list[tuple[Candidate, bytes]],
+def _judge_uninferable(diagnostics: list[Diagnostic],
+                       implementing: list[tuple[Candidate, ast.Module]],
                        compound: _Compound, world: WorldRun,
                        index: OntologyIndex | None) -> list[Diagnostic]:
     """EZ105 kept a warning only where grounding by type can pick the wrong element
@@ -344,14 +347,13 @@ def _judge_uninferable(diagnostics: list[Diagnostic], read: list[tuple[Candidate
 
     if not any(d.code in (UNINFERABLE, UNKNOWN) for d in diagnostics):
         return diagnostics
-    trees = [tree for _, data in read if b"setDescription" in data
-             for tree in (parse(data),) if tree is not None]
     passed = keys_passed(compound.models, compound.skills) \
         if compound.skills is not None else {}
-    return judge(diagnostics, keys_read(trees), passed, _scene_counter(world, index))
+    return judge(diagnostics, keys_read(tree for _, tree in implementing), passed,
+                 _scene_counter(world, index))
 
 
-def _implementations(read: list[tuple[Candidate, bytes]], skills: SkillIndex,
+def _implementations(implementing: list[tuple[Candidate, ast.Module]], skills: SkillIndex,
                      index: OntologyIndex | None, world: WorldRun,
                      sources: dict[str, str]) -> list[Diagnostic]:
     """EZ109 and EZ214 in the implementation classes of the run (``implementation_code``):
@@ -369,10 +371,7 @@ def _implementations(read: list[tuple[Candidate, bytes]], skills: SkillIndex,
                                  and index.is_class(iri))
 
     found = []
-    for candidate, data in read:
-        tree = parse(data) if b"setDescription" in data else None
-        if tree is None:
-            continue
+    for candidate, tree in implementing:
         path = str(candidate.path)
         where = Positions(sources.get(path, ""))
         found += [diagnostic(path, where, kind, line, message, skill, fix)

@@ -14,7 +14,9 @@ Runs on the robot's Python 3.8 with rdflib 4.2.2 as well as on rdflib 7.
 from __future__ import annotations
 
 import contextlib
+import functools
 import logging
+import os
 import re
 import warnings
 from dataclasses import dataclass, field
@@ -110,15 +112,24 @@ class Scene:
 
 def read_scene(path: str | Path, text: str | None = None) -> Scene:
     """Parse a Turtle scene (``text`` if given, else the file). Raises ``SceneError`` with
-    the file and line when rdflib cannot read it."""
-    from rdflib import BNode, Graph, Literal, URIRef
+    the file and line when rdflib cannot read it.
 
+    A run reads the same scene for several passes (its checks, the classes it types, the
+    elements EZ105 counts): the parse is kept per path and text, and callers treat the
+    ``Scene`` as read-only."""
     where = str(path)
     if text is None:
         try:
             text = Path(path).read_text(encoding="utf-8")
         except (OSError, UnicodeError) as error:
             raise SceneError(where, 0, f"cannot be read: {error}") from error
+    return _parsed(where, text)
+
+
+@functools.lru_cache(maxsize=64)
+def _parsed(where: str, text: str) -> Scene:
+    from rdflib import BNode, Graph, Literal, URIRef
+
     graph = Graph()
     try:
         with _quiet_rdflib():
@@ -254,7 +265,19 @@ def ontology_individuals(paths: list[str]) -> dict[str, list[str]]:
     """``{iri: [classes]}`` of the individuals the ontology files declare (a robot
     description in ``owl/robot.owl``): the world model loads them with the ontology, so a
     scene may relate to them without defining them. Files that cannot be read add nothing
-    (loading the ontology already reported them)."""
+    (loading the ontology already reported them). Every scene of a run asks for the same
+    files: they are parsed once per state of the files (path, size, modification time)."""
+    def state(path: str) -> tuple[str, int, int]:
+        try:
+            stat = os.stat(path)
+        except OSError:
+            return path, -1, -1
+        return path, stat.st_size, stat.st_mtime_ns
+    return dict(_individuals(tuple(state(p) for p in paths)))
+
+
+@functools.lru_cache(maxsize=8)
+def _individuals(states: tuple[tuple[str, int, int], ...]) -> dict[str, list[str]]:
     from rdflib import URIRef
 
     from ..ontology.errors import OntologyError
@@ -266,7 +289,7 @@ def ontology_individuals(paths: list[str]) -> dict[str, list[str]]:
 
     found: dict[str, list[str]] = {}
     try:
-        files = read_ontology_files(collect_ontology_files([Path(p) for p in paths]))
+        files = read_ontology_files(collect_ontology_files([Path(p) for p, _, _ in states]))
     except OntologyError:
         return found
     for entry in files:

@@ -1,0 +1,72 @@
+"""``ezmigrate check`` at the root of real repositories against the parse floor (issue 31).
+
+    python bench/bench_public.py CHECKOUTS [--runs 2]
+
+CHECKOUTS is a folder of repository checkouts (``bench_precision.py`` uses the same one).
+For each, in one process, the floor: read every Python file ``check`` would read
+(``discover``) and ``ast.parse`` those that hold ``createDescription`` (every description
+and implementation does; the others ``check`` never parses). Then the whole command,
+``check --no-cache --jobs 2 .`` (start-up and the ontology included), and a second ``check``
+with the cache the first one left. Each figure is the minimum of ``--runs``; the totals
+are over all the repositories, as a lab with many packages would see them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from ezmigrate.files.discover import discover
+
+
+def floor(checkout: Path) -> float:
+    """Seconds to read every file of the run and parse the skill files."""
+    started = time.perf_counter()
+    found, _ = discover([checkout])
+    for candidate in found:
+        data = candidate.path.read_bytes()
+        if b"createDescription" in data:
+            try:
+                ast.parse(data)
+            except (SyntaxError, ValueError):
+                pass
+    return time.perf_counter() - started
+
+
+def command(checkout: Path, *extra: str) -> float:
+    started = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero", "--jobs", "2",
+                    *extra, "."], cwd=checkout, capture_output=True, check=False, timeout=1800)
+    return time.perf_counter() - started
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("checkouts", type=Path)
+    parser.add_argument("--runs", type=int, default=2)
+    args = parser.parse_args(argv)
+    totals = [0.0, 0.0, 0.0]
+    print("| repository | floor (s) | check (s) | ratio | second check (s) |")
+    print("|---|---:|---:|---:|---:|")
+    for checkout in sorted(p for p in args.checkouts.iterdir() if p.is_dir()):
+        low = min(floor(checkout) for _ in range(args.runs))
+        first = min(command(checkout, "--no-cache") for _ in range(args.runs))
+        shutil.rmtree(checkout / ".ezmigrate_cache", ignore_errors=True)
+        command(checkout)
+        second = min(command(checkout) for _ in range(args.runs))
+        shutil.rmtree(checkout / ".ezmigrate_cache", ignore_errors=True)
+        totals = [totals[0] + low, totals[1] + first, totals[2] + second]
+        print(f"| {checkout.name} | {low:.3f} | {first:.2f} | {first / low:.0f}x | "
+              f"{second:.2f} |")
+    print(f"| **all** | **{totals[0]:.2f}** | **{totals[1]:.2f}** | "
+          f"**{totals[1] / totals[0]:.0f}x** | **{totals[2]:.2f}** |")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
