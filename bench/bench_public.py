@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import ast
+import contextlib
 import shutil
 import subprocess
 import sys
@@ -31,10 +32,8 @@ def floor(checkout: Path) -> float:
     for candidate in found:
         data = candidate.path.read_bytes()
         if b"createDescription" in data:
-            try:
+            with contextlib.suppress(SyntaxError, ValueError):
                 ast.parse(data)
-            except (SyntaxError, ValueError):
-                pass
     return time.perf_counter() - started
 
 

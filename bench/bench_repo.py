@@ -286,6 +286,7 @@ from pathlib import Path
 from ezmigrate.files.discover import discover
 from ezmigrate.project.settle import settle, verify_changed
 from ezmigrate.project.session import RewriteOptions
+from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.config import resolve_ontology_paths
 from ezskiros_runtime.ontology.load import load_index
 
@@ -293,7 +294,8 @@ tree, jobs = Path(sys.argv[1]), int(sys.argv[2])
 source = resolve_ontology_paths(None, start=tree)
 index = load_index(list(source.paths) or None)
 options = RewriteOptions(paths=[tree], dry_run=True, jobs=jobs,
-                         ontology=tuple(str(p) for p in source.paths))
+                         pool=PoolConfig(workers=jobs,
+                                         ontology=tuple(str(p) for p in source.paths)))
 candidates, _ = discover([tree])
 migrated = settle(candidates, index, jobs)
 changed = [m for m in migrated if m.result.changed]

@@ -257,13 +257,12 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     verifier = verified_with(python, robot) if verify else ""
     if verifier:
         click.echo(f"ezmigrate: {verifier}", err=True)
+    pool = replace(options.pool(ontology_files), python=python)  # verification and tracing
     request = RewriteOptions(
         paths=list(paths), dry_run=dry_run, check=check, exclude=options.exclude,
-        jobs=options.jobs, output_dir=output_dir, verify=verify, timeout=options.timeout,
-        python=python, python_given=options.python is not None, ignore_order=ignore_order,
-        ignore_labels=ignore_labels,
-        ontology=ontology_files, project=options.project, target=robot.version,
-        include_vendored=include_vendored, package_xml=package_xml)
+        jobs=options.jobs, output_dir=output_dir, verify=verify, pool=pool,
+        ignore_order=ignore_order, ignore_labels=ignore_labels, project=options.project,
+        target=robot.version, include_vendored=include_vendored, package_xml=package_xml)
     from ..project.earlier import whole_tree
 
     outcome = run_rewrite(request, index)
@@ -289,7 +288,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
 
         compounds = compound_report(
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
-            options.pool(ontology_files), options.skill_libraries, paths, options.exclude)
+            pool, options.skill_libraries, paths, options.exclude)
         scenes = _scene_section(paths, options.exclude, index)
     _finish(results, report, request.writes, check, strict,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,

@@ -31,6 +31,8 @@ from .settle import Checks, settle
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
+    from ..verify.pool import PoolConfig
+
 
 @dataclass
 class RewriteOptions:
@@ -43,15 +45,12 @@ class RewriteOptions:
     jobs: int = field(default_factory=default_jobs)
     output_dir: Path | None = None
     verify: bool = True
-    timeout: float = 20.0
-    python: str | None = None
-    """The interpreter verification loads files with (None: ours, see verify.interpreters)."""
-    python_given: bool = False
-    """``python`` is the user's choice, kept for every file (``PoolConfig.python_given``)."""
+    pool: PoolConfig | None = None
+    """How verification loads files: the one pool the command resolved (workers, timeout,
+    the ontology files, the robot's interpreter), shared with the report's tracing; None:
+    the defaults with ``jobs`` workers."""
     ignore_order: bool = False
     ignore_labels: bool = False
-    ontology: tuple[str, ...] = ()
-    """Resolved ontology files for verification workers (empty: the bundled default)."""
     project: Path | None = None
     """The folder of the ``pyproject.toml`` in use: excludes also match relative to it."""
     target: tuple[int, int] | None = None
@@ -72,9 +71,7 @@ class RewriteOptions:
             return None
         from ..verify.pool import PoolConfig
 
-        return Checks(PoolConfig(workers=self.jobs, timeout=self.timeout,
-                                 ontology=self.ontology, python=self.python,
-                                 python_given=self.python_given),
+        return Checks(self.pool or PoolConfig(workers=self.jobs),
                       Comparison(self.ignore_order, self.ignore_labels))
 
 
