@@ -212,6 +212,14 @@ RULES: tuple[Rule, ...] = (
          "verbatim, so the query finds nothing or the element gets the wrong type.",
          "Use the class the suggestion names.",
          ("implementation-element-typo",)),
+    Rule("EZ215", "implementation-unknown-property", "info",
+         "Implementation code reads a property (getProperty, hasProperty) that nothing in "
+         "the repository sets and no loaded ontology or scene declares. Info: SkiROS2 "
+         "makes property names at run time (setProperty adds any name), so another "
+         "package may set it.",
+         "Check the name against the code that sets the property, or declare it in the "
+         "lab's ontology.",
+         ("implementation-unknown-property",)),
     # EZ3xx: compound skills (the behaviour trees built in expand)
     Rule("EZ301", "unknown-child-type", "error",
          "A child type that no loadable description matches; the compound skill fails when "

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -359,24 +359,48 @@ def _implementations(implementing: list[tuple[Candidate, ast.Module]], skills: S
     """EZ109 and EZ214 in the implementation classes of the run (``implementation_code``):
     classes are known when the ontology or a scene of the run types an element with them."""
     from ezskiros_runtime.dsl.vocabulary import to_iri
+    from ezskiros_runtime.world.scene import SceneError, read_scene
 
-    from .implementation_code import implementation_findings
+    from .implementation_code import implementation_findings, properties_set
 
     typed = scene_classes(world.scenes)
     classes = {*(index.compact(c) for c in index.classes), *typed} if index else set(typed)
+    made = properties_set(tree for _, tree in implementing)
+    for scene_path in world.scenes:
+        try:
+            scene = read_scene(scene_path)
+        except (SceneError, OSError, UnicodeError):
+            continue
+        made |= {scene.compact(v.property) for v in scene.values}
 
     def known(name: str) -> bool:
         iri = to_iri(index, name) if index is not None else None
         return name in typed or (iri is not None and index is not None
                                  and index.is_class(iri))
 
-    found = []
+    def property_known(name: str) -> bool:
+        iri = to_iri(index, name) if index is not None else None
+        return name in made or index is None or (iri is not None
+                                                 and index.property(iri) is not None)
+
+    found: list[Diagnostic] = []
+    properties: dict[str, list[int]] = {}  # an unknown property: once per project
     for candidate, tree in implementing:
         path = str(candidate.path)
         where = Positions(sources.get(path, ""))
-        found += [diagnostic(path, where, kind, line, message, skill, fix)
-                  for kind, line, message, skill, fix in
-                  implementation_findings(tree, skills, known, classes)]
+        for kind, line, message, skill, fix, term in implementation_findings(
+                tree, skills, known, classes, property_known):
+            if kind == "implementation-unknown-property" and term is not None:
+                uses = properties.setdefault(term, [])
+                uses.append(len(found))
+                if len(uses) > 1:
+                    continue
+            found.append(diagnostic(path, where, kind, line, message, skill, fix, term=term))
+    for name, uses in properties.items():
+        if len(uses) > 1:
+            first = found[uses[0]]
+            found[uses[0]] = replace(first, message=f"{first.message} ({len(uses)} reads of "
+                                                    f"{name} in the project, reported once)")
     return found
 
 

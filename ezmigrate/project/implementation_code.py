@@ -15,6 +15,11 @@ calls ``setDescription(Desc(), ...)``), against what the repository declares:
   matches element types verbatim, so a query or a new element of that type finds or makes
   the wrong thing. A class far from every known one is more likely the lab's own
   vocabulary from a file this run cannot see, and is left alone.
+- ``getProperty("p:Name")``/``hasProperty`` of a property that nothing in the repository
+  sets (``setProperty``, a property condition) and no loaded ontology or scene declares
+  (EZ215, info). Property names are made at run time on purpose (``skiros:Mean``, a lab's
+  calibration values), so this is worth saying only when nothing makes it, and then as
+  advice.
 """
 
 from __future__ import annotations
@@ -27,21 +32,50 @@ from ezskiros_runtime.compound.library import SkillIndex
 
 from ..compound.static import described_classes
 
-IMPLEMENTATION = (code_for("implementation-unknown-key"), code_for("implementation-element-typo"))
+IMPLEMENTATION = (code_for("implementation-unknown-key"), code_for("implementation-element-typo"),
+                  code_for("implementation-unknown-property"))
 """The codes of these checks, which need the skill index the compound pass builds."""
 
-Finding = tuple[str, int, str, str, "str | None"]
-"""``(kind, line, message, implementation class, fix)``."""
+Finding = tuple[str, int, str, str, "str | None", "str | None"]
+"""``(kind, line, message, implementation class, fix, the key or name it is about)``."""
+
+
+def properties_set(trees: Iterable[ast.Module]) -> set[str]:
+    """Every literal property name the repository's code sets (``setProperty("p:N", v)``,
+    ``getPropCond(..., "p:N", ...)`` conditions, which SkiROS2 sets on post-conditions)."""
+    found: set[str] = set()
+    for tree in trees:
+        for node in ast.walk(tree):
+            name = _property_call(node, ("setProperty",))
+            if name is not None:
+                found.add(name[0])
+            elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                    and node.func.attr in ("getPropCond", "getHasPropCond") \
+                    and len(node.args) > 1 and isinstance(node.args[1], ast.Constant) \
+                    and isinstance(node.args[1].value, str):
+                found.add(node.args[1].value)
+    return found
 
 
 def implementation_findings(tree: ast.Module, skills: SkillIndex,
                             known_class: Callable[[str], bool],
-                            classes: Iterable[str]) -> list[Finding]:
+                            classes: Iterable[str],
+                            known_property: Callable[[str], bool] = lambda _name: True,
+                            ) -> list[Finding]:
     """Every finding of the module's implementation classes (see the module doc);
-    ``known_class`` answers for a ``prefix:Name``, ``classes`` lists the known ones."""
+    ``known_class`` answers for a ``prefix:Name``, ``classes`` lists the known ones;
+    ``known_property`` for a property name the ontology, a scene or the code defines."""
     found: list[Finding] = []
     known = sorted(set(classes))
     for description, cls in described_classes(tree):
+        for node in ast.walk(cls):
+            read = _property_call(node, ("getProperty", "hasProperty"))
+            if read is not None and not known_property(read[0]):
+                found.append(("implementation-unknown-property", read[1],
+                              f"{read[0]}: nothing in the repository sets this property and "
+                              "no loaded ontology or scene declares it, so every element "
+                              "SkiROS2 holds lacks it (Element.hasProperty is False)",
+                              cls.name, None, read[0]))
         declared = _declared(description, skills)
         for node in ast.walk(cls):
             key = _params_key(node)
@@ -50,7 +84,7 @@ def implementation_findings(tree: ast.Module, skills: SkillIndex,
                               f"self.params[{key[0]!r}]: {description} declares no such "
                               "parameter, so SkiROS2's ParamHandler returns None (\"Param "
                               "... is not in the map\") and the line raises when it runs",
-                              cls.name, _closest(key[0], sorted(declared))))
+                              cls.name, _closest(key[0], sorted(declared)), key[0]))
             literal = _element_class(node)
             if literal is not None and not known_class(literal[0]):
                 near = [c for c in known if _one_edit(literal[0], c)]
@@ -59,7 +93,7 @@ def implementation_findings(tree: ast.Module, skills: SkillIndex,
                                   f"Element({literal[0]!r}): no loaded ontology, owl file or "
                                   f"scene defines {literal[0]}; did you mean {near[0]}? The "
                                   "world model matches types verbatim", cls.name,
-                                  f"Element({near[0]!r})"))
+                                  f"Element({near[0]!r})", literal[0]))
     return found
 
 
@@ -91,6 +125,17 @@ def _element_class(node: ast.AST) -> tuple[str, int] | None:
         prefix, _, local = value.partition(":")
         if prefix and local and " " not in value:
             return value, node.lineno
+    return None
+
+
+def _property_call(node: ast.AST, methods: tuple[str, ...]) -> tuple[str, int] | None:
+    """``("p:Name", line)`` for ``anything.method("p:Name", ...)`` with a literal name."""
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+            and node.func.attr in methods and node.args \
+            and isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str):
+        name = node.args[0].value
+        if ":" in name and " " not in name:
+            return name, node.lineno
     return None
 
 

@@ -43,6 +43,18 @@ class skill_impl(PrimitiveBase):
         return self.success(str((self.params["{key}"].value, found)))
 """
 
+PROPERTY = """
+
+class measure_impl(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Skill(), self.__class__.__name__)
+
+    def execute(self):
+        box = self.params["Box"].value
+        box.setProperty("lab:Depth", 0.3)
+        return self.success(str(box.getProperty("{read}").value))
+"""
+
 COMPOUND = legacy(f"{LOC}\n{PROD}") + """
 
 from skiros2_skill.core.skill import RetryOnFail, Sequential, SkillBase
@@ -170,6 +182,10 @@ CASES: dict[str, tuple[str, str]] = {
               legacy(LOC) + IMPLEMENTATION.format(key="Box", cls="skiros:Location")),
     "EZ214": (legacy(LOC) + IMPLEMENTATION.format(key="Box", cls="skiros:Locaton"),
               legacy(LOC) + IMPLEMENTATION.format(key="Box", cls="skiros:Location")),
+    "EZ215": (legacy(LOC) + IMPLEMENTATION.format(key="Box", cls="skiros:Location")
+              + PROPERTY.format(read="lab:Reach"),
+              legacy(LOC) + IMPLEMENTATION.format(key="Box", cls="skiros:Location")
+              + PROPERTY.format(read="skiros:Label")),
     "EZ901": (legacy(f'self.addParam("Speed", 0.1, {REQ})'),
               ezskiros("def description(self, Speed: float = 0.1):\n    pass")),
     "EZ902": (legacy(f'for key in ("A", "B"):\n    self.addParam(key, 0.1, {REQ})'),

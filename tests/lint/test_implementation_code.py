@@ -73,3 +73,36 @@ def test_the_message_names_the_key_and_the_fix_the_class(tmp_path: Path) -> None
     assert "self.params['target']" in by_code["EZ109"]["message"]
     assert by_code["EZ109"]["fix"] == "self.params['Target']"
     assert "did you mean skiros:LargeBox?" in by_code["EZ214"]["message"]
+
+
+READS = """\
+from skiros2_skill.core.primitive import PrimitiveBase
+
+
+class calibrate(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Inspect(), self.__class__.__name__)
+
+    def execute(self):
+        camera = self.params["Target"].value
+        camera.setProperty("lab:FocalX", 1.0)
+        fx = camera.getProperty("lab:FocalX").value
+        a = camera.getProperty("lab:Mean").value
+        b = camera.getProperty("lab:Mean").value if camera.hasProperty("lab:Mean") else 0
+        return self.success(str((fx, a, b)))
+"""
+
+
+def test_a_property_nothing_sets_is_one_info_finding_per_project(tmp_path: Path) -> None:
+    """Set in the code (lab:FocalX): nothing; read three times and set nowhere (lab:Mean):
+    one info finding that counts the reads (issue 30)."""
+    (tmp_path / "pkg").mkdir()
+    (tmp_path / "pkg" / "inspect.py").write_text(
+        MODULE.format(key="Target", cls="skiros:Location")
+        + READS.split("\n", 2)[2], encoding="utf-8")
+    subprocess.run(["git", "init", "-q", str(tmp_path)], check=True)
+    data = json.loads(cli(".", "--output-format", "json", "--select", "EZ215",
+                          cwd=tmp_path).stdout)
+    assert [(d["code"], d["severity"]) for d in data] == [("EZ215", "info")]
+    assert data[0]["message"].startswith("calibrate: lab:Mean: nothing in the repository")
+    assert "(3 reads of lab:Mean in the project, reported once)" in data[0]["message"]
