@@ -12,6 +12,7 @@ holds them to it on generated trees.
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -90,25 +91,23 @@ def class_bases(tree: ast.Module) -> list[tuple[str, str]]:
 def implementations(tree: ast.Module) -> list[tuple[str, str | None]]:
     """``(label, description)`` of every implementation class (primitive or compound) of a
     module: what ``self.skill("Type", "label")`` may name."""
-    found: list[tuple[str, str | None]] = []
-    for node in tree.body:
-        if isinstance(node, ast.ClassDef):
-            description, label = _described(node)
-            if description is not None:
-                found.append((label, description))
-    return found
+    return [(label, description) for description, label, _ in _implementation_classes(tree)]
 
 
 def described_classes(tree: ast.Module) -> list[tuple[str, ast.ClassDef]]:
     """``(description, class)`` of every implementation class of a module, for checks that
     read what an implementation does with its description's parameters."""
-    found: list[tuple[str, ast.ClassDef]] = []
+    return [(description, cls) for description, _, cls in _implementation_classes(tree)]
+
+
+def _implementation_classes(tree: ast.Module) -> Iterator[tuple[str, str, ast.ClassDef]]:
+    """``(description, label, class)`` of each top-level class that calls
+    ``setDescription`` in its ``createDescription``."""
     for node in tree.body:
         if isinstance(node, ast.ClassDef):
-            description, _ = _described(node)
+            description, label = _described(node)
             if description is not None:
-                found.append((description, node))
-    return found
+                yield description, label, node
 
 
 def modified_params(tree: ast.Module) -> list[tuple[str, str, str | None, bool, str]]:
