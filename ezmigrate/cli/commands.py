@@ -284,12 +284,12 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     compounds: list[str] = []
     scenes: list[str] = []
     if report is not None and report.suffix.lower() == ".md":
-        from ..project.check import compound_report
+        from ..project.check import compound_report, scene_report
 
         compounds = compound_report(
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
             pool, options.skill_libraries, paths, options.exclude)
-        scenes = _scene_section(paths, options.exclude, index)
+        scenes = scene_report(paths, options.exclude, index)
     _finish(results, report, request.writes, check, strict,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
                                              compounds=compounds, verifier=verifier,
@@ -306,14 +306,6 @@ def _as_written(migrated: Sequence[Any],
     return [as_written(replace(r, path=in_report(m.candidate.path, m.candidate.relative)),
                        m.original)
             for m, r in zip(migrated, results or [m.result for m in migrated], strict=True)]
-
-
-def _scene_section(paths: tuple[Path, ...], exclude: tuple[str, ...], index: Any) -> list[str]:
-    """The Markdown report's "Scenes": each scene under ``paths`` checked and drawn."""
-    from ..lint.scene_diagram import markdown_section
-    from ..lint.world_model import scene_files
-
-    return markdown_section(scene_files(list(paths), exclude), index)
 
 
 def _cache_dir(paths: Sequence[Path], options: Options) -> Path:

@@ -476,6 +476,15 @@ def compound_report(items: list[tuple[Candidate, bytes, FileResult]],
     return markdown_section(done[0].models, done[0].findings) if done is not None else []
 
 
+def scene_report(paths: tuple[Path, ...], exclude: tuple[str, ...],
+                 index: OntologyIndex | None) -> list[str]:
+    """The Markdown report's "Scenes" section: each scene of the run checked and drawn,
+    found as ``check`` finds them (``scene_files``)."""
+    from ..lint.scene_diagram import markdown_section
+
+    return markdown_section(scene_files(list(paths), exclude), index)
+
+
 def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
               loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
               pool: PoolConfig, libraries: tuple[Path, ...],
