@@ -21,9 +21,11 @@ from ezskiros_runtime.compound.library import SkillIndex
 from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.compound.trace import Unanalysable
 from ezskiros_runtime.ontology.discovery import package_root
+from ezskiros_runtime.ontology.vendored import package_name
 
 from ..files.discover import Candidate, discover
-from ..files.package_xml import package_name, ros_flavour
+from ..files.package_xml import ros_flavour
+from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_batched
 from ..verify.protocol import LoadOutcome
@@ -248,21 +250,12 @@ def once_per_project(findings: list[tuple[str, CompoundFinding]]
                      ) -> list[tuple[str, CompoundFinding]]:
     """A processor that upstream lacks is one finding per project (at its first use, with
     its count of uses), not one per tree that uses it."""
-    uses: dict[str, list[int]] = {}
-    kept: list[tuple[str, CompoundFinding]] = []
-    for path, finding in findings:
-        if finding.kind == "processor-not-upstream":
-            seen = uses.setdefault(finding.child, [])
-            seen.append(len(kept))
-            if len(seen) > 1:
-                continue
-        kept.append((path, finding))
-    for name, at in uses.items():
-        if len(at) > 1:
-            path, first = kept[at[0]]
-            kept[at[0]] = (path, replace(first, message=f"{first.message}; {len(at)} uses of "
-                                                        f"{name} in the project, reported once"))
-    return kept
+    return once_per_cause(
+        findings,
+        lambda item: item[1].child if item[1].kind == "processor-not-upstream" else None,
+        lambda item, name, uses: (item[0], replace(
+            item[1], message=f"{item[1].message}; {uses} uses of {name} in the project, "
+                             "reported once")))
 
 
 def ros_package_of(path: Path, data: bytes) -> tuple[str | None, str | None]:

@@ -1,8 +1,9 @@
 """What a ROS package's ``package.xml`` says, and the runtime declared in it.
 
-A package's manifest gives its name (vendored SkiROS2 packages, launch files), whether it
-is ROS 1 or ROS 2 (its buildtool: the robot's Python) and where the packages of a run are;
-one reader per fact, here.
+A package's manifest says whether it is ROS 1 or ROS 2 (its buildtool: the robot's
+Python) and where the packages of a run are; one reader per fact, here. Its name is read by
+``ezskiros_runtime.ontology.vendored.package_name``, which the runtime's vendored-copy rule
+needs too.
 
 Migrated skills import ``ezskiros_runtime`` on the robot, so the package must say it needs
 it, or ``rosdep install`` and the build tools leave it out and the skill manager fails to
@@ -26,7 +27,6 @@ import os
 import re
 from collections.abc import Iterable, Iterator
 from pathlib import Path
-from xml.etree import ElementTree
 
 from ezskiros_runtime.ontology.discovery import NOT_SEARCHED, PACKAGE_XML, package_root
 
@@ -107,15 +107,6 @@ def _without_comments(data: bytes) -> bytes:
     """``data`` with each XML comment blanked (its line breaks kept): what is commented out
     declares nothing and anchors nothing, and every offset still points into ``data``."""
     return _COMMENT.sub(lambda match: re.sub(rb"[^\r\n]", b" ", match.group()), data)
-
-
-def package_name(package_xml: Path) -> str | None:
-    """The ``<name>`` a ``package.xml`` gives its package, or None (unreadable, no name)."""
-    try:
-        name = ElementTree.parse(package_xml).findtext("name")
-    except (ElementTree.ParseError, OSError):
-        return None
-    return name.strip() if name and name.strip() else None
 
 
 def manifests_below(folder: Path) -> Iterator[Path]:

@@ -22,8 +22,9 @@ from pathlib import Path
 from ezskiros_runtime.codes import code_for
 
 from ..files.discover import repository_root
+from ..report.once import once_per_cause
 from .diagnostic import Diagnostic
-from .world_model import scene_files
+from .world_model import readable_scenes, scene_files
 
 UNKNOWN = code_for("unknown-vocabulary")
 
@@ -31,14 +32,8 @@ UNKNOWN = code_for("unknown-vocabulary")
 def scene_classes(scenes: Iterable[Path]) -> set[str]:
     """Classes the individuals of these scenes are typed with, as the scene writes them
     (``lab:Widget``) and as full IRIs."""
-    from ezskiros_runtime.world.scene import SceneError, read_scene
-
     found: set[str] = set()
-    for path in scenes:
-        try:
-            scene = read_scene(path)
-        except (SceneError, OSError, UnicodeError):
-            continue
+    for scene in readable_scenes(scenes):
         for element in scene.elements.values():
             for kind in element.types:
                 found |= {kind, scene.compact(kind)}
@@ -60,30 +55,25 @@ def as_the_robot_resolves(diagnostics: Sequence[Diagnostic], typed: set[str],
                           prefixes: Collection[str] = ()) -> list[Diagnostic]:
     """``diagnostics`` with EZ209 judged as described in the module doc, by the term each
     names (``Diagnostic.term``); ``prefixes``: those the loaded ontology defines."""
-    out: list[Diagnostic] = []
-    uses_of: dict[str, list[int]] = {}
-    for d in diagnostics:
-        if d.code != UNKNOWN or d.term is None:
-            out.append(d)
-            continue
-        if d.term_is_class and d.term in typed:
-            continue  # the scene types individuals with it: the world model matches it
+    def undefined(d: Diagnostic) -> str | None:
+        """The prefix no loaded file defines that an EZ209 names, else None."""
+        if d.code != UNKNOWN or d.term is None or "://" in d.term:
+            return None
         prefix, colon, _ = d.term.partition(":")
-        if colon and "://" not in d.term and prefix not in prefixes:
-            uses = uses_of.setdefault(prefix, [])
-            uses.append(len(out))
-            if len(uses) > 1:
-                continue
-            d = replace(d, severity="info")  # another package's ontology may define it
-        if unread_workspace is not None:
-            d = replace(d, severity="info", message=(
-                f"{d.message} (the launch file's workspace_dir {unread_workspace} could not "
-                "be read by this run: it may define it)"))
-        out.append(d)
-    for name, uses in uses_of.items():
-        if len(uses) > 1:
-            first = out[uses[0]]
-            out[uses[0]] = replace(first, message=(
-                f"{first.message} ({len(uses)} uses of prefix {name!r} in the project, "
-                "reported once, here)"))
-    return out
+        return prefix if colon and prefix not in prefixes else None
+
+    judged: list[Diagnostic] = []
+    for d in diagnostics:
+        if d.code == UNKNOWN and d.term is not None:
+            if d.term_is_class and d.term in typed:
+                continue  # the scene types individuals with it: the world model matches it
+            if undefined(d) is not None:
+                d = replace(d, severity="info")  # another package's ontology may define it
+            if unread_workspace is not None:
+                d = replace(d, severity="info", message=(
+                    f"{d.message} (the launch file's workspace_dir {unread_workspace} could "
+                    "not be read by this run: it may define it)"))
+        judged.append(d)
+    return once_per_cause(judged, undefined, lambda d, name, uses: replace(d, message=(
+        f"{d.message} ({uses} uses of prefix {name!r} in the project, reported once, "
+        "here)")))

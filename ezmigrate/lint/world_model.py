@@ -29,6 +29,7 @@ from ezskiros_runtime.world.scene_checks import check_scene, unreadable
 from ezskiros_runtime.world.vocabulary import SingleValued, single_valued
 
 from ..files.discover import ALWAYS_EXCLUDED, excluded_under
+from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..report.static_facts import StaticDescription
 from .diagnostic import Diagnostic, Positions, diagnostic
@@ -94,29 +95,29 @@ def read_scenes(paths: Iterable[Path], index: OntologyIndex | None) -> list[Scen
     return out
 
 
+def readable_scenes(paths: Iterable[Path]) -> list[Scene]:
+    """The scenes of ``paths`` that parse (each read once per run: ``read_scene`` keeps
+    them); one that does not is left out here, since ``read_scenes`` reports it (EZ402)."""
+    found = []
+    for path in paths:
+        try:
+            found.append(read_scene(path))
+        except (SceneError, OSError, UnicodeError):
+            continue
+    return found
+
+
 def once_per_project(per_scene: list[list[WorldFinding]]) -> list[list[WorldFinding]]:
     """The scenes' findings with each declaration-caused EZ403 (a property the ontology
     makes spatial, the finding's subject) kept at its first scene only, counting the
     others: one cause, one finding."""
-    first: dict[str, tuple[int, int]] = {}
-    others: dict[str, int] = {}
-    kept: list[list[WorldFinding]] = []
-    for number, found in enumerate(per_scene):
-        mine: list[WorldFinding] = []
-        for f in found:
-            if f.kind == "scene-spatial-declaration":
-                if f.subject in first:
-                    others[f.subject] = others.get(f.subject, 0) + 1
-                    continue
-                first[f.subject] = (number, len(mine))
-            mine.append(f)
-        kept.append(mine)
-    for subject, count in others.items():
-        number, at = first[subject]
-        f = kept[number][at]
-        kept[number][at] = replace(f, message=f"{f.message}; the same in {count} other "
-                                              f"scene(s), reported once")
-    return kept
+    kept = once_per_cause(
+        [(number, f) for number, found in enumerate(per_scene) for f in found],
+        lambda item: item[1].subject if item[1].kind == "scene-spatial-declaration" else None,
+        lambda item, _subject, uses: (item[0], replace(
+            item[1], message=f"{item[1].message}; the same in {uses - 1} other scene(s), "
+                             "reported once")))
+    return [[f for number, f in kept if number == scene] for scene in range(len(per_scene))]
 
 
 def diagnostics_of(found: Iterable[WorldFinding], text: str, skill: str = ""

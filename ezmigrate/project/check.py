@@ -17,6 +17,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ezskiros_runtime.codes import code_for
 from ezskiros_runtime.compound.library import SkillIndex
 from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.model import SkillModel
@@ -27,7 +28,14 @@ from ..lint.diagnostic import Diagnostic, Positions, diagnostic
 from ..lint.legacy import legacy_hits
 from ..lint.plain_reader import Declined, read_plain
 from ..lint.robot_vocabulary import as_the_robot_resolves, scene_classes, typing_scenes
-from ..lint.world_model import SCENE_SUFFIX, WorldRun, scene_files, world_diagnostics
+from ..lint.world_model import (
+    SCENE_SUFFIX,
+    WorldRun,
+    readable_scenes,
+    scene_files,
+    world_diagnostics,
+)
+from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
 from . import holdpoint
@@ -148,8 +156,9 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
 
 
 def needs_trees(codes: Iterable[str]) -> bool:
-    """Whether a selection needs the compound skills' trees: the EZ3xx checks, and EZ105
-    and EZ209, judged by what the trees pass to their children (``uninferable``)."""
+    """Whether a selection needs the compound skills' trees and skill index: the EZ3xx
+    checks, EZ105 and EZ209 (judged by what the trees pass to their children:
+    ``uninferable``) and the checks inside implementations (``implementation_code``)."""
     return any(code.startswith("EZ3") or code in (UNINFERABLE, UNKNOWN, *IMPLEMENTATION)
                for code in codes)
 
@@ -219,11 +228,11 @@ def _kept_run(paths: list[Path], candidates: list[Candidate], world: WorldRun,
         return None
     from ..compound.analysis import library_candidates
 
-    extra = [*world.scenes, *([launch.path] if launch is not None else []),
-             *(c.path for c, _ in library_candidates(list(libraries)))]
-    files = read_all([*(c.path for c in candidates), *extra])
+    files = read_all([*(c.path for c in candidates), *world.scenes,
+                      *([launch.path] if launch is not None else [])])
     if files is None:
         return None
+    files += [(str(c.path), data) for c, data in library_candidates(list(libraries))]
     key = run_key(files, {
         "ontology": index.fingerprint if index is not None else "",
         "interpreter": pool.python or "", "timeout": pool.timeout,
@@ -317,8 +326,12 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
         [(str(c.path), [SkillModel.from_json(m) for m in o.models])
          for c, o in zip(loadable, outcomes, strict=True) if o.loaded], index,
         outcome.sources)
+    # the implementation classes, parsed once for both passes below, and only when one
+    # of them has work: the checks inside them, or an EZ105/EZ209 to judge
+    judging = any(d.code in (UNINFERABLE, UNKNOWN) for d in outcome.diagnostics)
     implementing = [(c, tree) for c, data in read if b"setDescription" in data
-                    for tree in (parse(data),) if tree is not None]  # parsed once for both
+                    for tree in (parse(data),) if tree is not None] \
+        if compound.skills is not None or judging else []
     if compound.skills is not None:
         outcome.diagnostics += _implementations(implementing, compound.skills, index, world,
                                                 outcome.sources)
@@ -356,21 +369,18 @@ def _judge_uninferable(diagnostics: list[Diagnostic],
 def _implementations(implementing: list[tuple[Candidate, ast.Module]], skills: SkillIndex,
                      index: OntologyIndex | None, world: WorldRun,
                      sources: dict[str, str]) -> list[Diagnostic]:
-    """EZ109 and EZ214 in the implementation classes of the run (``implementation_code``):
-    classes are known when the ontology or a scene of the run types an element with them."""
+    """EZ109, EZ214 and EZ215 in the implementation classes of the run
+    (``implementation_code``): classes are known when the ontology or a scene of the run
+    types an element with them, properties when the ontology declares them, a scene holds
+    them or the code sets them."""
     from ezskiros_runtime.dsl.vocabulary import to_iri
-    from ezskiros_runtime.world.scene import SceneError, read_scene
 
     from .implementation_code import implementation_findings, properties_set
 
     typed = scene_classes(world.scenes)
     classes = {*(index.compact(c) for c in index.classes), *typed} if index else set(typed)
     made = properties_set(tree for _, tree in implementing)
-    for scene_path in world.scenes:
-        try:
-            scene = read_scene(scene_path)
-        except (SceneError, OSError, UnicodeError):
-            continue
+    for scene in readable_scenes(world.scenes):
         made |= {scene.compact(v.property) for v in scene.values}
 
     def known(name: str) -> bool:
@@ -384,24 +394,17 @@ def _implementations(implementing: list[tuple[Candidate, ast.Module]], skills: S
                                                  and index.property(iri) is not None)
 
     found: list[Diagnostic] = []
-    properties: dict[str, list[int]] = {}  # an unknown property: once per project
     for candidate, tree in implementing:
         path = str(candidate.path)
         where = Positions(sources.get(path, ""))
-        for kind, line, message, skill, fix, term in implementation_findings(
-                tree, skills, known, classes, property_known):
-            if kind == "implementation-unknown-property" and term is not None:
-                uses = properties.setdefault(term, [])
-                uses.append(len(found))
-                if len(uses) > 1:
-                    continue
-            found.append(diagnostic(path, where, kind, line, message, skill, fix, term=term))
-    for name, uses in properties.items():
-        if len(uses) > 1:
-            first = found[uses[0]]
-            found[uses[0]] = replace(first, message=f"{first.message} ({len(uses)} reads of "
-                                                    f"{name} in the project, reported once)")
-    return found
+        found += [diagnostic(path, where, kind, line, message, skill, fix, term=term)
+                  for kind, line, message, skill, fix, term in implementation_findings(
+                      tree, skills, known, classes, property_known)]
+    unknown_property = code_for("implementation-unknown-property")
+    return once_per_cause(  # an unknown property: once per project
+        found, lambda d: d.term if d.code == unknown_property else None,
+        lambda d, name, uses: replace(d, message=f"{d.message} ({uses} reads of {name} in "
+                                                 "the project, reported once)"))
 
 
 def _scene_counter(world: WorldRun, index: OntologyIndex | None
@@ -409,16 +412,9 @@ def _scene_counter(world: WorldRun, index: OntologyIndex | None
     """How many elements of a class (or below it) the run's scenes hold together; None
     without a scene that reads."""
     from ezskiros_runtime.dsl.vocabulary import to_iri
-    from ezskiros_runtime.world.scene import SceneError, read_scene
 
-    types: list[tuple[list[str], set[str]]] = []  # (IRIs, as the scene writes them)
-    for path in world.scenes:
-        try:
-            scene = read_scene(path)
-        except (SceneError, OSError, UnicodeError):
-            continue
-        types += [(e.types, {scene.compact(t) for t in e.types})
-                  for e in scene.elements.values()]
+    types = [(e.types, {scene.compact(t) for t in e.types})  # IRIs, and as written
+             for scene in readable_scenes(world.scenes) for e in scene.elements.values()]
 
     def count(cls: str) -> int | None:
         if not types:

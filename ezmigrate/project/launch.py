@@ -23,10 +23,10 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from xml.etree import ElementTree
 
-from ezskiros_runtime.ontology.vendored import vendored_skip
+from ezskiros_runtime.ontology.vendored import package_name, vendored_skip
 
 from ..files.discover import ALWAYS_EXCLUDED
-from ..files.package_xml import manifests_below, package_name
+from ..files.package_xml import manifests_below
 from ..lint.world_model import WorldRun
 
 KEYS = ("workspace_dir", "init_scene", "libraries_list", "skill_list")

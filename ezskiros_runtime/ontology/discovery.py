@@ -22,7 +22,7 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from .vendored import NOT_SEARCHED, PACKAGE_XML, vendored_skip
+from .vendored import NOT_SEARCHED, PACKAGE_XML, git_top, vendored_skip
 
 OWL_FOLDER = "owl"
 SUFFIXES = (".owl", ".ttl", ".rdf")
@@ -64,13 +64,6 @@ def enclosing_project(path: Path) -> Path | None:
     first = path.resolve()
     folder = first if first.is_dir() else first.parent
     return git_top(folder) or package_root(folder)
-
-
-def git_top(folder: Path) -> Path | None:
-    """The nearest folder at or above ``folder`` holding ``.git`` (a folder, or the file of
-    a worktree or submodule), or None."""
-    return next((candidate for candidate in (folder, *folder.parents)
-                 if (candidate / ".git").exists()), None)
 
 
 def package_root(path: Path) -> Path | None:

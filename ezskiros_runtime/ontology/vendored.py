@@ -37,18 +37,29 @@ NOT_SEARCHED = frozenset({"node_modules", "build", "devel", "install", "log", "d
 """Folders no search enters: build, devel and install spaces hold copies of packages."""
 
 
+def package_name(package_xml: Path) -> str | None:
+    """The ``<name>`` a ``package.xml`` gives its package, or None (unreadable, no name)."""
+    try:
+        name = ElementTree.parse(str(package_xml)).findtext("name")
+    except (ElementTree.ParseError, OSError):
+        return None
+    return name.strip() if name and name.strip() else None
+
+
+def git_top(folder: Path) -> Path | None:
+    """The nearest folder at or above ``folder`` holding ``.git`` (a folder, or the file of
+    a worktree or submodule), or None."""
+    return next((candidate for candidate in (folder, *folder.parents)
+                 if (candidate / ".git").exists()), None)
+
+
 def upstream_package(folder: Path) -> str | None:
     """The SkiROS2 package ``folder`` is (by its name, or the name its ``package.xml``
     gives), or None."""
     if folder.name in UPSTREAM_PACKAGES:
         return folder.name
     manifest = folder / PACKAGE_XML
-    if not manifest.is_file():
-        return None
-    try:
-        name = (ElementTree.parse(str(manifest)).findtext("name") or "").strip()
-    except (ElementTree.ParseError, OSError):
-        return None
+    name = package_name(manifest) if manifest.is_file() else None
     return name if name in UPSTREAM_PACKAGES else None
 
 
@@ -74,10 +85,7 @@ def holds_only_skiros2(root: Path) -> bool:
 def repository_of(folder: Path, fallback: Path) -> Path:
     """The repository ``folder`` belongs to: its git top level, else ``fallback`` (the
     folder the run was given)."""
-    for candidate in (folder, *folder.parents):
-        if (candidate / ".git").exists():
-            return candidate
-    return fallback
+    return git_top(folder) or fallback
 
 
 class VendoredRule:
