@@ -57,12 +57,13 @@ def properties_set(trees: Iterable[ast.Module]) -> set[str]:
     return found
 
 
-def implementation_findings(tree: ast.Module, skills: SkillIndex,
+def implementation_findings(tree: ast.Module, path: str, skills: SkillIndex,
                             known_class: Callable[[str], bool],
                             classes: Iterable[str],
                             known_property: Callable[[str], bool] = lambda _name: True,
                             ) -> list[Finding]:
-    """Every finding of the module's implementation classes (see the module doc);
+    """Every finding of the implementation classes of the module in ``path`` (see the
+    module doc);
     ``known_class`` answers for a ``prefix:Name``, ``classes`` lists the known ones;
     ``known_property`` for a property name the ontology, a scene or the code defines."""
     found: list[Finding] = []
@@ -76,7 +77,7 @@ def implementation_findings(tree: ast.Module, skills: SkillIndex,
                               "no loaded ontology or scene declares it, so every element "
                               "SkiROS2 holds lacks it (Element.hasProperty is False)",
                               cls.name, None, read[0]))
-        declared = _declared(description, skills)
+        declared = _declared(description, skills, path)
         for node in ast.walk(cls):
             key = _params_key(node)
             if key is not None and declared is not None and key[0] not in declared:
@@ -97,13 +98,23 @@ def implementation_findings(tree: ast.Module, skills: SkillIndex,
     return found
 
 
-def _declared(description: str, skills: SkillIndex) -> set[str] | None:
-    """The keys ``self.params`` holds in an implementation of ``description`` (None when
-    the description could not be read: nothing is judged then)."""
+def _declared(description: str, skills: SkillIndex, path: str) -> set[str] | None:
+    """The keys ``self.params`` holds in an implementation of ``description`` in ``path``
+    (None when the description could not be read: nothing is judged then).
+
+    Packages reuse description names (two labs' ``ChangeStiffness`` side by side in one
+    checkout): the implementation gets the nearest definition, as a compound's child does
+    (``SkillIndex.nearest``); when several are equally near, a key any of them declares
+    is not judged."""
     info = skills.descriptions.get(description)
-    if info is None or not info.complete:
+    if info is None:
         return None
-    return info.declared() | skills.self_added.get(description, set())
+    nearest = skills.nearest(info, path)
+    if not all(d.complete for d in nearest):
+        return None
+    return (set().union(*(d.declared() for d in nearest))
+            | set(skills.modified_by.get(description, {}))
+            | skills.self_added.get(description, set()))
 
 
 def _params_key(node: ast.AST) -> tuple[str, int] | None:

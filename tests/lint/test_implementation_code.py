@@ -106,3 +106,27 @@ def test_a_property_nothing_sets_is_one_info_finding_per_project(tmp_path: Path)
     assert [(d["code"], d["severity"]) for d in data] == [("EZ215", "info")]
     assert data[0]["message"].startswith("calibrate: lab:Mean: nothing in the repository")
     assert "(3 reads of lab:Mean in the project, reported once)" in data[0]["message"]
+
+
+def test_an_implementation_reads_the_nearest_description_of_its_name(tmp_path: Path) -> None:
+    """Two packages of one checkout define ``Inspect`` with different keys (two labs'
+    ``ChangeStiffness`` side by side, met on the public repositories): each implementation
+    is judged against its own package's description, whichever the index read last."""
+    for package, key in (("a_pkg", "Target"), ("b_pkg", "Goal")):
+        (tmp_path / package).mkdir()
+        (tmp_path / package / "package.xml").write_text(f"<package><name>{package}</name>"
+                                                         "</package>", encoding="utf-8")
+        (tmp_path / package / "inspect.py").write_text(
+            MODULE.format(key=key, cls="skiros:Location").replace(
+                'self.addParam("Target"', f'self.addParam("{key}"'), encoding="utf-8")
+    subprocess.run(["git", "init", "-q", str(tmp_path)], check=True)
+    run = cli(".", "--output-format", "json", "--select", "EZ109", cwd=tmp_path)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert json.loads(run.stdout) == []
+    # the trigger: a key neither package's description declares
+    (tmp_path / "b_pkg" / "inspect.py").write_text(
+        MODULE.format(key="Target", cls="skiros:Location").replace(
+            'self.addParam("Target"', 'self.addParam("Goal"'), encoding="utf-8")
+    found = json.loads(cli(".", "--output-format", "json", "--select", "EZ109",
+                           cwd=tmp_path).stdout)
+    assert [(d["code"], d["path"].split("/")[-2]) for d in found] == [("EZ109", "b_pkg")]
