@@ -45,6 +45,7 @@ from .launch import Launch, with_init_scene
 from .load_cache import LoadCache, cached_loads
 from .outcome_cache import OutcomeCache, read_all, run_key
 from .progress import Progress
+from .runner import Migrated
 from .settle import settle
 from .uninferable import UNINFERABLE, UNKNOWN
 
@@ -120,8 +121,9 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     """What every legacy description declares, without importing user code.
 
     Plain descriptions are read with ``ast`` (``lint/plain_reader.py``); every other file
-    goes through the codemod's reader exactly as ``rewrite`` reads it, with its whole
-    package when a class may derive from a description of a sibling file. Files without a
+    goes through the codemod's reader exactly as ``rewrite`` reads it. When a class may
+    derive from a description of a sibling file, the plain files of its package are handed
+    to the codemod's cross-file pass as read, not read again with libcst. Files without a
     description are read, never parsed. ``on_tree`` (when given) sees each syntax tree parsed
     here, for the compound-skill pass to read while it is at hand.
     """
@@ -148,10 +150,10 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
                 whole_package.add(candidate.root)
         else:
             plain.append((candidate, data, verdict))
-    declined += [c for c, _, _ in plain if c.root in whole_package]
-    yield from ((c, d, r) for c, d, r in plain if c.root not in whole_package)
+    yield from plain
     if declined:
-        for item in settle(declined, index, workers):
+        siblings = [Migrated(c, d, None, r) for c, d, r in plain if c.root in whole_package]
+        for item in settle(declined, index, workers, read=siblings):
             yield item.candidate, item.original, item.result
 
 
@@ -399,7 +401,7 @@ def _implementations(implementing: list[tuple[Candidate, ast.Module]], skills: S
         where = Positions(sources.get(path, ""))
         found += [diagnostic(path, where, kind, line, message, skill, fix, term=term)
                   for kind, line, message, skill, fix, term in implementation_findings(
-                      tree, skills, known, classes, property_known)]
+                      tree, path, skills, known, classes, property_known)]
     unknown_property = code_for("implementation-unknown-property")
     return once_per_cause(  # an unknown property: once per project
         found, lambda d: d.term if d.code == unknown_property else None,

@@ -52,15 +52,22 @@ class Checks:
 def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: int,
            checks: Checks | None = None, progress: Progress | None = None,
            target: tuple[int, int] | None = None,
-           refuse_unloadable: bool = False) -> list[Migrated]:
+           refuse_unloadable: bool = False,
+           read: Sequence[Migrated] = ()) -> list[Migrated]:
     """Every candidate's settled result (see the module doc); ``checks`` None: no
     verification (``--no-verify``, ``check``); ``target``: the Python the migrated code
     must run on (None: the default, ``Settings.target``). ``refuse_unloadable``: without
     verification, hold back what the runtime's early checks refuse (``static_refusal``;
-    ``rewrite --no-verify`` writes, ``check`` only reads)."""
+    ``rewrite --no-verify`` writes, ``check`` only reads).
+
+    ``read``: files of the same package already read by other means (``check``'s plain
+    reader), not migrated here and not returned: only the cross-file pass sees them, as
+    files that define bases for the candidates. A plain file derives from no imported
+    class, so nothing about it changes with its siblings (``exported`` only decides the
+    imports a rewrite keeps, which ``check`` never writes)."""
     migrated = migrate_all(candidates, index, jobs, progress, target)
     base = Settings(index=index) if target is None else Settings(index=index, target=target)
-    _settle_cross_file(migrated, base)
+    _settle_cross_file([*migrated, *read] if read else migrated, base)
     if progress is not None:
         progress.close()  # the line is gone before verification says anything
     holdpoint.reach("migrated")
