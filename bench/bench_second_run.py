@@ -5,7 +5,9 @@ command (wall clock, median of ``--runs``):
 - ``rewrite --no-verify`` again: nothing to do, so it should cost about a read and a parse
   of each skill file, less than the migration did;
 - ``check`` with an empty cache, then again with the cache it left (the second run on an
-  unchanged repository), and with ``--no-cache``.
+  unchanged repository), and with ``--no-cache``;
+- ``check`` after one skill file changed (a comment appended; the cache of the run before),
+  then ``--no-cache`` on the same tree: their outputs must be the same bytes.
 
     .venv/bin/python bench/bench_second_run.py --files 1000 --runs 3
 """
@@ -28,14 +30,20 @@ OUTPUTS: dict[str, set[str]] = {}
 """What each ``check`` printed on stdout, by command: speed never changes a finding."""
 
 
-def _timed(args: list[str], cwd: Path) -> float:
+def _timed(args: list[str], cwd: Path, tree: str = "check") -> float:
     started = time.perf_counter()
     run = subprocess.run([sys.executable, "-m", "ezmigrate", *args], cwd=cwd, check=False,
                          capture_output=True, text=True, timeout=3600)
     elapsed = time.perf_counter() - started
     if args[0] == "check":
-        OUTPUTS.setdefault("check", set()).add(run.stdout)
+        OUTPUTS.setdefault(tree, set()).add(run.stdout)
     return elapsed
+
+
+def _a_skill_file(repo: Path) -> Path:
+    """The first file (in path order) holding a description, migrated or not."""
+    return next(p for p in sorted(repo.rglob("*.py"))
+                if b"SkillDescription" in p.read_bytes() and ".ezmigrate" not in str(p))
 
 
 def main() -> None:
@@ -63,14 +71,22 @@ def main() -> None:
             rows.setdefault("check --no-cache", []).append(
                 _timed(["check", "--exit-zero", "--no-cache", "--output-format", "json", "."],
                        repo))
+            edited = _a_skill_file(repo)
+            edited.write_bytes(edited.read_bytes() + b"# edited\n")
+            rows.setdefault("check after one file changed, cache of the run before", []).append(
+                _timed(["check", "--exit-zero", "--output-format", "json", "."], repo,
+                       "changed"))
+            _timed(["check", "--exit-zero", "--no-cache", "--output-format", "json", "."], repo,
+                   "changed")
+            edited.write_bytes(edited.read_bytes()[:-len(b"# edited\n")])
     print(f"| whole command ({options.files} files, skill share {options.skill_share}) "
           "| median s |")
     print("|---|---:|")
     for name, times in rows.items():
         print(f"| {name} | {statistics.median(times):.2f} |")
-    same = len(OUTPUTS["check"]) == 1
-    print(f"\ncheck's output with an empty cache, with its cache and with --no-cache: "
-          f"{'byte-identical' if same else 'DIFFERENT'}")
+    same = all(len(outputs) == 1 for outputs in OUTPUTS.values())
+    print(f"\ncheck's output with an empty cache, with its cache and with --no-cache, on the "
+          f"tree and after one file changed: {'byte-identical' if same else 'DIFFERENT'}")
     if not same:
         raise SystemExit(1)
 

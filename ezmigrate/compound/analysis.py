@@ -85,24 +85,35 @@ class Trees:
     """False (``check --no-trace``): no user code is imported, so a tree the syntax cannot
     read stays unread, and says why."""
 
+    def wants(self, candidate: Candidate, data: bytes) -> bool:
+        """Whether ``add`` would read this file: not yet seen, and holding a marker."""
+        return str(candidate.path) not in self.seen and any(m in data for m in READ_WHEN)
+
     def add(self, candidate: Candidate, data: bytes, tree: ast.Module | None = None) -> None:
         """One file (``tree``: its syntax tree when the caller has parsed it already)."""
-        path = str(candidate.path)
-        if path in self.seen or not any(m in data for m in READ_WHEN):
+        if not self.wants(candidate, data):
             return
-        self.seen.add(path)
         if tree is None:
             try:
                 tree = ast.parse(data)
             except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
+                self.seen.add(str(candidate.path))
                 return  # the static pass reports the file
-        self.labels += implementations(tree)
-        self.bases += class_bases(tree)
-        self.modified += modified_params(tree)
-        for cls, mistakes in expand_findings(tree).items():
-            self.syntax[(path, cls)] = mistakes
+        self.take(candidate, tree_facts(tree, str(candidate.path)))
+
+    def take(self, candidate: Candidate, facts: TreeFacts) -> None:
+        """One file's facts, read by ``tree_facts`` now or by an earlier run (cached)."""
+        path = str(candidate.path)
+        if path in self.seen:
+            return
+        self.seen.add(path)
+        self.labels += facts.labels
+        self.bases += facts.bases
+        self.modified += facts.modified
+        for cls, mistakes in facts.syntax:
+            self.syntax[(path, cls)] = list(mistakes)
         pending = []
-        for found in read_compounds(tree, path):
+        for found in facts.found:
             if isinstance(found, NeedsTrace):
                 pending.append(found)
             else:
@@ -111,6 +122,28 @@ class Trees:
             if not self.traced and self.on_first_trace is not None:
                 self.on_first_trace()
             self.traced[path] = (candidate, pending)
+
+
+@dataclass(frozen=True)
+class TreeFacts:
+    """What ``Trees`` keeps of one file's syntax tree: its implementations' labels, class
+    bases, parameters added in ``modifyDescription``, the mistakes its ``self.skill`` calls
+    show, and its compound trees (read, or to trace). Made of the file alone (its path and
+    bytes), so ``check`` keeps it by content from one run to the next."""
+
+    labels: tuple[tuple[str, str | None], ...] = ()
+    bases: tuple[tuple[str, str], ...] = ()
+    modified: tuple[tuple[str, str, str | None, bool, str], ...] = ()
+    syntax: tuple[tuple[str, tuple[tuple[str, int, str], ...]], ...] = ()
+    found: tuple[CompoundModel | Unanalysable | NeedsTrace, ...] = ()
+
+
+def tree_facts(tree: ast.Module, path: str) -> TreeFacts:
+    """``TreeFacts`` of the module at ``path``."""
+    return TreeFacts(tuple(implementations(tree)), tuple(class_bases(tree)),
+                     tuple(modified_params(tree)),
+                     tuple((cls, tuple(m)) for cls, m in expand_findings(tree).items()),
+                     tuple(read_compounds(tree, path)))
 
 
 def _read(items: Iterable[tuple[Candidate, bytes]], trees: Trees | None = None) -> Trees:

@@ -11,8 +11,7 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 
 from __future__ import annotations
 
-import ast
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Collection, Iterable, Iterator
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -26,7 +25,7 @@ from ..files.discover import Candidate, discover
 from ..files.prefilter import may_hold_descriptions
 from ..lint.diagnostic import Diagnostic, Positions, diagnostic
 from ..lint.legacy import legacy_hits
-from ..lint.plain_reader import Declined, read_plain
+from ..lint.plain_reader import Declined
 from ..lint.robot_vocabulary import as_the_robot_resolves, scene_classes, typing_scenes
 from ..lint.world_model import (
     SCENE_SUFFIX,
@@ -39,8 +38,11 @@ from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
 from . import holdpoint
-from .cross_file import RUNTIME_MARKER
-from .implementation_code import IMPLEMENTATION
+from .cross_file import RUNTIME_MARKER, dotted
+from .facts_cache import FactsCache, keep_scenes, seed_scenes
+from .file_facts import FileFacts, file_facts, parse
+from .implementation_code import IMPLEMENTATION, ModuleFacts, module_facts
+from .import_scan import import_words
 from .launch import Launch, with_init_scene
 from .load_cache import LoadCache, cached_loads
 from .outcome_cache import OutcomeCache, read_all, run_key
@@ -107,16 +109,9 @@ def _legacy(path: str, result: FileResult, positions: Positions,
     return found
 
 
-def parse(data: bytes) -> ast.Module | None:
-    """The module's syntax tree, or None when ``ast`` cannot read it (the codemod says why)."""
-    try:
-        return ast.parse(data)
-    except (SyntaxError, ValueError, UnicodeError, LookupError, MemoryError, RecursionError):
-        return None
-
-
 def read_statically(candidates: list[Candidate], workers: int, index: OntologyIndex | None,
-                    on_tree: Callable[[Candidate, bytes, ast.Module], None] | None = None
+                    on_facts: Callable[[Candidate, bytes, FileFacts], None] | None = None,
+                    cache: FactsCache | None = None
                     ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
     """What every legacy description declares, without importing user code.
 
@@ -124,37 +119,111 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     goes through the codemod's reader exactly as ``rewrite`` reads it. When a class may
     derive from a description of a sibling file, the plain files of its package are handed
     to the codemod's cross-file pass as read, not read again with libcst. Files without a
-    description are read, never parsed. ``on_tree`` (when given) sees each syntax tree parsed
-    here, for the compound-skill pass to read while it is at hand.
+    description are read, never parsed. ``on_facts`` (when given) sees what the compound
+    pass and the implementation checks read of each parsed file (``file_facts``); ``cache``
+    keeps those readings, and the codemod's, by content (``facts_cache``).
     """
     plain: list[tuple[Candidate, bytes, FileResult]] = []
-    declined: list[Candidate] = []
+    declined: list[tuple[Candidate, bytes | None]] = []
     whole_package: set[Path] = set()
     for candidate in candidates:
         try:
             data = candidate.path.read_bytes()
         except OSError:
-            declined.append(candidate)  # the codemod reports why it cannot be read
+            declined.append((candidate, None))  # the codemod reports why it cannot be read
             continue
         if not may_hold_descriptions(data):
             yield candidate, data, FileResult(path=candidate.relative)
             continue
-        tree = parse(data)
-        if tree is not None and on_tree is not None:
-            on_tree(candidate, data, tree)
-        verdict = read_plain(data, candidate.relative, tree) \
-            if RUNTIME_MARKER not in data and tree is not None else Declined()
-        if isinstance(verdict, Declined):
-            declined.append(candidate)
-            if verdict.cross_file:
+        facts = _facts(candidate, data, on_facts is not None, cache)
+        if on_facts is not None:
+            on_facts(candidate, data, facts)
+        if isinstance(facts.static, Declined):
+            declined.append((candidate, data))
+            if facts.static.cross_file:
                 whole_package.add(candidate.root)
         else:
-            plain.append((candidate, data, verdict))
+            plain.append((candidate, data, facts.static))
     yield from plain
     if declined:
-        siblings = [Migrated(c, d, None, r) for c, d, r in plain if c.root in whole_package]
-        for item in settle(declined, index, workers, read=siblings):
+        yield from _settled(declined, [(c, d, r) for c, d, r in plain if c.root in whole_package],
+                            index, workers, cache)
+
+
+def _facts(candidate: Candidate, data: bytes, compounds: bool,
+           cache: FactsCache | None) -> FileFacts:
+    """``file_facts``, from ``cache`` when an earlier run read these bytes at this path."""
+    if cache is None:
+        return file_facts(candidate, data, compounds)
+    key = cache.key("file", str(candidate.path), candidate.relative, str(compounds), data)
+    found = cache.get(key)
+    if not isinstance(found, FileFacts):
+        found = file_facts(candidate, data, compounds)
+        cache.put(key, found)
+    return found
+
+
+def _settled(declined: list[tuple[Candidate, bytes | None]],
+             plain: list[tuple[Candidate, bytes, FileResult]], index: OntologyIndex | None,
+             workers: int, cache: FactsCache | None
+             ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
+    """The codemod's readings of the files the plain reader declined (``settle``, without
+    verification), beside the plain files of their packages (``plain``) that may define
+    their bases.
+
+    A class derives from a sibling's description only through an import naming the
+    sibling's module, so a file can matter to another only when its module's name is a
+    word of the other's imports (``import_scan``; a package's ``__init__`` always may).
+    The cache keeps each reading by the ontology's fingerprint and the file's content, and
+    for a file whose classes derive from imported bases, the content of every file that
+    may define them: one changed file is read again with the files that depend on it.
+    """
+    fingerprint = index.fingerprint if index is not None else ""
+    everyone = [(c, d) for c, d in declined if d is not None] + [(c, d) for c, d, _ in plain]
+    words = {c.path: import_words(d) for c, d in declined if d is not None}
+    wanted = set().union(*words.values()) if words else set()
+    siblings = [Migrated(c, d, None, r) for c, d, r in plain if _may_define(c, wanted)]
+    if cache is None:
+        for item in settle([c for c, _ in declined], index, workers, read=siblings):
             yield item.candidate, item.original, item.result
+        return
+
+    def own_key(candidate: Candidate, data: bytes) -> str:
+        return cache.key("settled", fingerprint, str(candidate.path), candidate.relative, data)
+
+    def with_bases_key(candidate: Candidate, data: bytes) -> str:
+        mine = words.get(candidate.path, frozenset())
+        return cache.key("settled-with", fingerprint, str(candidate.path), candidate.relative,
+                         data, *(part for c, d in sorted(everyone, key=lambda e: str(e[0].path))
+                                 if c.path != candidate.path and _may_define(c, mine)
+                                 for part in (str(c.path), d)))
+
+    found: dict[Path, FileResult] = {}
+    for candidate, data in declined:
+        if data is None:
+            continue
+        for key in (own_key(candidate, data), with_bases_key(candidate, data)):
+            hit = cache.get(key)
+            if isinstance(hit, FileResult):
+                found[candidate.path] = hit
+                break
+    missing = [c for c, _ in declined if c.path not in found]
+    if missing:
+        settled = [Migrated(c, d, None, found[c.path]) for c, d in declined
+                   if c.path in found and d is not None and _may_define(c, wanted)]
+        for item in settle(missing, index, workers, read=[*siblings, *settled]):
+            found[item.candidate.path] = item.result
+            if item.candidate.path in words:
+                keyed = own_key if not item.result.foreign_bases else with_bases_key
+                cache.put(keyed(item.candidate, item.original), item.result)
+    for candidate, data in declined:
+        yield candidate, data or b"", found[candidate.path]
+
+
+def _may_define(candidate: Candidate, words: Collection[bytes]) -> bool:
+    """Whether a file may define a base another file's imports (their ``words``) name."""
+    module = dotted(candidate.relative).rpartition(".")[2]
+    return candidate.path.name == "__init__.py" or module.encode() in words
 
 
 def needs_trees(codes: Iterable[str]) -> bool:
@@ -201,9 +270,12 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
                       launched=frozenset(listed) if listed is not None else None,
                       libraries=frozenset(launch.listed("libraries_list") or ())
                       if launch is not None else frozenset(), trace=trace)
+    # the readings of each file by content: for runs over folders, as the whole run's
+    # cache (a run over named files would keep only their entries and drop the others)
+    facts = FactsCache.open(kept[0][0]) if kept is not None else None
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
-                       standby, world, cache_dir, trace)
+                       standby, world, cache_dir, trace, facts)
         outcome.files += len(world.scenes)
         outcome.diagnostics = as_the_robot_resolves(
             outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
@@ -212,6 +284,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         if kept is not None:
             OutcomeCache(kept[0][0]).put(kept[0][1], outcome.files, outcome.skills,
                                          outcome.notes, outcome.diagnostics)
+        if facts is not None:
+            facts.save()
         return outcome
     finally:
         for workers in standby:
@@ -256,16 +330,29 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
          pool: PoolConfig, progress: Callable[[str], None] | None,
          skill_libraries: tuple[Path, ...], trees: Trees | None,
          standby: list[Standby], world: WorldRun,
-         cache_dir: Path | None = None, trace: bool = True) -> CheckOutcome:
+         cache_dir: Path | None = None, trace: bool = True,
+         facts_cache: FactsCache | None = None) -> CheckOutcome:
     """``run_check`` once its compound pass (``trees``) is set up."""
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
     results: list[tuple[Candidate, FileResult]] = []
     line = Progress.for_stream(len(candidates), skills_label="skills found") \
         if progress is not None else Progress(len(candidates), active=False)
+    if facts_cache is not None:
+        seed_scenes(facts_cache, world.scenes)
+    facts: dict[Path, ModuleFacts] = {}
+
+    def at_hand(candidate: Candidate, data: bytes, found: FileFacts) -> None:
+        """What the compound pass and the implementation checks read of a file."""
+        if trees is not None and found.trees is not None:
+            trees.take(candidate, found.trees)
+        if found.implementation is not None:
+            facts[candidate.path] = found.implementation
+
     with line:  # erased before the next message
-        for candidate, data, result in read_statically(candidates, pool.workers, index,
-                                                       trees.add if trees else None):
+        for candidate, data, result in read_statically(
+                candidates, pool.workers, index, at_hand if trees is not None else None,
+                facts_cache):
             path = str(candidate.path)
             read.append((candidate, data))
             results.append((candidate, result))
@@ -328,11 +415,12 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
         [(str(c.path), [SkillModel.from_json(m) for m in o.models])
          for c, o in zip(loadable, outcomes, strict=True) if o.loaded], index,
         outcome.sources)
-    # the implementation classes, parsed once for both passes below, and only when one
-    # of them has work: the checks inside them, or an EZ105/EZ209 to judge
+    # the implementation classes, read once for both passes below (while the static pass
+    # had their syntax trees at hand, else parsed now), and only when one of them has
+    # work: the checks inside them, or an EZ105/EZ209 to judge
     judging = any(d.code in (UNINFERABLE, UNKNOWN) for d in outcome.diagnostics)
-    implementing = [(c, tree) for c, data in read if b"setDescription" in data
-                    for tree in (parse(data),) if tree is not None] \
+    implementing = [(c, found) for c, data in read if b"setDescription" in data
+                    for found in (facts.get(c.path) or _facts_of(data),) if found is not None] \
         if compound.skills is not None or judging else []
     if compound.skills is not None:
         outcome.diagnostics += _implementations(implementing, compound.skills, index, world,
@@ -340,6 +428,8 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     outcome.diagnostics = _judge_uninferable(outcome.diagnostics, implementing, compound,
                                              world, index)
     outcome.diagnostics.sort(key=lambda d: (d.path, d.line, d.column, d.code))
+    if facts_cache is not None:
+        keep_scenes(facts_cache, world.scenes)
     return outcome
 
 
@@ -352,8 +442,14 @@ class _Compound:
     skills: SkillIndex | None = None
 
 
+def _facts_of(data: bytes) -> ModuleFacts | None:
+    """The implementation facts of a file the static pass did not read for them."""
+    tree = parse(data)
+    return None if tree is None else module_facts(tree, data)
+
+
 def _judge_uninferable(diagnostics: list[Diagnostic],
-                       implementing: list[tuple[Candidate, ast.Module]],
+                       implementing: list[tuple[Candidate, ModuleFacts]],
                        compound: _Compound, world: WorldRun,
                        index: OntologyIndex | None) -> list[Diagnostic]:
     """EZ105 kept a warning only where grounding by type can pick the wrong element
@@ -364,11 +460,11 @@ def _judge_uninferable(diagnostics: list[Diagnostic],
         return diagnostics
     passed = keys_passed(compound.models, compound.skills) \
         if compound.skills is not None else {}
-    return judge(diagnostics, keys_read(tree for _, tree in implementing), passed,
+    return judge(diagnostics, keys_read(facts for _, facts in implementing), passed,
                  _scene_counter(world, index))
 
 
-def _implementations(implementing: list[tuple[Candidate, ast.Module]], skills: SkillIndex,
+def _implementations(implementing: list[tuple[Candidate, ModuleFacts]], skills: SkillIndex,
                      index: OntologyIndex | None, world: WorldRun,
                      sources: dict[str, str]) -> list[Diagnostic]:
     """EZ109, EZ214 and EZ215 in the implementation classes of the run
@@ -377,11 +473,11 @@ def _implementations(implementing: list[tuple[Candidate, ast.Module]], skills: S
     them or the code sets them."""
     from ezskiros_runtime.dsl.vocabulary import to_iri
 
-    from .implementation_code import implementation_findings, properties_set
+    from .implementation_code import implementation_findings
 
     typed = scene_classes(world.scenes)
     classes = {*(index.compact(c) for c in index.classes), *typed} if index else set(typed)
-    made = properties_set(tree for _, tree in implementing)
+    made = set().union(*(facts.sets for _, facts in implementing))
     for scene in readable_scenes(world.scenes):
         made |= {scene.compact(v.property) for v in scene.values}
 
@@ -396,12 +492,12 @@ def _implementations(implementing: list[tuple[Candidate, ast.Module]], skills: S
                                                  and index.property(iri) is not None)
 
     found: list[Diagnostic] = []
-    for candidate, tree in implementing:
+    for candidate, facts in implementing:
         path = str(candidate.path)
         where = Positions(sources.get(path, ""))
         found += [diagnostic(path, where, kind, line, message, skill, fix, term=term)
                   for kind, line, message, skill, fix, term in implementation_findings(
-                      tree, path, skills, known, classes, property_known)]
+                      facts, path, skills, known, classes, property_known)]
     unknown_property = code_for("implementation-unknown-property")
     return once_per_cause(  # an unknown property: once per project
         found, lambda d: d.term if d.code == unknown_property else None,

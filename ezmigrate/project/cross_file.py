@@ -177,7 +177,8 @@ def _others_at(items: Sequence[Migrated], importer: Migrated, target: str) -> li
 
 
 def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
-                       exported: dict[str, frozenset[str]] | None = None) -> int:
+                       exported: dict[str, frozenset[str]] | None = None,
+                       settled: Sequence[Migrated] = ()) -> int:
     """Re-migrate files whose classes derive from descriptions of sibling files.
 
     Returns how many files were migrated again. Only files under the same root are
@@ -185,7 +186,10 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
     sibling defines as an EzSkiROS description (an earlier run migrated it), a base that
     did not convert there, and a base whose file exists but was not given are passed on
     too, so that a deriving class with a ``createDescription`` is reported, not ignored.
+    ``settled``: files among ``migrated`` whose readings are final (bases, not migrated
+    again).
     """
+    fixed = {id(item) for item in settled}
     redone = 0
     done: set[tuple[int, frozenset[str], frozenset[str], frozenset[tuple[str, str]]]] = set()
     ezskiros: dict[str, set[str]] = {}
@@ -204,6 +208,8 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
             for skill in item.result.skills:
                 described.setdefault((root, skill.name), []).append(item)
         for item in migrated:
+            if id(item) in fixed:
+                continue
             root = str(item.candidate.root)
             external: dict[str, list[Operation]] = {}
             migrated_bases: set[str] = set()

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Callable, Iterable
+from dataclasses import dataclass
 
 from ezskiros_runtime.codes import code_for
 from ezskiros_runtime.compound.library import SkillIndex
@@ -40,61 +41,130 @@ Finding = tuple[str, int, str, str, "str | None", "str | None"]
 """``(kind, line, message, implementation class, fix, the key or name it is about)``."""
 
 
-def properties_set(trees: Iterable[ast.Module]) -> set[str]:
-    """Every literal property name the repository's code sets (``setProperty("p:N", v)``,
+@dataclass(frozen=True)
+class ImplementationClass:
+    """What the checks need of one implementation class, read once from its syntax: the
+    description it sets, its literal ``self.params["Key"]`` reads and ``Element("p:C")``
+    literals (``("param" | "element", name, line)``, in the order of the class's walk), its
+    ``getProperty``/``hasProperty`` names, and every string literal in it (the keys it may
+    read or pass on: ``uninferable.keys_read``)."""
+
+    description: str
+    name: str
+    uses: tuple[tuple[str, str, int], ...]
+    properties: tuple[tuple[str, int], ...]
+    strings: frozenset[str]
+
+
+@dataclass(frozen=True)
+class ModuleFacts:
+    """A module's implementation classes and the property names its code sets: all these
+    checks read of a file, so a run keeps this and not the syntax tree."""
+
+    classes: tuple[ImplementationClass, ...] = ()
+    sets: frozenset[str] = frozenset()
+
+
+def module_facts(tree: ast.Module, data: bytes) -> ModuleFacts:
+    """One walk of the module: its implementation classes' reads, and the property names
+    any of its code sets (only when its text holds a setter at all)."""
+    setting = any(m in data for m in _SETTERS)
+    described = {id(cls): description for description, cls in described_classes(tree)}
+    classes = []
+    sets: set[str] = set()
+    for stmt in tree.body:
+        description = described.get(id(stmt))
+        if description is None:
+            if setting:
+                sets |= properties_set((stmt,))
+            continue
+        uses: list[tuple[str, str, int]] = []
+        properties: list[tuple[str, int]] = []
+        strings: set[str] = set()
+        for node in ast.walk(stmt):
+            if isinstance(node, ast.Constant):
+                if isinstance(node.value, str):
+                    strings.add(node.value)
+                continue
+            if setting:
+                _set_by(node, sets)
+            read = _property_call(node, ("getProperty", "hasProperty"))
+            if read is not None:
+                properties.append(read)
+            key = _params_key(node)
+            if key is not None:
+                uses.append(("param", *key))
+            literal = _element_class(node)
+            if literal is not None:
+                uses.append(("element", *literal))
+        assert isinstance(stmt, ast.ClassDef)
+        classes.append(ImplementationClass(description, stmt.name, tuple(uses),
+                                           tuple(properties), frozenset(strings)))
+    return ModuleFacts(tuple(classes), frozenset(sets))
+
+
+_SETTERS = (b"setProperty", b"PropCond")
+"""Text every property-setting call holds (``setProperty``, ``getPropCond``,
+``getHasPropCond``): a module without it sets none."""
+
+
+def properties_set(trees: Iterable[ast.AST]) -> set[str]:
+    """Every literal property name the code sets (``setProperty("p:N", v)``,
     ``getPropCond(..., "p:N", ...)`` conditions, which SkiROS2 sets on post-conditions)."""
     found: set[str] = set()
     for tree in trees:
         for node in ast.walk(tree):
-            name = _property_call(node, ("setProperty",))
-            if name is not None:
-                found.add(name[0])
-            elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
-                    and node.func.attr in ("getPropCond", "getHasPropCond") \
-                    and len(node.args) > 1 and isinstance(node.args[1], ast.Constant) \
-                    and isinstance(node.args[1].value, str):
-                found.add(node.args[1].value)
+            _set_by(node, found)
     return found
 
 
-def implementation_findings(tree: ast.Module, path: str, skills: SkillIndex,
+def _set_by(node: ast.AST, found: set[str]) -> None:
+    """Add the property name ``node`` sets, if it is a setter call with a literal name."""
+    name = _property_call(node, ("setProperty",))
+    if name is not None:
+        found.add(name[0])
+    elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+            and node.func.attr in ("getPropCond", "getHasPropCond") \
+            and len(node.args) > 1 and isinstance(node.args[1], ast.Constant) \
+            and isinstance(node.args[1].value, str):
+        found.add(node.args[1].value)
+
+
+def implementation_findings(facts: ModuleFacts, path: str, skills: SkillIndex,
                             known_class: Callable[[str], bool],
                             classes: Iterable[str],
                             known_property: Callable[[str], bool] = lambda _name: True,
                             ) -> list[Finding]:
     """Every finding of the implementation classes of the module in ``path`` (see the
-    module doc);
-    ``known_class`` answers for a ``prefix:Name``, ``classes`` lists the known ones;
-    ``known_property`` for a property name the ontology, a scene or the code defines."""
+    module doc); ``known_class`` answers for a ``prefix:Name``, ``classes`` lists the known
+    ones; ``known_property`` for a property name the ontology, a scene or the code
+    defines."""
     found: list[Finding] = []
     known = sorted(set(classes))
-    for description, cls in described_classes(tree):
-        for node in ast.walk(cls):
-            read = _property_call(node, ("getProperty", "hasProperty"))
-            if read is not None and not known_property(read[0]):
-                found.append(("implementation-unknown-property", read[1],
-                              f"{read[0]}: nothing in the repository sets this property and "
+    for cls in facts.classes:
+        for name, line in cls.properties:
+            if not known_property(name):
+                found.append(("implementation-unknown-property", line,
+                              f"{name}: nothing in the repository sets this property and "
                               "no loaded ontology or scene declares it, so every element "
                               "SkiROS2 holds lacks it (Element.hasProperty is False)",
-                              cls.name, None, read[0]))
-        declared = _declared(description, skills, path)
-        for node in ast.walk(cls):
-            key = _params_key(node)
-            if key is not None and declared is not None and key[0] not in declared:
-                found.append(("implementation-unknown-key", key[1],
-                              f"self.params[{key[0]!r}]: {description} declares no such "
+                              cls.name, None, name))
+        declared = _declared(cls.description, skills, path)
+        for kind, name, line in cls.uses:
+            if kind == "param" and declared is not None and name not in declared:
+                found.append(("implementation-unknown-key", line,
+                              f"self.params[{name!r}]: {cls.description} declares no such "
                               "parameter, so SkiROS2's ParamHandler returns None (\"Param "
                               "... is not in the map\") and the line raises when it runs",
-                              cls.name, _closest(key[0], sorted(declared)), key[0]))
-            literal = _element_class(node)
-            if literal is not None and not known_class(literal[0]):
-                near = [c for c in known if _one_edit(literal[0], c)]
+                              cls.name, _closest(name, sorted(declared)), name))
+            elif kind == "element" and not known_class(name):
+                near = [c for c in known if _one_edit(name, c)]
                 if near:
-                    found.append(("implementation-element-typo", literal[1],
-                                  f"Element({literal[0]!r}): no loaded ontology, owl file or "
-                                  f"scene defines {literal[0]}; did you mean {near[0]}? The "
+                    found.append(("implementation-element-typo", line,
+                                  f"Element({name!r}): no loaded ontology, owl file or "
+                                  f"scene defines {name}; did you mean {near[0]}? The "
                                   "world model matches types verbatim", cls.name,
-                                  f"Element({near[0]!r})", literal[0]))
+                                  f"Element({near[0]!r})", name))
     return found
 
 

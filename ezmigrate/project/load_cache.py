@@ -3,10 +3,10 @@
 Loading an EzSkiROS file (a child process imports it, traces its descriptions and runs the
 runtime's checks) is most of what ``check`` spends on a migrated repository. The outcome of
 a load depends on the file, on what it imports, on the ontology and on the interpreter, so
-the key is all of them: the file's path and bytes, a digest of every Python file of the run
-(a changed helper module changes every key: conservative, and still a full hit on the
-unchanged repository CI checks again), the ontology's fingerprint, the interpreter and this
-release. Like ``.ruff_cache``, the folder holds a ``.gitignore`` of its own, entries are
+the key is all of them: the file's path and bytes, the bytes of every Python file of the run
+it may import (``_Imports``: a changed helper module changes the keys of the files that
+import it, and no other), the ontology's fingerprint, the interpreter and this release.
+Like ``.ruff_cache``, the folder holds a ``.gitignore`` of its own, entries are
 written whole (a temporary file renamed into place) and a damaged entry is a miss.
 Timeouts and crashes are never cached: they say more about the machine than the file.
 ``--no-cache`` turns it off.
@@ -24,6 +24,7 @@ from pathlib import Path
 
 from .. import __version__
 from ..verify.protocol import LoadJob, LoadOutcome
+from .import_scan import import_words
 
 FOLDER = ".ezmigrate_cache"
 CACHED = frozenset({"ok", "import-error", "syntax", "exit"})
@@ -33,27 +34,27 @@ CACHED = frozenset({"ok", "import-error", "syntax", "exit"})
 class LoadCache:
     """Outcomes of loads by key, in ``folder`` (created on first write)."""
 
-    def __init__(self, folder: Path, salt: str) -> None:
+    def __init__(self, folder: Path, salt: str,
+                 sources: Iterable[tuple[str, bytes]] = ()) -> None:
         self.folder = folder
         self.salt = salt
         self.hits = 0
+        self._imports = _Imports(sources)
 
     @classmethod
     def for_run(cls, folder: Path, sources: Iterable[tuple[str, bytes]], ontology: str,
                 python: str | None) -> LoadCache:
-        """A cache whose keys change with any Python file of the run, the ontology and the
-        interpreter (``python``: None is this one)."""
-        digest = hashlib.sha256()
-        for path, data in sorted(sources):
-            digest.update(path.encode() + b"\0" + hashlib.sha256(data).digest())
-        salt = "\0".join([__version__, sys.version, python or sys.executable, ontology,
-                          digest.hexdigest()])
-        return cls(folder, salt)
+        """A cache whose keys change with the ontology, the interpreter (``python``: None
+        is this one) and, for each file, with the Python files of the run it may import."""
+        salt = "\0".join([__version__, sys.version, python or sys.executable, ontology])
+        return cls(folder, salt, sources)
 
     def key(self, job: LoadJob, data: bytes) -> str:
-        return hashlib.sha256(
-            "\0".join([self.salt, job.path, job.root or ""]).encode() + b"\0" + data
-        ).hexdigest()
+        digest = hashlib.sha256("\0".join([self.salt, job.path, job.root or ""]).encode()
+                                + b"\0" + data)
+        for path, content in self._imports.closure(job.path, data):
+            digest.update(path.encode() + b"\0" + content)
+        return digest.hexdigest()
 
     def get(self, key: str) -> LoadOutcome | None:
         try:
@@ -70,7 +71,63 @@ class LoadCache:
         write_entry(self.folder, key[:2], f"{key}.json", json.dumps(outcome.to_json()))
 
 
-def write_entry(cache: Path, folder: str, name: str, text: str) -> None:
+class _Imports:
+    """Which files of the run a file may import, for the keys of its load.
+
+    Loading a file runs its imports, and theirs: its key holds every file of the run it can
+    reach that way, so a change elsewhere in the repository leaves it be. A file may import
+    another when the other's module name is a word of its import statements
+    (``import_scan``), and importing a module runs the ``__init__.py`` of each package
+    around it; both are followed to the end. A module imported by a name no import
+    statement spells (``importlib``) is not followed: the whole-run cache
+    (``outcome_cache``) still answers only an unchanged repository.
+    """
+
+    def __init__(self, sources: Iterable[tuple[str, bytes]]) -> None:
+        self._data = {os.path.abspath(path): data for path, data in sources}
+        self._by_module: dict[bytes, list[str]] = {}
+        for path in sorted(self._data):
+            self._by_module.setdefault(_module(path).encode(), []).append(path)
+        self._words: dict[str, frozenset[bytes]] = {}
+
+    def closure(self, path: str, data: bytes) -> list[tuple[str, bytes]]:
+        """``(path, digest)`` of every other file of the run ``path`` may import, sorted."""
+        start = os.path.abspath(path)
+        seen = {start}
+        pending = [(start, data)]
+        while pending:
+            here, content = pending.pop()
+            if here not in self._words:
+                self._words[here] = import_words(content)
+            reached = [p for word in self._words[here] for p in self._by_module.get(word, ())]
+            reached += [p for p in _packages_around(here) if p in self._data]
+            for other in reached:
+                if other not in seen:
+                    seen.add(other)
+                    pending.append((other, self._data[other]))
+        return [(p, hashlib.sha256(self._data[p]).digest()) for p in sorted(seen - {start})]
+
+
+def _module(path: str) -> str:
+    """The name a file is imported by: its stem, or its folder's for ``__init__.py``."""
+    name = os.path.basename(path)
+    return os.path.basename(os.path.dirname(path)) if name == "__init__.py" \
+        else os.path.splitext(name)[0]
+
+
+def _packages_around(path: str) -> list[str]:
+    """The ``__init__.py`` of every folder above ``path``, nearest first."""
+    found = []
+    folder = os.path.dirname(path)
+    while True:
+        found.append(os.path.join(folder, "__init__.py"))
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            return found
+        folder = parent
+
+
+def write_entry(cache: Path, folder: str, name: str, text: str | bytes) -> None:
     """``cache/folder/name`` holding ``text``, written whole (a temporary file renamed into
     place); the cache folder gets its ``.gitignore`` when it is made. A read-only checkout
     keeps nothing: same results, no cache."""
@@ -80,8 +137,8 @@ def write_entry(cache: Path, folder: str, name: str, text: str) -> None:
             (cache / ".gitignore").write_text("# made by ezmigrate check\n*\n")
         (cache / folder).mkdir(exist_ok=True)
         handle, temporary = tempfile.mkstemp(dir=cache / folder, suffix=".tmp")
-        with os.fdopen(handle, "w", encoding="utf-8") as stream:
-            stream.write(text)
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(text.encode("utf-8") if isinstance(text, str) else text)
         os.replace(temporary, cache / folder / name)
     except OSError:
         return

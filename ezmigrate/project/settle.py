@@ -61,13 +61,13 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
     ``rewrite --no-verify`` writes, ``check`` only reads).
 
     ``read``: files of the same package already read by other means (``check``'s plain
-    reader), not migrated here and not returned: only the cross-file pass sees them, as
-    files that define bases for the candidates. A plain file derives from no imported
-    class, so nothing about it changes with its siblings (``exported`` only decides the
-    imports a rewrite keeps, which ``check`` never writes)."""
+    reader, or its cache), not migrated here and not returned: only the cross-file pass
+    sees them, as files that define bases for the candidates. Their readings are final
+    (``exported`` only decides the imports a rewrite keeps, which ``check`` never
+    writes)."""
     migrated = migrate_all(candidates, index, jobs, progress, target)
     base = Settings(index=index) if target is None else Settings(index=index, target=target)
-    _settle_cross_file([*migrated, *read] if read else migrated, base)
+    _settle_cross_file(migrated, base, read)
     if progress is not None:
         progress.close()  # the line is gone before verification says anything
     holdpoint.reach("migrated")
@@ -78,17 +78,20 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
     return migrated
 
 
-def _settle_cross_file(migrated: list[Migrated], base: Settings) -> None:
+def _settle_cross_file(migrated: list[Migrated], base: Settings,
+                       read: Sequence[Migrated] = ()) -> None:
     """Migrate again the files whose cross-file facts are not those they were migrated
-    with: names other files import from them, and bases defined in sibling files."""
-    exported = imported_from(migrated)
+    with: names other files import from them, and bases defined in sibling files. ``read``:
+    files settled already, which the others may derive from (never migrated again)."""
+    everything = [*migrated, *read] if read else migrated
+    exported = imported_from(everything)
     for item in migrated:
         names = exported.get(item.candidate.relative)
         if names and item.result.changed:
             item.settings = replace(base, exported=names)
             item.result = migrate(item.original, item.settings, item.candidate.relative)
     if any(m.result.foreign_bases for m in migrated):
-        resolve_cross_file(migrated, base, exported)
+        resolve_cross_file(everything, base, exported, settled=read)
 
 
 def verify_changed(migrated: list[Migrated], checks: Checks) -> None:

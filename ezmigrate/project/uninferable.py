@@ -19,7 +19,6 @@ when SkiROS2 grounds the parameter, which it never does when every tree passes a
 
 from __future__ import annotations
 
-import ast
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import replace
 
@@ -27,22 +26,20 @@ from ezskiros_runtime.codes import code_for
 from ezskiros_runtime.compound.library import SkillIndex, type_name
 from ezskiros_runtime.compound.model import CompoundModel, ProcessorNode, SkillNode
 
-from ..compound.static import described_classes
 from ..lint.diagnostic import Diagnostic
+from .implementation_code import ModuleFacts
 
 UNINFERABLE = code_for("uninferable")
 UNKNOWN = code_for("unknown-vocabulary")
 
 
-def keys_read(trees: Iterable[ast.Module]) -> dict[str, set[str]]:
+def keys_read(modules: Iterable[ModuleFacts]) -> dict[str, set[str]]:
     """``{description: every string literal in its implementations' bodies}``: a superset
     of the keys they read or pass on, enough to tell a key nothing names."""
     found: dict[str, set[str]] = {}
-    for tree in trees:
-        for description, cls in described_classes(tree):
-            strings = found.setdefault(description, set())
-            strings |= {n.value for n in ast.walk(cls)
-                        if isinstance(n, ast.Constant) and isinstance(n.value, str)}
+    for module in modules:
+        for cls in module.classes:
+            found.setdefault(cls.description, set()).update(cls.strings)
     return found
 
 

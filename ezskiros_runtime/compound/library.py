@@ -31,11 +31,16 @@ ROBOT_TYPE = "sumo:Agent"
 """SkiROS2 gives every description an inferred ``Robot`` parameter (legacy-skiros2-api §8.1)."""
 
 
-@functools.lru_cache(maxsize=4096)
 def _folders(path: str) -> tuple[str, ...]:
-    """The folders of an absolute file path, outermost first. Kept: ``nearest`` compares the
-    same few files for every child of every tree, and splitting them was most of its cost."""
-    return PurePath(path).parent.parts
+    """The folders of a file path made absolute, outermost first."""
+    return _absolute_folders(path if os.path.isabs(path) else os.path.abspath(path))
+
+
+@functools.lru_cache(maxsize=4096)
+def _absolute_folders(path: str) -> tuple[str, ...]:
+    """``_folders`` of an absolute path. Kept: ``nearest`` compares the same few files for
+    every child of every tree, and normalising and splitting them was most of its cost."""
+    return PurePath(os.path.normpath(path)).parent.parts
 
 
 def _shared(here: tuple[str, ...], there: tuple[str, ...]) -> int:
@@ -166,8 +171,8 @@ class SkillIndex:
             return [info]
         if not path:
             return list(others)
-        here = _folders(os.path.abspath(path))
-        shared = [_shared(here, _folders(os.path.abspath(o.path))) for o in others]
+        here = _folders(path)
+        shared = [_shared(here, _folders(o.path)) for o in others]
         best = max(shared)
         return [o for o, count in zip(others, shared) if count == best]
 

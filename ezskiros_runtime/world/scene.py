@@ -123,10 +123,30 @@ def read_scene(path: str | Path, text: str | None = None) -> Scene:
             text = Path(path).read_text(encoding="utf-8")
         except (OSError, UnicodeError) as error:
             raise SceneError(where, 0, f"cannot be read: {error}") from error
-    return _parsed(where, text)
+    found = _KNOWN.get((where, text))
+    if found is None:
+        found = _parsed(where, text)
+        seed_scene(where, text, found)
+    return found
 
 
-@functools.lru_cache(maxsize=64)
+_KNOWN: dict[tuple[str, str], Scene] = {}
+"""Scenes parsed, or handed in, by path and text."""
+
+
+def seed_scene(path: str | Path, text: str, scene: Scene) -> None:
+    """``scene`` is what ``read_scene`` makes of ``text`` at ``path`` (parsed in an earlier
+    run and kept by a tool's cache, by content): it is returned instead of parsing again."""
+    if len(_KNOWN) >= 256:  # one run's scenes; a long-lived process does not grow
+        _KNOWN.clear()
+    _KNOWN[(str(path), text)] = scene
+
+
+def known_scene(path: str | Path, text: str) -> Scene | None:
+    """The scene ``read_scene`` made of ``text`` at ``path`` in this process, if it did."""
+    return _KNOWN.get((str(path), text))
+
+
 def _parsed(where: str, text: str) -> Scene:
     from rdflib import BNode, Graph, Literal, URIRef
 

@@ -18,7 +18,7 @@ from ezmigrate.codemod.migrate import Settings, migrate
 from ezmigrate.files.prefilter import may_hold_descriptions
 from ezmigrate.lint.diagnostic import Positions
 from ezmigrate.lint.plain_reader import Declined, read_plain
-from ezmigrate.project import check
+from ezmigrate.project import check, file_facts
 from ezmigrate.project.check import _legacy, run_check
 from ezmigrate.report.results import FileResult
 from ezmigrate.verify.pool import PoolConfig
@@ -80,9 +80,10 @@ def _diagnostics(paths: list[Path]) -> tuple[list[str], int]:
 @pytest.mark.parametrize("tree", ["fixtures/ros_repo", "fixtures"])
 def test_whole_runs_agree_with_the_codemod_path(tree: str,
                                                 monkeypatch: pytest.MonkeyPatch) -> None:
-    """Cross-file bases included: a declined file brings its whole package along."""
+    """Cross-file bases included: a declined file brings along the plain files of its
+    package that may define its bases."""
     fast = _diagnostics([REPO / tree])
-    monkeypatch.setattr(check, "read_plain", lambda data, path, tree=None: Declined())
+    monkeypatch.setattr(file_facts, "read_plain", lambda data, path, tree=None: Declined())
     assert fast == _diagnostics([REPO / tree])
     assert fast[1] > 0
 

@@ -52,11 +52,27 @@ def test_a_changed_file_misses_and_a_damaged_entry_is_a_miss(tmp_path: Path) -> 
     for entry in (repo / FOLDER).glob(LOADS):
         entry.write_text("{not json")
     assert _check(repo).stdout == first.stdout
-    helper = repo / "helpers.py"  # any Python file of the run may be imported: all miss
-    helper.write_text("X = 1\n")
     before = len(list((repo / FOLDER).glob(LOADS)))
-    _check(repo)
-    assert len(list((repo / FOLDER).glob(LOADS))) == before + 3
+    (repo / "unrelated.py").write_text("X = 1\n")  # nothing imports it: nothing misses
+    assert _check(repo).stdout == first.stdout
+    assert len(list((repo / FOLDER).glob(LOADS))) == before
+
+
+def test_a_changed_module_misses_for_the_files_importing_it_alone(tmp_path: Path) -> None:
+    """A load runs the file's imports: a file of the run it imports (here through a
+    package's ``__init__``) is part of its key, and no other file is (issue 31)."""
+    repo = _repo(tmp_path)
+    (repo / "lab").mkdir()
+    (repo / "lab" / "__init__.py").write_text("from .units import SCALE\n")
+    (repo / "lab" / "units.py").write_text("SCALE = 1.0\n")
+    descriptions = repo / "descriptions.py"
+    descriptions.write_text("import lab\n" + descriptions.read_text())
+    first = _check(repo)
+    assert first.returncode == 0, first.stderr
+    before = len(list((repo / FOLDER).glob(LOADS)))
+    (repo / "lab" / "units.py").write_text("SCALE = 2.0\n")
+    assert _check(repo).stdout == first.stdout
+    assert len(list((repo / FOLDER).glob(LOADS))) == before + 1  # descriptions.py alone
 
 
 def test_cached_loads_loads_only_the_misses_in_one_batch(tmp_path: Path) -> None:

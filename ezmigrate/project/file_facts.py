@@ -1,0 +1,57 @@
+"""What ``check`` reads of one file, from the file alone: made once per content.
+
+A file that may hold a description is parsed once, and three passes read its syntax tree:
+the static reader (``lint/plain_reader``: its plain legacy descriptions, or ``Declined``:
+the codemod takes it), the compound pass (``compound.analysis.tree_facts``) and the checks
+inside implementations (``implementation_code.module_facts``). Their readings depend on the
+file's path and bytes and nothing else, so the tree is dropped as soon as they are taken
+(a repository's trees kept alive slow every garbage collection) and ``facts_cache`` keeps
+them from one run to the next.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass
+
+from ..compound.analysis import READ_WHEN, TreeFacts, tree_facts
+from ..files.discover import Candidate
+from ..lint.plain_reader import Declined, read_plain
+from ..report.results import FileResult
+from .cross_file import RUNTIME_MARKER
+from .implementation_code import ModuleFacts, module_facts
+
+
+@dataclass(frozen=True)
+class FileFacts:
+    """``static``: the plain reading, or ``Declined`` (the codemod reads the file);
+    ``trees`` and ``implementation``: what the compound pass and the implementation checks
+    take (None when the file has nothing for them, or they were not asked for)."""
+
+    static: FileResult | Declined
+    trees: TreeFacts | None = None
+    implementation: ModuleFacts | None = None
+
+
+def parse(data: bytes) -> ast.Module | None:
+    """The module's syntax tree, or None when ``ast`` cannot read it (the codemod says why)."""
+    try:
+        return ast.parse(data)
+    except (SyntaxError, ValueError, UnicodeError, LookupError, MemoryError, RecursionError):
+        return None
+
+
+def file_facts(candidate: Candidate, data: bytes, compounds: bool) -> FileFacts:
+    """The facts of a file that may hold a description; ``compounds``: also what the
+    compound pass and the implementation checks read."""
+    tree = parse(data)
+    if tree is None:
+        return FileFacts(Declined())
+    static = read_plain(data, candidate.relative, tree) if RUNTIME_MARKER not in data \
+        else Declined()
+    if not compounds:
+        return FileFacts(static)
+    trees = tree_facts(tree, str(candidate.path)) \
+        if any(m in data for m in READ_WHEN) else None
+    implementation = module_facts(tree, data) if b"setDescription" in data else None
+    return FileFacts(static, trees, implementation)
