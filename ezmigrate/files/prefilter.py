@@ -32,6 +32,14 @@ _STATEMENT = re.compile(rb"(?:class|def|from|import)\b")
 
 def may_hold_descriptions(data: bytes) -> bool:
     """False only when the file certainly has nothing to migrate."""
+    verdict = by_text(data)
+    return marker_is_identifier(data) if verdict is None else verdict
+
+
+def by_text(data: bytes) -> bool | None:
+    """Steps 1 and 2 of the module doc: True or False when the text decides, None when
+    only step 3 (``marker_is_identifier``, a parse) can; a migration's workers take that
+    step for the file, so that the process reading the tree does not parse it."""
     if not any(marker in data for marker in MARKERS):
         return False
     in_code = False
@@ -42,7 +50,7 @@ def may_hold_descriptions(data: bytes) -> bool:
         if _STATEMENT.match(line):
             return True
         in_code = True
-    return in_code and _marker_is_identifier(data)
+    return None if in_code else False
 
 
 def _line_head(data: bytes, position: int) -> bytes:
@@ -51,7 +59,7 @@ def _line_head(data: bytes, position: int) -> bytes:
     return data[start:position].lstrip(b" \t\f")
 
 
-def _marker_is_identifier(data: bytes) -> bool:
+def marker_is_identifier(data: bytes) -> bool:
     """Whether a marker is part of an identifier in the module's syntax tree."""
     import ast  # here: most runs never get this far
 

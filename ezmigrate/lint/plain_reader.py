@@ -254,6 +254,8 @@ class _Reader:
         return found
 
     def statement(self, stmt: ast.stmt) -> None:
+        if isinstance(stmt, ast.Pass):
+            return  # declares nothing; the codemod drops it too (``kept_statements``)
         if not isinstance(stmt, ast.Expr):
             raise _Declined
         method = self._self_method(stmt.value)

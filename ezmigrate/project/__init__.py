@@ -5,7 +5,8 @@ back, repeat); `runner` reads the files and runs the codemod in parallel workers
 `import_scan` and `cross_file` for what links files; `holding` and `static_refusal` hold
 back the skills that will not be written; `session` is ``rewrite`` (it writes what settled,
 under `interrupt`'s deferral) and `earlier` adds what an earlier run migrated to its report;
-`check` is ``check``, reading each file once into `file_facts`, with `load_cache`,
+`check` is ``check``, reading each file once into `file_facts` (in `reading_pool`'s
+forked workers, with the scenes), with `load_cache`,
 `facts_cache` and `outcome_cache` for its next run (each load, each file's and scene's
 reading by content, the whole run),
 `launch` for the launch files it reads, `uninferable` judging EZ105 and EZ209 by what the

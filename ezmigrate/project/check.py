@@ -47,6 +47,7 @@ from .launch import Launch, with_init_scene
 from .load_cache import LoadCache, cached_loads
 from .outcome_cache import OutcomeCache, read_all, run_key
 from .progress import Progress
+from .reading_pool import ReadingPool
 from .runner import Migrated
 from .settle import settle
 from .uninferable import UNINFERABLE, UNKNOWN
@@ -111,7 +112,7 @@ def _legacy(path: str, result: FileResult, positions: Positions,
 
 def read_statically(candidates: list[Candidate], workers: int, index: OntologyIndex | None,
                     on_facts: Callable[[Candidate, bytes, FileFacts], None] | None = None,
-                    cache: FactsCache | None = None
+                    cache: FactsCache | None = None, reader: ReadingPool | None = None
                     ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
     """What every legacy description declares, without importing user code.
 
@@ -121,46 +122,58 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     to the codemod's cross-file pass as read, not read again with libcst. Files without a
     description are read, never parsed. ``on_facts`` (when given) sees what the compound
     pass and the implementation checks read of each parsed file (``file_facts``); ``cache``
-    keeps those readings, and the codemod's, by content (``facts_cache``).
+    keeps those readings, and the codemod's, by content (``facts_cache``); ``reader``
+    parses the files the cache lacks in its workers (``reading_pool``). Files come out in
+    the order given, the codemod's last.
     """
+    compounds = on_facts is not None
+    read: list[tuple[Candidate, bytes | None]] = []
+    facts: dict[Path, FileFacts] = {}
+    missing: list[tuple[Candidate, bytes, str | None]] = []
+    for candidate in candidates:
+        try:
+            data: bytes | None = candidate.path.read_bytes()
+        except OSError:
+            data = None  # the codemod reports why it cannot be read
+        read.append((candidate, data))
+        if data is None or not may_hold_descriptions(data):
+            continue
+        key = None if cache is None else cache.key(
+            "file", str(candidate.path), candidate.relative, str(compounds), data)
+        found = None if cache is None or key is None else cache.get(key)
+        if isinstance(found, FileFacts):
+            facts[candidate.path] = found
+        else:
+            missing.append((candidate, data, key))
+    items = [(c, d) for c, d, _ in missing]
+    made = reader.read_files(items, compounds) if reader is not None \
+        else [file_facts(c, d, compounds) for c, d in items]
+    for (candidate, _, key), found in zip(missing, made, strict=True):
+        facts[candidate.path] = found
+        if cache is not None and key is not None:
+            cache.put(key, found)
     plain: list[tuple[Candidate, bytes, FileResult]] = []
     declined: list[tuple[Candidate, bytes | None]] = []
     whole_package: set[Path] = set()
-    for candidate in candidates:
-        try:
-            data = candidate.path.read_bytes()
-        except OSError:
-            declined.append((candidate, None))  # the codemod reports why it cannot be read
-            continue
-        if not may_hold_descriptions(data):
+    for candidate, data in read:
+        reading = facts.get(candidate.path)
+        if data is None:
+            declined.append((candidate, None))
+        elif reading is None:
             yield candidate, data, FileResult(path=candidate.relative)
-            continue
-        facts = _facts(candidate, data, on_facts is not None, cache)
-        if on_facts is not None:
-            on_facts(candidate, data, facts)
-        if isinstance(facts.static, Declined):
-            declined.append((candidate, data))
-            if facts.static.cross_file:
-                whole_package.add(candidate.root)
         else:
-            plain.append((candidate, data, facts.static))
+            if on_facts is not None:
+                on_facts(candidate, data, reading)
+            if isinstance(reading.static, Declined):
+                declined.append((candidate, data))
+                if reading.static.cross_file:
+                    whole_package.add(candidate.root)
+            else:
+                plain.append((candidate, data, reading.static))
     yield from plain
     if declined:
         yield from _settled(declined, [(c, d, r) for c, d, r in plain if c.root in whole_package],
                             index, workers, cache)
-
-
-def _facts(candidate: Candidate, data: bytes, compounds: bool,
-           cache: FactsCache | None) -> FileFacts:
-    """``file_facts``, from ``cache`` when an earlier run read these bytes at this path."""
-    if cache is None:
-        return file_facts(candidate, data, compounds)
-    key = cache.key("file", str(candidate.path), candidate.relative, str(compounds), data)
-    found = cache.get(key)
-    if not isinstance(found, FileFacts):
-        found = file_facts(candidate, data, compounds)
-        cache.put(key, found)
-    return found
 
 
 def _settled(declined: list[tuple[Candidate, bytes | None]],
@@ -273,9 +286,10 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     # the readings of each file by content: for runs over folders, as the whole run's
     # cache (a run over named files would keep only their entries and drop the others)
     facts = FactsCache.open(kept[0][0]) if kept is not None else None
+    reader = ReadingPool(pool.workers)  # forked now, before any thread of the run exists
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
-                       standby, world, cache_dir, trace, facts)
+                       standby, world, cache_dir, trace, facts, reader)
         outcome.files += len(world.scenes)
         outcome.diagnostics = as_the_robot_resolves(
             outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
@@ -288,6 +302,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
             facts.save()
         return outcome
     finally:
+        reader.close()
         for workers in standby:
             workers.close()
 
@@ -331,15 +346,17 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
          skill_libraries: tuple[Path, ...], trees: Trees | None,
          standby: list[Standby], world: WorldRun,
          cache_dir: Path | None = None, trace: bool = True,
-         facts_cache: FactsCache | None = None) -> CheckOutcome:
+         facts_cache: FactsCache | None = None,
+         reader: ReadingPool | None = None) -> CheckOutcome:
     """``run_check`` once its compound pass (``trees``) is set up."""
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
     results: list[tuple[Candidate, FileResult]] = []
     line = Progress.for_stream(len(candidates), skills_label="skills found") \
         if progress is not None else Progress(len(candidates), active=False)
-    if facts_cache is not None:
-        seed_scenes(facts_cache, world.scenes)
+    cached = seed_scenes(facts_cache, world.scenes) if facts_cache is not None else set()
+    if reader is not None:
+        reader.parse_scenes([scene for scene in world.scenes if scene not in cached])
     facts: dict[Path, ModuleFacts] = {}
 
     def at_hand(candidate: Candidate, data: bytes, found: FileFacts) -> None:
@@ -352,7 +369,7 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     with line:  # erased before the next message
         for candidate, data, result in read_statically(
                 candidates, pool.workers, index, at_hand if trees is not None else None,
-                facts_cache):
+                facts_cache, reader):
             path = str(candidate.path)
             read.append((candidate, data))
             results.append((candidate, result))
@@ -410,6 +427,8 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
                 f"Did you mean {found.suggestions[0]}?" if found.suggestions else None,
                 found.severity if found.severity == "info" else None, found.param,
                 found.actual, found.actual is not None and found.relation is None))
+    if reader is not None:
+        reader.seed_scenes()
     outcome.diagnostics += world_diagnostics(
         world, [(str(c.path), r) for c, r in results],
         [(str(c.path), [SkillModel.from_json(m) for m in o.models])

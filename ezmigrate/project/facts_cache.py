@@ -132,15 +132,19 @@ class FactsCache:
         return found if isinstance(found, dict) else {}
 
 
-def seed_scenes(cache: FactsCache, paths: Iterable[Path]) -> None:
-    """Hand ``read_scene`` the parses an earlier run kept of these scenes' texts."""
+def seed_scenes(cache: FactsCache, paths: Iterable[Path]) -> set[Path]:
+    """Hand ``read_scene`` the parses an earlier run kept of these scenes' texts; returns
+    the scenes it had."""
     from ezskiros_runtime.world.scene import Scene, seed_scene
 
+    seeded = set()
     for path in paths:
         text = _text(path)
         found = None if text is None else cache.get(cache.key("scene", str(path), text))
         if isinstance(found, Scene):
             seed_scene(path, text or "", found)
+            seeded.add(path)
+    return seeded
 
 
 def keep_scenes(cache: FactsCache, paths: Iterable[Path]) -> None:

@@ -25,7 +25,8 @@ calls ``setDescription(Desc(), ...)``), against what the repository declares:
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable, Iterable
+from collections import deque
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 
 from ezskiros_runtime.codes import code_for
@@ -81,26 +82,43 @@ def module_facts(tree: ast.Module, data: bytes) -> ModuleFacts:
         uses: list[tuple[str, str, int]] = []
         properties: list[tuple[str, int]] = []
         strings: set[str] = set()
-        for node in ast.walk(stmt):
-            if isinstance(node, ast.Constant):
-                if isinstance(node.value, str):
-                    strings.add(node.value)
-                continue
-            if setting:
-                _set_by(node, sets)
-            read = _property_call(node, ("getProperty", "hasProperty"))
-            if read is not None:
-                properties.append(read)
-            key = _params_key(node)
-            if key is not None:
-                uses.append(("param", *key))
-            literal = _element_class(node)
-            if literal is not None:
-                uses.append(("element", *literal))
+        for node in _walk(stmt):
+            kind = type(node)
+            if kind is ast.Constant:
+                if isinstance(node.value, str):  # type: ignore[attr-defined]
+                    strings.add(node.value)  # type: ignore[attr-defined]
+            elif kind is ast.Subscript:
+                key = _params_key(node)
+                if key is not None:
+                    uses.append(("param", *key))
+            elif kind is ast.Call:
+                if setting:
+                    _set_by(node, sets)
+                read = _property_call(node, ("getProperty", "hasProperty"))
+                if read is not None:
+                    properties.append(read)
+                literal = _element_class(node)
+                if literal is not None:
+                    uses.append(("element", *literal))
         assert isinstance(stmt, ast.ClassDef)
         classes.append(ImplementationClass(description, stmt.name, tuple(uses),
                                            tuple(properties), frozenset(strings)))
     return ModuleFacts(tuple(classes), frozenset(sets))
+
+
+def _walk(root: ast.AST) -> Iterator[ast.AST]:
+    """``ast.walk``, in its order (breadth first, fields in order), without its generator
+    per node: the implementation classes of a repository are most of what ``check`` walks."""
+    todo = deque([root])
+    while todo:
+        node = todo.popleft()
+        for name in node._fields:
+            value = getattr(node, name, None)
+            if isinstance(value, ast.AST):
+                todo.append(value)
+            elif isinstance(value, list):
+                todo.extend(item for item in value if isinstance(item, ast.AST))
+        yield node
 
 
 _SETTERS = (b"setProperty", b"PropCond")
@@ -113,8 +131,9 @@ def properties_set(trees: Iterable[ast.AST]) -> set[str]:
     ``getPropCond(..., "p:N", ...)`` conditions, which SkiROS2 sets on post-conditions)."""
     found: set[str] = set()
     for tree in trees:
-        for node in ast.walk(tree):
-            _set_by(node, found)
+        for node in _walk(tree):
+            if type(node) is ast.Call:
+                _set_by(node, found)
     return found
 
 

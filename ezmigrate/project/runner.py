@@ -23,7 +23,7 @@ from concurrent.futures.process import BrokenProcessPool
 from typing import TYPE_CHECKING
 
 from ..files.discover import Candidate
-from ..files.prefilter import may_hold_descriptions
+from ..files.prefilter import by_text, marker_is_identifier
 from ..files.writing import digest as content_digest
 from ..report.results import FileResult
 from . import holdpoint
@@ -36,6 +36,8 @@ if TYPE_CHECKING:
     from ..codemod.migrate import Settings
 
 _SETTINGS: Settings | None = None
+_WRITTEN_LINES = False
+"""Whether the worker maps each new source's lines for the report (``with_written_lines``)."""
 
 
 class Migrated:
@@ -86,17 +88,28 @@ class Migrated:
         return f"Migrated({self.candidate.relative!r}, changed={self.result.changed})"
 
 
-def _init_worker(settings: Settings) -> None:
-    global _SETTINGS
+def _init_worker(settings: Settings, written_lines: bool = False) -> None:
+    global _SETTINGS, _WRITTEN_LINES
     _SETTINGS = settings
+    _WRITTEN_LINES = written_lines
 
 
-def _migrate_one(relative: str, data: bytes) -> FileResult:
+def _migrate_one(relative: str, data: bytes, ambiguous: bool = False) -> FileResult:
+    """One file's migration, with the line map its report needs when it has one
+    (``with_written_lines``: here, in the worker, rather than for every file in the main
+    process afterwards).
+    ``ambiguous``: the prefilter's text could not rule the file out; its parse
+    (``marker_is_identifier``) is taken here too, and an empty result is what the
+    prefilter would have given."""
     from ..codemod.migrate import migrate
+    from ..report.written_lines import with_written_lines
 
     assert _SETTINGS is not None
+    if ambiguous and not marker_is_identifier(data):
+        return FileResult(relative)
     try:
-        return migrate(data, _SETTINGS, relative)
+        result = migrate(data, _SETTINGS, relative)
+        return with_written_lines(result, data) if _WRITTEN_LINES else result
     except Exception:  # a bug of ours must not stop the run nor lose the other files
         return FileResult(path=relative, error="internal error while migrating:\n"
                           + traceback.format_exc(limit=6))
@@ -128,14 +141,15 @@ class _Workers:
 
     def __init__(self, index: OntologyIndex | None, jobs: int,
                  progress: Progress | None = None,
-                 target: tuple[int, int] | None = None) -> None:
+                 target: tuple[int, int] | None = None, written_lines: bool = False) -> None:
         self.index = index
         self.target = target
+        self.written_lines = written_lines
         self.jobs = jobs
         self.progress = progress
         self._settings: Settings | None = None
         self.pool: ProcessPoolExecutor | None = None
-        self.first: tuple[Migrated, bytes] | None = None
+        self.first: tuple[Migrated, bytes, bool] | None = None
         self.futures: list[tuple[Migrated, Future[FileResult]]] = []
 
     @property
@@ -147,33 +161,34 @@ class _Workers:
                               else Settings(index=self.index, target=self.target))
         return self._settings
 
-    def add(self, item: Migrated, data: bytes) -> None:
+    def add(self, item: Migrated, data: bytes, ambiguous: bool = False) -> None:
         item.settings = self.settings
         if self.jobs <= 1:
-            _init_worker(self.settings)
-            item.result = _migrate_one(item.candidate.relative, data)
+            _init_worker(self.settings, self.written_lines)
+            item.result = _migrate_one(item.candidate.relative, data, ambiguous)
             self.finished(item)
             return
         if self.pool is None and self.first is None:
-            self.first = (item, data)
+            self.first = (item, data, ambiguous)
             return
         if self.pool is None:
             self.pool = self._start()
             assert self.first is not None
             self._submit(*self.first)
             self.first = None
-        self._submit(item, data)
+        self._submit(item, data, ambiguous)
 
     def _start(self) -> ProcessPoolExecutor:
         context = multiprocessing.get_context(
             "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
         return ProcessPoolExecutor(max_workers=self.jobs, mp_context=context,
-                                   initializer=_init_worker, initargs=(self.settings,))
+                                   initializer=_init_worker,
+                                   initargs=(self.settings, self.written_lines))
 
-    def _submit(self, item: Migrated, data: bytes) -> None:
+    def _submit(self, item: Migrated, data: bytes, ambiguous: bool) -> None:
         assert self.pool is not None
         try:
-            future = self.pool.submit(_migrate_one, item.candidate.relative, data)
+            future = self.pool.submit(_migrate_one, item.candidate.relative, data, ambiguous)
         except BrokenProcessPool as error:  # a worker died while files were still read:
             future = Future()  # this file gets the verdict the files in flight get
             future.set_exception(error)
@@ -181,9 +196,9 @@ class _Workers:
 
     def finish(self) -> None:
         if self.first is not None:  # only one file needed the core: no pool for it
-            _init_worker(self.settings)
-            item, data = self.first
-            item.result = _migrate_one(item.candidate.relative, data)
+            _init_worker(self.settings, self.written_lines)
+            item, data, ambiguous = self.first
+            item.result = _migrate_one(item.candidate.relative, data, ambiguous)
             self.finished(item)
         if self.pool is None:
             return
@@ -214,10 +229,12 @@ class _Workers:
 
 def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                 jobs: int, progress: Progress | None = None,
-                target: tuple[int, int] | None = None) -> list[Migrated]:
+                target: tuple[int, int] | None = None,
+                written_lines: bool = False) -> list[Migrated]:
     """Migrate every candidate; files the prefilter rules out get an empty result.
-    ``target``: the Python the migrated code must run on (None: the default)."""
-    workers = _Workers(index, jobs, progress, target)
+    ``target``: the Python the migrated code must run on (None: the default);
+    ``written_lines``: each result carries its report's line map (``with_written_lines``)."""
+    workers = _Workers(index, jobs, progress, target, written_lines)
     done: list[Migrated] = []
     try:
         for candidate, data, error in read_candidates(candidates):
@@ -225,13 +242,13 @@ def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                 done.append(Migrated(candidate, b"", "",
                                      FileResult(candidate.relative, error=error)))
                 workers.finished()
-            elif may_hold_descriptions(data):
+            elif (verdict := by_text(data)) is not False:
                 item = Migrated(candidate, data, content_digest(data),
                                 FileResult(candidate.relative))
                 done.append(item)
                 if progress is not None:  # the estimate is weighted by skill files
                     progress.queued()
-                workers.add(item, data)
+                workers.add(item, data, ambiguous=verdict is None)
                 if workers.pool is not None:  # forked workers are busy with the others
                     holdpoint.reach("migrating")
             else:

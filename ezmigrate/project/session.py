@@ -112,7 +112,7 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     holdpoint.reach("discovered")
     with Progress.for_stream(len(candidates)) as progress:  # gone before anything is said
         migrated = settle(candidates, index, options.jobs, options.verification, progress,
-                          options.target, refuse_unloadable=True)
+                          options.target, refuse_unloadable=True, written_lines=True)
     outcome = RewriteOutcome(migrated, notes)
     if not options.writes:
         outcome.manifests = _manifests(outcome, options)

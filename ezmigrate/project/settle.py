@@ -53,7 +53,7 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
            checks: Checks | None = None, progress: Progress | None = None,
            target: tuple[int, int] | None = None,
            refuse_unloadable: bool = False,
-           read: Sequence[Migrated] = ()) -> list[Migrated]:
+           read: Sequence[Migrated] = (), written_lines: bool = False) -> list[Migrated]:
     """Every candidate's settled result (see the module doc); ``checks`` None: no
     verification (``--no-verify``, ``check``); ``target``: the Python the migrated code
     must run on (None: the default, ``Settings.target``). ``refuse_unloadable``: without
@@ -64,8 +64,9 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
     reader, or its cache), not migrated here and not returned: only the cross-file pass
     sees them, as files that define bases for the candidates. Their readings are final
     (``exported`` only decides the imports a rewrite keeps, which ``check`` never
-    writes)."""
-    migrated = migrate_all(candidates, index, jobs, progress, target)
+    writes). ``written_lines``: the workers also map each new source's lines for the
+    report (``report/written_lines``; ``rewrite PATH`` shows them)."""
+    migrated = migrate_all(candidates, index, jobs, progress, target, written_lines)
     base = Settings(index=index) if target is None else Settings(index=index, target=target)
     _settle_cross_file(migrated, base, read)
     if progress is not None:

@@ -64,6 +64,16 @@ class SkillResult:
 
 
 @dataclass(frozen=True)
+class WrittenLines:
+    """Legacy line -> written line, and each top-level class's line, of one new source
+    (``digest``: its SHA-1, so that a changed source never meets an old map)."""
+
+    digest: str
+    lines: dict[int, int]
+    classes: dict[str, int]
+
+
+@dataclass(frozen=True)
 class FileResult:
     """What happened to one file. ``new_source`` is set only when it should change."""
 
@@ -82,6 +92,9 @@ class FileResult:
     """``(base, module)`` of class bases imported from user modules (maybe descriptions)."""
     depends_on: list[str] = field(default_factory=list)
     """Files whose migrated descriptions this file's migrated classes derive from."""
+    written: WrittenLines | None = None
+    """Where the lines of ``new_source`` came from, worked out where it was made
+    (``written_lines``): valid only for the new source whose digest it names."""
 
     @property
     def error_code(self) -> str | None:

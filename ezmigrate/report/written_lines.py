@@ -18,11 +18,12 @@ from __future__ import annotations
 
 import ast
 import difflib
+import hashlib
 import re
 from dataclasses import replace
 
 from .diffs import decode
-from .results import FileResult, ReviewFinding
+from .results import FileResult, ReviewFinding, WrittenLines
 
 _KEY = re.compile(r"""\.addParam\(\s*(?:key\s*=\s*)?(["'])(\w+)\1""")
 _CONDITION_CALL = re.compile(r"\.add(?:Pre|Post|Hold)?Condition\(")
@@ -69,14 +70,34 @@ def _class_lines(after: str) -> dict[str, int]:
     return {node.name: node.lineno for node in tree.body if isinstance(node, ast.ClassDef)}
 
 
+def with_written_lines(result: FileResult, original: bytes) -> FileResult:
+    """``result`` carrying its ``WrittenLines``: worked out in the worker that migrated the
+    file, so that the main process (``as_written``) does not diff and parse every file
+    again one after the other."""
+    if not result.changed or not isinstance(result.new_source, bytes):
+        return result
+    return replace(result, written=_written(original, result.new_source))
+
+
+def _written(original: bytes, new_source: bytes) -> WrittenLines:
+    after = decode(new_source)
+    return WrittenLines(_digest(new_source), line_map(decode(original), after),
+                        _class_lines(after))
+
+
+def _digest(data: bytes) -> str:
+    return hashlib.sha1(data).hexdigest()  # a checksum of the source, not a secret
+
+
 def as_written(result: FileResult, original: bytes) -> FileResult:
     """``result`` with its skills' and findings' lines those of the file it writes (or, with
     ``--dry-run``, would write), each with ``legacy_line``; unchanged when nothing changes."""
     if not result.changed or not isinstance(result.new_source, bytes):
         return result
-    before, after = decode(original), decode(result.new_source)
-    mapped = line_map(before, after)
-    classes = _class_lines(after)
+    written = result.written
+    if written is None or written.digest != _digest(result.new_source):
+        written = _written(original, result.new_source)
+    mapped, classes = written.lines, written.classes
     skills = []
     for skill in result.skills:
         at = classes.get(skill.name, mapped.get(skill.line))
@@ -94,4 +115,4 @@ def _finding(finding: ReviewFinding, mapped: dict[int, int]) -> ReviewFinding:
     return replace(finding, line=at, legacy_line=finding.line)
 
 
-__all__ = ["as_written", "line_map"]
+__all__ = ["as_written", "line_map", "with_written_lines"]

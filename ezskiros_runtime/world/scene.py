@@ -168,31 +168,31 @@ def _parsed(where: str, text: str) -> Scene:
                                                                          str(t[2])))
     schema = {str(s) for s, p, o in triples if str(p) == RDF_TYPE
               and str(o).startswith(SCHEMA) and str(o) not in NOT_CLASSES}
-    for s, p, o in triples:
-        if isinstance(s, BNode) or not isinstance(s, URIRef) or str(s) in schema:
-            continue
-        subject = str(s)
-        element = scene.elements.get(subject)
-        if element is None:
-            element = scene.elements[subject] = SceneElement(subject, blocks.start(subject))
-        prop = str(p)
-        if prop == RDF_TYPE and isinstance(o, URIRef):
-            if str(o) not in NOT_CLASSES and str(o) not in element.types:
-                element.types.append(str(o))
-        elif prop == RDFS_LABEL:
-            element.label = str(o)
-        elif prop.startswith(SCHEMA):
-            continue
-        elif isinstance(o, URIRef):
-            scene.relations.append(Relation(subject, prop, str(o),
-                                            blocks.line(subject, str(o), prop)))
-        elif isinstance(o, Literal):
-            datatype = str(o.datatype) if o.datatype is not None else None
-            line = blocks.line(subject, None, prop)
-            with _quiet_rdflib():
+    with _quiet_rdflib():  # a value that does not fit its datatype is a finding
+        for s, p, o in triples:
+            if isinstance(s, BNode) or not isinstance(s, URIRef) or str(s) in schema:
+                continue
+            subject = str(s)
+            element = scene.elements.get(subject)
+            if element is None:
+                element = scene.elements[subject] = SceneElement(subject, blocks.start(subject))
+            prop = str(p)
+            if prop == RDF_TYPE and isinstance(o, URIRef):
+                if str(o) not in NOT_CLASSES and str(o) not in element.types:
+                    element.types.append(str(o))
+            elif prop == RDFS_LABEL:
+                element.label = str(o)
+            elif prop.startswith(SCHEMA):
+                continue
+            elif isinstance(o, URIRef):
+                scene.relations.append(Relation(subject, prop, str(o),
+                                                blocks.line(subject, str(o), prop)))
+            elif isinstance(o, Literal):
+                datatype = str(o.datatype) if o.datatype is not None else None
+                line = blocks.line(subject, None, prop)
                 value = _python(o)
-            scene.values.append(Value(subject, prop, blocks.written(line, str(o)), datatype,
-                                      value, line))
+                scene.values.append(Value(subject, prop, blocks.written(line, str(o)), datatype,
+                                          value, line))
     return scene
 
 
@@ -237,6 +237,7 @@ class _Blocks:
         self.prefixes = prefixes
         self.lines = text.splitlines()
         self.blocks: dict[str, tuple[int, int]] = {}
+        self._expanded: dict[int, set[str | None]] = {}
         starts: list[tuple[int, str]] = []
         for number, line in enumerate(self.lines, 1):
             if not line or line[0] in " \t#@" or line.upper().startswith(("PREFIX", "BASE")):
@@ -274,9 +275,18 @@ class _Blocks:
             if wanted is None:
                 continue
             for number in range(first, last + 1):
-                if any(self.expand(t) == wanted for t in _TERM.findall(self.lines[number - 1])):
+                if wanted in self._terms(number):
                     return number
         return first
+
+    def _terms(self, number: int) -> set[str | None]:
+        """The terms line ``number`` names, expanded; kept: a subject's block is searched
+        once for each of its statements."""
+        found = self._expanded.get(number)
+        if found is None:
+            found = self._expanded[number] = {
+                self.expand(t) for t in _TERM.findall(self.lines[number - 1])}
+        return found
 
 
 

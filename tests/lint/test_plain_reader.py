@@ -138,6 +138,23 @@ def test_module_constants_are_read_as_the_codemod_reads_them() -> None:
 
 
 @pytest.mark.parametrize("body", [
+    "class A(SkillDescription):\n    def createDescription(self):\n        pass\n",
+    'class A(SkillDescription):\n    """Doc."""\n    def createDescription(self):\n'
+    '        """Doc."""\n        pass\n',
+    "class A(SkillDescription):\n    def createDescription(self):\n        pass\n"
+    '        self.addParam("x", float, ParamTypes.Required)\n        pass\n',
+])
+def test_pass_is_read_as_the_codemod_drops_it(body: str) -> None:
+    """An empty description (``pass``, met in 11 files of the public repositories) is
+    plain: the codemod drops ``pass`` (``kept_statements``), and so does this reader."""
+    source = HEADER + body
+    fast = read_plain(source.encode(), "a.py")
+    assert isinstance(fast, FileResult)
+    slow = migrate(source, Settings(index=INDEX), "a.py")
+    assert _reported("a.py", source.encode(), fast) == _reported("a.py", source.encode(), slow)
+
+
+@pytest.mark.parametrize("body", [
     'KEY = "Object"\nKEY = "Other"\nclass A(SkillDescription):\n'
     '    def createDescription(self):\n        self.addParam(KEY, float, ParamTypes.Required)\n',
     'KEY = "Object"; SPEED = 1\nclass A(SkillDescription):\n    def createDescription(self):\n'
@@ -168,7 +185,6 @@ def test_module_constants_are_read_as_the_codemod_reads_them() -> None:
     'from skiros2_common.core.conditions import ConditionFunction\n'
     'class A(SkillDescription):\n    def createDescription(self):\n'
     '        self.addPreCondition(ConditionFunction("L", lambda: True))\n',
-    'class A(SkillDescription):\n    def createDescription(self):\n        pass\n',
     'class A(SkillDescription):\n    def createDescription(self):\n'
     '        self.addParam("x", float, ParamTypes.Required\n',
 ])

@@ -26,7 +26,7 @@ from bench_generator import generator
 
 from ezmigrate.codemod.migrate import migrate
 from ezmigrate.files.discover import Candidate, discover
-from ezmigrate.files.prefilter import MARKERS, may_hold_descriptions
+from ezmigrate.files.prefilter import MARKERS, by_text, may_hold_descriptions
 from ezmigrate.project import runner
 from ezmigrate.project.runner import Migrated, migrate_all
 
@@ -150,6 +150,23 @@ def test_doubtful_files_go_to_the_core(name):
     assert may_hold_descriptions(source if isinstance(source, bytes) else source.encode())
 
 
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_the_parse_the_text_cannot_spare_is_taken_in_the_workers(tmp_path, jobs):
+    """A file whose text mentions a marker in code (a string, a print) needs a parse to be
+    ruled out (``by_text`` is None): the migration's workers take it, and give the empty
+    result the prefilter gives; a file the text rules out never reaches them."""
+    files = {f"not_{i}.py": source for i, source in enumerate(NOT_HOLDING.values())}
+    files["skill.py"] = HOLDING["plain"]
+    for name, source in files.items():
+        (tmp_path / name).write_text(source)
+    asked = [name for name, source in files.items() if by_text(source.encode()) is None]
+    assert len(asked) >= 2  # the strings and the attribute-like text
+    items = {m.candidate.relative: m for m in migrate_all(_candidates(tmp_path), None, jobs)}
+    assert [n for n, m in items.items() if m.result.skills] == ["skill.py"]
+    assert all(items[n].result == runner.FileResult(n) for n in files if n != "skill.py")
+    assert {n for n, m in items.items() if m._original is not None} == {*asked, "skill.py"}
+
+
 def test_a_latin1_file_is_judged_by_its_code():
     cookie = "# -*- coding: latin-1 -*-\n"
     comment_only = (cookie + "# Grüße: no SkillDescription here\nx = 'ü'\n").encode("latin-1")
@@ -202,10 +219,10 @@ def test_a_single_candidate_is_migrated_without_a_pool(tmp_path, monkeypatch):
     assert [m.result.changed for m in items] == [False, True]
 
 
-def _dies_on_boom(relative: str, data: bytes):
+def _dies_on_boom(relative: str, data: bytes, ambiguous: bool = False):
     if relative == "boom.py":
         os._exit(3)
-    return ORIGINAL_MIGRATE_ONE(relative, data)
+    return ORIGINAL_MIGRATE_ONE(relative, data, ambiguous)
 
 
 ORIGINAL_MIGRATE_ONE = runner._migrate_one

@@ -18,6 +18,7 @@ from safety_support import (
     cli,
     expected_migration,
     leftovers,
+    libcst_parses,
     python_parses,
 )
 
@@ -56,6 +57,9 @@ def _cases() -> dict[str, bytes]:
         + descriptions.replace(b"stack", b"stack \xff\xfe", 1),
         "unknown_encoding.py": b"# -*- coding: klingon -*-\n" + descriptions,
         "bom_with_latin1_cookie.py": BOM + b"# -*- coding: latin-1 -*-\n" + descriptions,
+        # Python finds the cookie behind a byte that is no UTF-8; libcst refuses the file
+        "cookie_line_not_utf8.py": b"#\x80-*- coding: latin-1 -*-\n"
+        + (LEGACY / "latin1_cookie.py").read_bytes().split(b"\n", 1)[1],
     }
 
 
@@ -194,3 +198,13 @@ def test_a_last_line_without_newline_stays_without(run):
     assert not new.endswith(b"\n")
     assert new.rsplit(b"\n", 1)[1] == old.rsplit(b"\n", 1)[1]
     assert b"   \n" in new, "trailing whitespace survives too"
+
+
+def test_a_coding_line_only_python_reads_stays_as_it_was(run):
+    """Met by the fuzz test: libcst decodes the first lines as UTF-8 to find the cookie
+    and refuses the file, Python finds it all the same. The migration reads the decoded
+    text; the written file keeps that first line byte for byte, and Python reads it."""
+    old, new = _new(run, "cookie_line_not_utf8.py")
+    assert not libcst_parses(old) and python_parses(old)
+    assert new != old and new.split(b"\n", 1)[0] == old.split(b"\n", 1)[0]
+    assert python_parses(new)

@@ -1,0 +1,126 @@
+"""The second core during ``check``'s reading: scenes and file readings in forked workers.
+
+Before this, the main process parsed every skill file and every scene one after the
+other while the other core idled (its workers run only for the files the codemod reads
+and for tracing). Parsing a file or a scene needs nothing but its path and bytes and gives
+a picklable reading (``file_facts.FileFacts``, ``world.scene.Scene``), so both go to a
+pool forked at the start of the run, before any thread exists: the scenes are submitted
+first and parse while the main process reads the repository; the files' readings are
+split into chunks once the misses of the cache are known. Results are taken in the order
+they were asked for, so a run reports the same bytes as one without the pool
+(``--jobs 1``, or too little to share).
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+from collections.abc import Sequence
+from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from .file_facts import FileFacts, file_facts
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.world.scene import Scene
+
+    from ..files.discover import Candidate
+
+SHARED_FROM = 24
+"""Fewer files than this are read in the main process: a fork and the pickles back cost
+more than they save."""
+
+
+def _parse_scene(path: str) -> tuple[str, Scene] | None:
+    """``(text, scene)`` of a scene file, or None when it cannot be read or parsed (the
+    main process then reads it and reports why)."""
+    from ezskiros_runtime.world.scene import SceneError, read_scene
+
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+        return text, read_scene(path, text)
+    except (OSError, UnicodeError, SceneError):
+        return None
+
+
+def _read_files(items: list[tuple[Candidate, bytes]], compounds: bool) -> list[FileFacts]:
+    return [file_facts(candidate, data, compounds) for candidate, data in items]
+
+
+class ReadingPool:
+    """Forked readers for one run (``workers`` of them; fewer than two: none)."""
+
+    def __init__(self, workers: int) -> None:
+        self.workers = workers
+        self._pool: ProcessPoolExecutor | None = None
+        self._scenes: list[tuple[Path, Future[tuple[str, Scene] | None]]] = []
+        self._waiting: list[Path] = []
+
+    def _executor(self) -> ProcessPoolExecutor | None:
+        if self.workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
+            return None
+        if self._pool is None:
+            self._pool = ProcessPoolExecutor(max_workers=self.workers,
+                                             mp_context=multiprocessing.get_context("fork"))
+        return self._pool
+
+    def parse_scenes(self, paths: Sequence[Path]) -> None:
+        """Parse ``paths`` in the workers (``seed_scenes`` hands the parses to
+        ``read_scene``): they start after the files' readings, which the run needs first."""
+        self._waiting += paths
+
+    def _start_scenes(self) -> None:
+        pool = self._executor() if self._waiting else None
+        if pool is not None:
+            self._scenes += [(path, pool.submit(_parse_scene, str(path)))
+                             for path in self._waiting]
+        self._waiting = []
+
+    def seed_scenes(self) -> list[tuple[Path, str, Scene]]:
+        """Hand ``read_scene`` every scene parsed in the workers; returns them."""
+        from ezskiros_runtime.world.scene import seed_scene
+
+        self._start_scenes()
+        done = []
+        for path, future in self._scenes:
+            try:
+                parsed = future.result()
+            except (BrokenProcessPool, OSError):  # the main process parses it
+                continue
+            if parsed is not None:
+                text, scene = parsed
+                seed_scene(path, text, scene)
+                done.append((path, text, scene))
+        self._scenes = []
+        return done
+
+    def read_files(self, items: list[tuple[Candidate, bytes]], compounds: bool
+                   ) -> list[FileFacts]:
+        """``file_facts`` of each item, in order: in the workers when there are enough."""
+        pool = self._executor() if len(items) >= SHARED_FROM else None
+        if pool is None:
+            self._start_scenes()
+            return _read_files(items, compounds)
+        size = max(8, len(items) // (self.workers * 4))
+        starts = list(range(0, len(items), size))
+        here = starts[len(starts) - len(starts) // (self.workers + 1):]  # the main's share
+        futures = {start: pool.submit(_read_files, items[start:start + size], compounds)
+                   for start in starts if start not in here}
+        self._start_scenes()
+        mine = {start: _read_files(items[start:start + size], compounds) for start in here}
+        found: list[FileFacts] = []
+        for start in starts:
+            if start in mine:
+                found += mine[start]
+                continue
+            try:
+                found += futures[start].result()
+            except (BrokenProcessPool, OSError):  # a worker died: read here what it had
+                found += _read_files(items[start:start + size], compounds)
+        return found
+
+    def close(self) -> None:
+        if self._pool is not None:
+            self._pool.shutdown(wait=True, cancel_futures=True)
+            self._pool = None

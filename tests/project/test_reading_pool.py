@@ -1,0 +1,75 @@
+"""``check`` reads files and parses scenes in forked workers (``reading_pool``, issue 31):
+the findings are those of one process, in the same order. That the work really left the
+main process is observed, not timed: the main process's scene parser notes each call, and
+a call made in a worker is not seen there."""
+
+from __future__ import annotations
+
+import subprocess
+from pathlib import Path
+
+import pytest
+from bench_generator import generator
+
+from ezmigrate.project import reading_pool
+from ezmigrate.project.check import run_check
+from ezmigrate.verify.pool import PoolConfig
+from ezskiros_runtime.ontology.index import bundled_ontology_path
+from ezskiros_runtime.ontology.load import load_index
+from ezskiros_runtime.world import scene as scene_module
+
+INDEX = load_index([bundled_ontology_path()])
+SCENE = """\
+@prefix owl: <http://www.w3.org/2002/07/owl#> .
+@prefix skiros: <http://rvmi.aau.dk/ontologies/skiros.owl#> .
+skiros:Scene-0 a skiros:Scene, owl:NamedIndividual ;
+    skiros:contain skiros:Location-1 .
+skiros:Location-1 a skiros:Location, owl:NamedIndividual ;
+    skiros:contain skiros:Product-2 .
+skiros:Product-2 a skiros:Product, owl:NamedIndividual .
+"""
+
+
+@pytest.fixture
+def tree(tmp_path: Path) -> Path:
+    root = tmp_path / "repo"
+    generator().generate(root, 60, skill_share=1.0, seed=3, messy_share=0.3)
+    (root / "scenes").mkdir()
+    for number in range(3):
+        (root / "scenes" / f"scene{number}.turtle").write_text(SCENE, encoding="utf-8")
+    subprocess.run(["git", "init", "-q", str(root)], check=True)
+    return root
+
+
+def _findings(root: Path, workers: int) -> list[str]:
+    scene_module._KNOWN.clear()  # as a new process: no scene parsed yet
+    outcome = run_check([root], INDEX, PoolConfig(workers=workers))
+    return [str(d) for d in outcome.diagnostics]
+
+
+def test_the_workers_find_what_one_process_finds(tree: Path,
+                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    in_main: list[str] = []
+    real = scene_module._parsed
+
+    def parsed(where: str, text: str) -> scene_module.Scene:
+        in_main.append(Path(where).name)
+        return real(where, text)
+
+    monkeypatch.setattr(scene_module, "_parsed", parsed)
+    alone = _findings(tree, 1)
+    assert sorted(in_main) == ["scene0.turtle", "scene1.turtle", "scene2.turtle"]
+    in_main.clear()
+    shared = _findings(tree, 2)
+    assert shared == alone
+    assert in_main == []  # every scene was parsed in a worker
+    assert len(alone) > 10
+
+
+def test_too_few_files_are_read_in_the_main_process(tmp_path: Path) -> None:
+    pool = reading_pool.ReadingPool(2)
+    try:
+        assert pool.read_files([], compounds=True) == []
+        assert pool._pool is None  # nothing to share: nothing forked
+    finally:
+        pool.close()
