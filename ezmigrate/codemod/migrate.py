@@ -28,7 +28,7 @@ from .core.classes import DescriptionClass, description_classes, inert_classes
 from .core.context import ExtractContext, StatementLines, module_constants, positions_of
 from .core.cst_facts import facts_of
 from .core.declared import static_description
-from .core.emit import DEFAULT_TARGET, DSL_NAMES, EmitContext, quote_style
+from .core.emit import DSL_NAMES, EmitContext, quote_style
 from .core.function import build_description, emitted_params
 from .core.guard import encoding_of, lost_line, refuse
 from .core.holes import Holes, stand_in
@@ -60,38 +60,12 @@ from .core.replay import replay
 from .core.syntax_facts import ClassFacts, FunctionFacts, SyntaxFacts
 from .core.tree_walk import walk
 from .rules import CONSTRUCTS
+from .settings import Settings
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
 DEFAULT_PREFIXES = ("skiros", "sumo", "cora", "corax", "rparts")
-
-
-@dataclass(frozen=True)
-class Settings:
-    """What a migration needs besides the source: the ontology, and the package around it.
-
-    ``index`` decides between short forms (``skiros.Product``) and verbatim forms
-    (``ELEMENT("scalable:Ur5")``). ``external`` maps names of description classes defined in
-    other files of the same package to their operations (for bases imported by name).
-    """
-
-    index: OntologyIndex | None = None
-    external: Mapping[str, list[Operation]] = field(default_factory=dict)
-    held: Mapping[str, str] = field(default_factory=dict)
-    """Classes to leave exactly as they are, with the reason (verification refused them)."""
-    exported: frozenset[str] = frozenset()
-    """Names other modules of the package import from this one (``*``: a star import): their
-    legacy imports stay, or migrating this file would break those modules."""
-    migrated_bases: frozenset[str] = frozenset()
-    """Imported bases that a sibling file defines as EzSkiROS descriptions (an earlier run
-    migrated them): a class here deriving from one with a ``createDescription`` is legacy."""
-    target: tuple[int, int] = DEFAULT_TARGET
-    """The oldest Python the migrated code must run on (``target-version``; a ROS 1
-    package means ROS Noetic's 3.8): the emitter writes only what it runs."""
-    unresolved_bases: Mapping[str, str] = field(default_factory=dict)
-    """Imported bases whose file is not part of the run -> why a class deriving from one with
-    a ``createDescription`` is kept (its base's declarations cannot be read)."""
 
 
 @dataclass

@@ -17,7 +17,9 @@ from __future__ import annotations
 
 import errno
 import fnmatch
+import functools
 import os
+import re
 import subprocess
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
@@ -67,12 +69,20 @@ def excluded_under(base: Path, patterns: Sequence[str]) -> Callable[[Path], bool
 def _excluded(relative: str, patterns: Sequence[str]) -> bool:
     """A pattern matches the path, any one folder or file name in it, or any leading
     folders of it (``src/legacy`` excludes ``src/legacy/a.py``, as in ruff)."""
+    if not patterns:
+        return False
     parts = relative.split("/")
     prefixes = ["/".join(parts[:i]) for i in range(1, len(parts) + 1)]
-    for pattern in patterns:
-        if any(fnmatch.fnmatch(p, pattern) for p in (*prefixes, *parts)):
-            return True
-    return False
+    matches = _any_of(tuple(patterns))
+    return any(matches(os.path.normcase(p)) for p in (*prefixes, *parts))
+
+
+@functools.lru_cache(maxsize=32)
+def _any_of(patterns: tuple[str, ...]) -> Callable[[str], object]:
+    """``fnmatch.fnmatch`` against any of ``patterns``, as one compiled expression: a run
+    asks it of every folder and name of every file."""
+    joined = "|".join(f"(?:{fnmatch.translate(os.path.normcase(p))})" for p in patterns)
+    return re.compile(joined).match
 
 
 def _spellings(path: Path, project: Path | None, named: bool) -> set[str]:

@@ -16,14 +16,11 @@ from dataclasses import replace
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING
 
-from ..codemod.core.classes import RUNTIME_ROOT, ezskiros_classes
-from ..codemod.core.ir import Operation
-from ..codemod.core.legacy_names import ast_dotted_name
-from ..codemod.migrate import Settings, exported_operations, migrate
+from ..codemod.settings import RUNTIME_ROOT, Settings
 from .runner import Migrated
 
 if TYPE_CHECKING:
-    pass
+    from ..codemod.core.ir import Operation
 
 MAX_ROUNDS = 4
 RUNTIME_MARKER = RUNTIME_ROOT.encode()
@@ -99,6 +96,8 @@ def _imports_of(importer: str, data: bytes) -> list[tuple[str, set[str]]]:
     """
     import ast
 
+    from ..codemod.core.legacy_names import ast_dotted_name
+
     try:
         tree = ast.parse(data)
     except (SyntaxError, ValueError, MemoryError, RecursionError):
@@ -159,6 +158,8 @@ def _ezskiros_classes(item: Migrated) -> set[str]:
         return set()
     import libcst as cst
 
+    from ..codemod.core.classes import ezskiros_classes
+
     try:
         return ezskiros_classes(cst.parse_module(item.original))
     except (cst.ParserSyntaxError, UnicodeDecodeError, LookupError, SyntaxError,
@@ -189,6 +190,8 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
     ``settled``: files among ``migrated`` whose readings are final (bases, not migrated
     again).
     """
+    from ..codemod.migrate import exported_operations, migrate  # libcst: only now
+
     fixed = {id(item) for item in settled}
     redone = 0
     done: set[tuple[int, frozenset[str], frozenset[str], frozenset[tuple[str, str]]]] = set()

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
-from ..codemod.core.classes import RUNTIME_ROOT
+from ..codemod.settings import RUNTIME_ROOT
 from ..report.results import FileResult, SkillResult
 
 if TYPE_CHECKING:

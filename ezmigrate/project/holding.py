@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from ..codemod.migrate import Settings, migrate
+from ..codemod.settings import Settings
 from ..report.results import FileResult, SkillResult
 from ..verify.verdicts import failed
 from .runner import Migrated
@@ -19,6 +19,8 @@ from .runner import Migrated
 def hold_back(item: Migrated, culprits: dict[str, SkillResult]) -> bool:
     """Migrate ``item`` again leaving ``culprits`` as they are; True when something still
     changes (and so must be verified again)."""
+    from ..codemod.migrate import migrate  # libcst: only when something is held
+
     settings = item.settings or Settings()
     held = {**settings.held, **{name: skill.reason or "held" for name, skill in culprits.items()}}
     item.settings = replace(settings, held=held)

@@ -14,6 +14,7 @@ re-reads the bytes from disk when someone asks for them (a copy into ``--output-
 
 from __future__ import annotations
 
+import importlib
 import multiprocessing
 import os
 import traceback
@@ -33,7 +34,7 @@ from .progress import Progress
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
-    from ..codemod.migrate import Settings
+    from ..codemod.settings import Settings
 
 _SETTINGS: Settings | None = None
 _WRITTEN_LINES = False
@@ -154,8 +155,8 @@ class _Workers:
 
     @property
     def settings(self) -> Settings:
-        if self._settings is None:  # imports the core, and with it libcst
-            from ..codemod.migrate import Settings
+        if self._settings is None:  # no libcst: the workers import it, in parallel
+            from ..codemod.settings import Settings
 
             self._settings = (Settings(index=self.index) if self.target is None
                               else Settings(index=self.index, target=self.target))
@@ -179,6 +180,9 @@ class _Workers:
         self._submit(item, data, ambiguous)
 
     def _start(self) -> ProcessPoolExecutor:
+        # the core (and libcst) imported once, here, before the fork: the workers inherit
+        # it instead of each importing it while the tree is still being read
+        importlib.import_module("ezmigrate.codemod.migrate")
         context = multiprocessing.get_context(
             "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
         return ProcessPoolExecutor(max_workers=self.jobs, mp_context=context,

@@ -21,7 +21,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
-from ..codemod.migrate import Settings, migrate
+from ..codemod.settings import Settings
 from ..files.discover import Candidate
 from ..verify.verdicts import Comparison, apply_verdicts
 from . import holdpoint
@@ -89,6 +89,8 @@ def _settle_cross_file(migrated: list[Migrated], base: Settings,
     for item in migrated:
         names = exported.get(item.candidate.relative)
         if names and item.result.changed:
+            from ..codemod.migrate import migrate  # libcst: in the main process only now
+
             item.settings = replace(base, exported=names)
             item.result = migrate(item.original, item.settings, item.candidate.relative)
     if any(m.result.foreign_bases for m in migrated):

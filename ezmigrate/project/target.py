@@ -17,7 +17,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..codemod.core.emit import DEFAULT_TARGET
+from ..codemod.settings import DEFAULT_TARGET
 from ..files.package_xml import package_files, ros_flavour
 from ..verify.interpreters import find_python, rdflib_version, version_of
 

@@ -279,6 +279,21 @@ def test_no_libcst_import_when_nothing_needs_parsing(tmp_path):
     assert run.stdout.strip() == "False"
 
 
+def test_the_command_line_starts_without_libcst():
+    """``--version``, ``--help`` and the start of every command import no libcst (issue 31:
+    a tenth of a second of every run); the codemod's settings live apart (``settings``)."""
+    code = textwrap.dedent("""
+        import sys
+        import ezmigrate.cli.commands, ezmigrate.project.session, ezmigrate.project.settle
+        from ezmigrate.codemod.settings import Settings
+        Settings()
+        print("libcst" in sys.modules)
+    """)
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    assert run.stdout.strip() == "False"
+
+
 # -- discovery -----------------------------------------------------------------------------
 
 def _git(*args: str | Path) -> None:

@@ -20,10 +20,9 @@ from dataclasses import dataclass
 
 import libcst as cst
 
+from ..settings import RUNTIME_ROOT
 from .legacy_names import LegacyNames, ast_dotted_name, dotted_name
 from .reader import class_bindings
-
-RUNTIME_ROOT = "ezskiros_runtime"
 
 
 @dataclass

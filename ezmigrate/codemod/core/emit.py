@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import libcst as cst
 
+from ..settings import DEFAULT_TARGET
 from .ir import AddCondition, CondSpec, ParamOp
 from .tree_walk import walk
 
@@ -39,10 +40,6 @@ SYMBOL_METHODS = frozenset(
 DSL_NAMES = frozenset({
     "SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "LIST",
     "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output"})
-
-DEFAULT_TARGET = (3, 10)
-"""The Python migrated code must run on when nothing says otherwise: the oldest that ROS 2
-(Humble) runs. A ROS 1 package means Noetic's 3.8 (``ezmigrate.project.target``)."""
 
 LINE_LIMIT = 99
 """Longest line the emitter writes when it has a choice (ruff's and black's spirit)."""
