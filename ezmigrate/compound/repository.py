@@ -30,7 +30,6 @@ from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.model import SkillModel
 
 from ..files.discover import Candidate, discover, repository_root
-from ..lint.plain_reader import Declined, read_plain
 from .static import (
     NeedsTrace,
     class_bases,
@@ -127,6 +126,8 @@ def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan,
     scan.bases += class_bases(tree)
     scan.modified += modified_params(tree)
     implemented = implementation_classes(tree)
+    from ..lint.plain_reader import Declined, read_plain  # libcst: only a scan that reads
+
     verdict = read_plain(data, candidate.relative, tree)
     read = {} if isinstance(verdict, Declined) else {s.name: s for s in verdict.skills}
     for node in tree.body:

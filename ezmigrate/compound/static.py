@@ -30,7 +30,7 @@ from ezskiros_runtime.compound.trace import (
     parameter_object_message,
 )
 
-from ..codemod.core.legacy_names import ast_dotted_name
+from ..codemod.core.ast_names import ast_dotted_name
 
 
 class _Computed(Exception):

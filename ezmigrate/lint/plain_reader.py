@@ -23,6 +23,7 @@ import ast
 import re
 from dataclasses import dataclass
 
+from ..codemod.core.ast_names import ast_dotted_name
 from ..codemod.core.declared import static_description
 from ..codemod.core.function import emitted_params
 from ..codemod.core.ir import (
@@ -37,7 +38,7 @@ from ..codemod.core.ir import (
     TypeValue,
     Unsupported,
 )
-from ..codemod.core.legacy_names import LegacyNames, ast_dotted_name, is_legacy_module
+from ..codemod.core.legacy_names import LegacyNames, is_legacy_module
 from ..codemod.core.syntax_facts import note_binding, note_import
 from ..codemod.migrate import checked_model
 from ..codemod.rules.add_param import (

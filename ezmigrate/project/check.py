@@ -25,7 +25,6 @@ from ..files.discover import Candidate, discover
 from ..files.prefilter import may_hold_descriptions
 from ..lint.diagnostic import Diagnostic, Positions, diagnostic
 from ..lint.legacy import legacy_hits
-from ..lint.plain_reader import Declined
 from ..lint.robot_vocabulary import as_the_robot_resolves, scene_classes, typing_scenes
 from ..lint.world_model import (
     SCENE_SUFFIX,
@@ -40,14 +39,12 @@ from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
 from . import holdpoint
 from .cross_file import RUNTIME_MARKER, dotted
 from .facts_cache import FactsCache, keep_scenes, seed_scenes
-from .file_facts import FileFacts, file_facts, parse
 from .implementation_code import IMPLEMENTATION, ModuleFacts, module_facts
 from .import_scan import import_words
 from .launch import Launch, with_init_scene
 from .load_cache import LoadCache, cached_loads
 from .outcome_cache import OutcomeCache, read_all, run_key
 from .progress import Progress
-from .reading_pool import ReadingPool
 from .runner import Migrated
 from .settle import settle
 from .uninferable import UNINFERABLE, UNKNOWN
@@ -58,6 +55,8 @@ if TYPE_CHECKING:
 
     from ..compound.analysis import CompoundRun, Trees
     from ..verify.protocol import LoadOutcome
+    from .file_facts import FileFacts
+    from .reading_pool import ReadingPool
 
 UNRESOLVED_LOAD = {"timeout": "info", "memory": "info", "crashed": "info"}
 """Loads that failed on the sandbox's limits, not on the module: nothing is known of it."""
@@ -126,6 +125,9 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     parses the files the cache lacks in its workers (``reading_pool``). Files come out in
     the order given, the codemod's last.
     """
+    from ..lint.plain_reader import Declined  # libcst: only a run that reads files
+    from .file_facts import FileFacts, file_facts
+
     compounds = on_facts is not None
     read: list[tuple[Candidate, bytes | None]] = []
     facts: dict[Path, FileFacts] = {}
@@ -286,6 +288,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     # the readings of each file by content: for runs over folders, as the whole run's
     # cache (a run over named files would keep only their entries and drop the others)
     facts = FactsCache.open(kept[0][0]) if kept is not None else None
+    from .reading_pool import ReadingPool  # not before: a kept run needs none of it
+
     reader = ReadingPool(pool.workers)  # forked now, before any thread of the run exists
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
@@ -463,6 +467,8 @@ class _Compound:
 
 def _facts_of(data: bytes) -> ModuleFacts | None:
     """The implementation facts of a file the static pass did not read for them."""
+    from .file_facts import parse
+
     tree = parse(data)
     return None if tree is None else module_facts(tree, data)
 

@@ -96,7 +96,7 @@ def _imports_of(importer: str, data: bytes) -> list[tuple[str, set[str]]]:
     """
     import ast
 
-    from ..codemod.core.legacy_names import ast_dotted_name
+    from ..codemod.core.ast_names import ast_dotted_name
 
     try:
         tree = ast.parse(data)

@@ -21,7 +21,8 @@ from dataclasses import dataclass
 import libcst as cst
 
 from ..settings import RUNTIME_ROOT
-from .legacy_names import LegacyNames, ast_dotted_name, dotted_name
+from .ast_names import ast_dotted_name
+from .legacy_names import LegacyNames, dotted_name
 from .reader import class_bindings
 
 

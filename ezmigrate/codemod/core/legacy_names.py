@@ -36,17 +36,6 @@ def dotted_name(node: cst.BaseExpression) -> str | None:
     return None
 
 
-def ast_dotted_name(node: object) -> str | None:
-    """``dotted_name`` for ``ast`` nodes (the fast readers that never build a libcst tree)."""
-    import ast
-
-    if isinstance(node, ast.Name):
-        return node.id
-    if isinstance(node, ast.Attribute):
-        head = ast_dotted_name(node.value)
-        return None if head is None else f"{head}.{node.attr}"
-    return None
-
 
 def _import_name(node: cst.BaseExpression) -> str:
     name = dotted_name(node)
