@@ -84,6 +84,9 @@ class Trees:
     trace: bool = True
     """False (``check --no-trace``): no user code is imported, so a tree the syntax cannot
     read stays unread, and says why."""
+    prepared: dict[str, TreeFacts] = field(default_factory=dict)
+    """Facts of files with no description, read with the run's files (``file_facts``):
+    ``add`` takes them in its own order instead of parsing the file."""
 
     def wants(self, candidate: Candidate, data: bytes) -> bool:
         """Whether ``add`` would read this file: not yet seen, and holding a marker."""
@@ -92,6 +95,10 @@ class Trees:
     def add(self, candidate: Candidate, data: bytes, tree: ast.Module | None = None) -> None:
         """One file (``tree``: its syntax tree when the caller has parsed it already)."""
         if not self.wants(candidate, data):
+            return
+        prepared = self.prepared.pop(str(candidate.path), None)
+        if prepared is not None:  # read already, where the run read its files
+            self.take(candidate, prepared)
             return
         if tree is None:
             try:

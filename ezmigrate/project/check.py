@@ -22,7 +22,7 @@ from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.model import SkillModel
 
 from ..files.discover import Candidate, discover
-from ..files.prefilter import may_hold_descriptions
+from ..files.prefilter import by_text
 from ..lint.diagnostic import Diagnostic, Positions, diagnostic
 from ..lint.legacy import legacy_hits
 from ..lint.robot_vocabulary import as_the_robot_resolves, scene_classes, typing_scenes
@@ -125,32 +125,35 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     parses the files the cache lacks in its workers (``reading_pool``). Files come out in
     the order given, the codemod's last.
     """
+    from ..compound.analysis import READ_WHEN
     from ..lint.plain_reader import Declined  # libcst: only a run that reads files
     from .file_facts import FileFacts, file_facts
 
     compounds = on_facts is not None
     read: list[tuple[Candidate, bytes | None]] = []
     facts: dict[Path, FileFacts] = {}
-    missing: list[tuple[Candidate, bytes, str | None]] = []
+    missing: list[tuple[Candidate, bytes, bool | None, str | None]] = []
     for candidate in candidates:
         try:
             data: bytes | None = candidate.path.read_bytes()
         except OSError:
             data = None  # the codemod reports why it cannot be read
         read.append((candidate, data))
-        if data is None or not may_hold_descriptions(data):
-            continue
+        verdict = None if data is None else by_text(data)
+        if data is None or (verdict is False and not (
+                compounds and any(marker in data for marker in READ_WHEN))):
+            continue  # never parsed: nothing to read in it
         key = None if cache is None else cache.key(
             "file", str(candidate.path), candidate.relative, str(compounds), data)
         found = None if cache is None or key is None else cache.get(key)
         if isinstance(found, FileFacts):
             facts[candidate.path] = found
         else:
-            missing.append((candidate, data, key))
-    items = [(c, d) for c, d, _ in missing]
+            missing.append((candidate, data, verdict, key))
+    items: list[tuple[Candidate, bytes, bool | None]] = [(c, d, v) for c, d, v, _ in missing]
     made = reader.read_files(items, compounds) if reader is not None \
-        else [file_facts(c, d, compounds) for c, d in items]
-    for (candidate, _, key), found in zip(missing, made, strict=True):
+        else [file_facts(c, d, compounds, v) for c, d, v in items]
+    for (candidate, _, _, key), found in zip(missing, made, strict=True):
         facts[candidate.path] = found
         if cache is not None and key is not None:
             cache.put(key, found)
@@ -161,7 +164,9 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
         reading = facts.get(candidate.path)
         if data is None:
             declined.append((candidate, None))
-        elif reading is None:
+        elif reading is None or not reading.described:
+            if reading is not None and on_facts is not None:
+                on_facts(candidate, data, reading)
             yield candidate, data, FileResult(path=candidate.relative)
         else:
             if on_facts is not None:
@@ -364,9 +369,13 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     facts: dict[Path, ModuleFacts] = {}
 
     def at_hand(candidate: Candidate, data: bytes, found: FileFacts) -> None:
-        """What the compound pass and the implementation checks read of a file."""
+        """What the compound pass and the implementation checks read of a file (of a
+        file with no description, kept for the compound pass to take in its own turn)."""
         if trees is not None and found.trees is not None:
-            trees.take(candidate, found.trees)
+            if found.described:
+                trees.take(candidate, found.trees)
+            else:
+                trees.prepared[str(candidate.path)] = found.trees
         if found.implementation is not None:
             facts[candidate.path] = found.implementation
 
@@ -570,7 +579,7 @@ def compound_pass(read: list[tuple[Candidate, bytes]],
         statics = [(c, r) for c, _, r in read_statically([c for c, _ in library], pool.workers,
                                                          index)]
         add_descriptions(skills, statics, [], "skill library")
-    around = scan_repository(trees.named, trees.exclude, trees.seen, read)
+    around = scan_repository(trees.named, trees.exclude, trees.seen | set(trees.prepared), read)
     for info in around.descriptions:  # the files not named; the named ones' readings win
         skills.add_description(info)
     add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],

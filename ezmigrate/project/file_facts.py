@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from ..compound.analysis import READ_WHEN, TreeFacts, tree_facts
 from ..files.discover import Candidate
+from ..files.prefilter import marker_is_identifier
 from ..lint.plain_reader import Declined, read_plain
 from ..report.results import FileResult
 from .cross_file import RUNTIME_MARKER
@@ -31,6 +32,10 @@ class FileFacts:
     static: FileResult | Declined
     trees: TreeFacts | None = None
     implementation: ModuleFacts | None = None
+    described: bool = True
+    """False: the prefilter ruled the file out (``by_text``, ``marker_is_identifier``): no
+    description is read in it; ``trees`` then holds what the compound pass will take of
+    it, if it parses (``Trees.prepared``)."""
 
 
 def parse(data: bytes) -> ast.Module | None:
@@ -41,9 +46,19 @@ def parse(data: bytes) -> ast.Module | None:
         return None
 
 
-def file_facts(candidate: Candidate, data: bytes, compounds: bool) -> FileFacts:
-    """The facts of a file that may hold a description; ``compounds``: also what the
-    compound pass and the implementation checks read."""
+def file_facts(candidate: Candidate, data: bytes, compounds: bool,
+               verdict: bool | None = True) -> FileFacts:
+    """The facts of a file; ``compounds``: also what the compound pass and the
+    implementation checks read. ``verdict``: the prefilter's text on it (``by_text``); when
+    it could not tell (None) the prefilter's parse is taken here, in the reading pool's
+    workers and kept by the cache, rather than file by file in the main process. A file
+    ruled out (``described`` False) is read only for the compound pass (a tree or an
+    implementation outside a description file), and only when it parses."""
+    described = verdict is True or (verdict is None and marker_is_identifier(data))
+    if not described:
+        tree = parse(data) if compounds and any(m in data for m in READ_WHEN) else None
+        return FileFacts(FileResult(path=candidate.relative), described=False,
+                         trees=None if tree is None else tree_facts(tree, str(candidate.path)))
     tree = parse(data)
     if tree is None:
         return FileFacts(Declined())

@@ -44,8 +44,10 @@ def _parse_scene(path: str) -> tuple[str, Scene] | None:
         return None
 
 
-def _read_files(items: list[tuple[Candidate, bytes]], compounds: bool) -> list[FileFacts]:
-    return [file_facts(candidate, data, compounds) for candidate, data in items]
+def _read_files(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
+                ) -> list[FileFacts]:
+    return [file_facts(candidate, data, compounds, verdict)
+            for candidate, data, verdict in items]
 
 
 class ReadingPool:
@@ -95,9 +97,10 @@ class ReadingPool:
         self._scenes = []
         return done
 
-    def read_files(self, items: list[tuple[Candidate, bytes]], compounds: bool
+    def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
                    ) -> list[FileFacts]:
-        """``file_facts`` of each item, in order: in the workers when there are enough."""
+        """``file_facts`` of each ``(candidate, bytes, the prefilter's text verdict)``, in
+        order: in the workers when there are enough."""
         pool = self._executor() if len(items) >= SHARED_FROM else None
         if pool is None:
             self._start_scenes()
