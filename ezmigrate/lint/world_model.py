@@ -145,11 +145,14 @@ def ezskiros_double_places(path: str, source: str, models: Iterable[SkillModel],
                            index: OntologyIndex | None, entries: list[SingleValued]
                            ) -> list[WorldFinding]:
     """EZ401 for loaded EzSkiROS descriptions; the line is that of the post-condition's
-    ``+=`` in the class, found in the source."""
-    lines = _post_lines(source)
+    ``+=`` in the class, found in the source (parsed only for a finding: on a migrated
+    repository, parsing every file for its lines was a third of ``check``)."""
+    lines: dict[str, list[tuple[int, str]]] | None = None
     found = []
     for model in models:
         for d in double_places(uses_of(model), entries, index):
+            if lines is None:
+                lines = _post_lines(source)
             line = _line_of(lines.get(model.name, []), d.second) or model.line or 0
             found.append(finding("double-place", path, line, d.message(), model.name,
                                  d.fix("ezskiros")))

@@ -211,19 +211,28 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     def own_key(candidate: Candidate, data: bytes) -> str:
         return cache.key("settled", fingerprint, str(candidate.path), candidate.relative, data)
 
+    by_module: dict[bytes, list[tuple[str, bytes]]] = {}  # module name -> its files
+    packages: list[tuple[str, bytes]] = []  # every __init__.py: any import may run it
+    for c, d in everyone:
+        if c.path.name == "__init__.py":
+            packages.append((str(c.path), d))
+        else:
+            by_module.setdefault(_module_name(c).encode(), []).append((str(c.path), d))
+
     def with_bases_key(candidate: Candidate, data: bytes) -> str:
-        mine = words.get(candidate.path, frozenset())
-        return cache.key("settled-with", fingerprint, str(candidate.path), candidate.relative,
-                         data, *(part for c, d in sorted(everyone, key=lambda e: str(e[0].path))
-                                 if c.path != candidate.path and _may_define(c, mine)
-                                 for part in (str(c.path), d)))
+        here = str(candidate.path)
+        bases = {*packages, *(f for w in words.get(candidate.path, frozenset())
+                              for f in by_module.get(w, ()))}
+        return cache.key("settled-with", fingerprint, here, candidate.relative, data,
+                         *(part for path, d in sorted(bases) if path != here
+                           for part in (path, d)))
 
     found: dict[Path, FileResult] = {}
     for candidate, data in declined:
         if data is None:
             continue
-        for key in (own_key(candidate, data), with_bases_key(candidate, data)):
-            hit = cache.get(key)
+        for keyed in (own_key, with_bases_key):
+            hit = cache.get(keyed(candidate, data))
             if isinstance(hit, FileResult):
                 found[candidate.path] = hit
                 break
@@ -242,8 +251,12 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
 
 def _may_define(candidate: Candidate, words: Collection[bytes]) -> bool:
     """Whether a file may define a base another file's imports (their ``words``) name."""
-    module = dotted(candidate.relative).rpartition(".")[2]
-    return candidate.path.name == "__init__.py" or module.encode() in words
+    return candidate.path.name == "__init__.py" or _module_name(candidate).encode() in words
+
+
+def _module_name(candidate: Candidate) -> str:
+    """The last part of the module name a file is imported by."""
+    return dotted(candidate.relative).rpartition(".")[2]
 
 
 def needs_trees(codes: Iterable[str]) -> bool:
