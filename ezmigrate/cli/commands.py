@@ -271,10 +271,12 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     # earlier runs' descriptions count too: stderr and the report say one count of the tree
     results = _as_written(outcome.migrated, whole_tree(outcome.migrated))
     for item, result in zip(outcome.migrated, results, strict=True):  # unchanged: bytes stay
-        _print_result(shown_path(item.candidate.path),
-                      from_repository(item.candidate.path, item.candidate.relative),
-                      item.original if result.changed else b"", result, dry_run, check, color,
-                      debug)
+        if result.error or result.changed or any(
+                s.status in ("skipped", "failed") for s in result.skills):  # else nothing to say
+            _print_result(shown_path(item.candidate.path),
+                          from_repository(item.candidate.path, item.candidate.relative),
+                          item.original if result.changed else b"", result, dry_run, check,
+                          color, debug)
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {refused}", err=True)
     declared = _show_manifests(outcome, request, color)
