@@ -38,7 +38,7 @@ from ..report.reports import (
     relaxed,
 )
 from ..report.results import FileResult
-from ..report.written_lines import as_written
+from ..report.written_lines import as_written, written_diff
 from ..verify.interpreters import version_of
 from .config import ConfigError, load_project_config
 from .options import CommandLine, Options
@@ -357,7 +357,7 @@ def _print_result(shown: str, relative: str, original: bytes, result: FileResult
                        err=True)
     if result.changed and dry_run:
         assert isinstance(result.new_source, bytes)
-        diff = unified_diff(relative, original, result.new_source)
+        diff = unified_diff(relative, original, result.new_source, written_diff(result))
         use_colour = sys.stdout.isatty() if color is None else color
         click.echo(colour(diff) if use_colour else diff, nl=False)
     elif result.changed and check:

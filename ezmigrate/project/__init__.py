@@ -3,7 +3,8 @@
 `settle` owns a migration (migrate every file, derive what crosses files, verify, hold
 back, repeat); `runner` reads the files and runs the codemod in parallel workers, with
 `import_scan` and `cross_file` for what links files; `holding` and `static_refusal` hold
-back the skills that will not be written; `session` is ``rewrite`` (it writes what settled,
+back the skills that will not be written (`refusals` works out what the runtime's
+early checks refuse); `session` is ``rewrite`` (it writes what settled,
 under `interrupt`'s deferral) and `earlier` adds what an earlier run migrated to its report;
 `check` is ``check``, reading each file once into `file_facts` (in `reading_pool`'s
 forked workers, with the scenes), with `load_cache`,

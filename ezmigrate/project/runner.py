@@ -21,6 +21,7 @@ import traceback
 from collections.abc import Iterator, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from ..files.discover import Candidate
@@ -37,8 +38,22 @@ if TYPE_CHECKING:
     from ..codemod.settings import Settings
 
 _SETTINGS: Settings | None = None
-_WRITTEN_LINES = False
-"""Whether the worker maps each new source's lines for the report (``with_written_lines``)."""
+
+
+@dataclass(frozen=True)
+class Extras:
+    """What the workers add to each result for the main process, which would otherwise do
+    it file by file after them: the report's line map (``with_written_lines``), the diff's
+    hunks (``--dry-run``), the runtime's early-check refusals (``rewrite --no-verify``:
+    ``static_refusal``)."""
+
+    written_lines: bool = False
+    diffs: bool = False
+    refusals: bool = False
+
+
+NO_EXTRAS = Extras()
+_EXTRAS = NO_EXTRAS
 
 
 class Migrated:
@@ -89,10 +104,10 @@ class Migrated:
         return f"Migrated({self.candidate.relative!r}, changed={self.result.changed})"
 
 
-def _init_worker(settings: Settings, written_lines: bool = False) -> None:
-    global _SETTINGS, _WRITTEN_LINES
+def _init_worker(settings: Settings, extras: Extras = NO_EXTRAS) -> None:
+    global _SETTINGS, _EXTRAS
     _SETTINGS = settings
-    _WRITTEN_LINES = written_lines
+    _EXTRAS = extras
 
 
 def _migrate_one(relative: str, data: bytes, ambiguous: bool = False) -> FileResult:
@@ -104,13 +119,18 @@ def _migrate_one(relative: str, data: bytes, ambiguous: bool = False) -> FileRes
     prefilter would have given."""
     from ..codemod.migrate import migrate
     from ..report.written_lines import with_written_lines
+    from .refusals import with_refusals
 
     assert _SETTINGS is not None
     if ambiguous and not marker_is_identifier(data):
         return FileResult(relative)
     try:
         result = migrate(data, _SETTINGS, relative)
-        return with_written_lines(result, data) if _WRITTEN_LINES else result
+        if _EXTRAS.refusals:
+            result = with_refusals(result, relative, _SETTINGS.index)
+        if _EXTRAS.written_lines:
+            result = with_written_lines(result, data, _EXTRAS.diffs)
+        return result
     except Exception:  # a bug of ours must not stop the run nor lose the other files
         return FileResult(path=relative, error="internal error while migrating:\n"
                           + traceback.format_exc(limit=6))
@@ -142,10 +162,10 @@ class _Workers:
 
     def __init__(self, index: OntologyIndex | None, jobs: int,
                  progress: Progress | None = None,
-                 target: tuple[int, int] | None = None, written_lines: bool = False) -> None:
+                 target: tuple[int, int] | None = None, extras: Extras = NO_EXTRAS) -> None:
         self.index = index
         self.target = target
-        self.written_lines = written_lines
+        self.extras = extras
         self.jobs = jobs
         self.progress = progress
         self._settings: Settings | None = None
@@ -165,7 +185,7 @@ class _Workers:
     def add(self, item: Migrated, data: bytes, ambiguous: bool = False) -> None:
         item.settings = self.settings
         if self.jobs <= 1:
-            _init_worker(self.settings, self.written_lines)
+            _init_worker(self.settings, self.extras)
             item.result = _migrate_one(item.candidate.relative, data, ambiguous)
             self.finished(item)
             return
@@ -187,7 +207,7 @@ class _Workers:
             "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
         return ProcessPoolExecutor(max_workers=self.jobs, mp_context=context,
                                    initializer=_init_worker,
-                                   initargs=(self.settings, self.written_lines))
+                                   initargs=(self.settings, self.extras))
 
     def _submit(self, item: Migrated, data: bytes, ambiguous: bool) -> None:
         assert self.pool is not None
@@ -200,7 +220,7 @@ class _Workers:
 
     def finish(self) -> None:
         if self.first is not None:  # only one file needed the core: no pool for it
-            _init_worker(self.settings, self.written_lines)
+            _init_worker(self.settings, self.extras)
             item, data, ambiguous = self.first
             item.result = _migrate_one(item.candidate.relative, data, ambiguous)
             self.finished(item)
@@ -234,11 +254,11 @@ class _Workers:
 def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                 jobs: int, progress: Progress | None = None,
                 target: tuple[int, int] | None = None,
-                written_lines: bool = False) -> list[Migrated]:
+                extras: Extras = NO_EXTRAS) -> list[Migrated]:
     """Migrate every candidate; files the prefilter rules out get an empty result.
-    ``target``: the Python the migrated code must run on (None: the default);
-    ``written_lines``: each result carries its report's line map (``with_written_lines``)."""
-    workers = _Workers(index, jobs, progress, target, written_lines)
+    ``target``: the Python the migrated code must run on (None: the default); ``extras``:
+    what each result carries besides (``Extras``)."""
+    workers = _Workers(index, jobs, progress, target, extras)
     done: list[Migrated] = []
     try:
         for candidate, data, error in read_candidates(candidates):

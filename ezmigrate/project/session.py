@@ -25,7 +25,7 @@ from ..report.reports import Summary
 from ..verify.verdicts import Comparison
 from . import holdpoint, interrupt
 from .progress import Progress
-from .runner import Migrated, default_jobs
+from .runner import Extras, Migrated, default_jobs
 from .settle import Checks, settle
 
 if TYPE_CHECKING:
@@ -112,7 +112,8 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     holdpoint.reach("discovered")
     with Progress.for_stream(len(candidates)) as progress:  # gone before anything is said
         migrated = settle(candidates, index, options.jobs, options.verification, progress,
-                          options.target, refuse_unloadable=True, written_lines=True)
+                          options.target, refuse_unloadable=True,
+                          extras=Extras(written_lines=True, diffs=options.dry_run))
     outcome = RewriteOutcome(migrated, notes)
     if not options.writes:
         outcome.manifests = _manifests(outcome, options)

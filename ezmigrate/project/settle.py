@@ -28,7 +28,7 @@ from . import holdpoint
 from .cross_file import imported_from, resolve_cross_file
 from .holding import hold_back, not_written
 from .progress import Progress
-from .runner import Migrated, migrate_all
+from .runner import NO_EXTRAS, Extras, Migrated, migrate_all
 from .static_refusal import refuse_statically
 
 if TYPE_CHECKING:
@@ -53,7 +53,7 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
            checks: Checks | None = None, progress: Progress | None = None,
            target: tuple[int, int] | None = None,
            refuse_unloadable: bool = False,
-           read: Sequence[Migrated] = (), written_lines: bool = False) -> list[Migrated]:
+           read: Sequence[Migrated] = (), extras: Extras = NO_EXTRAS) -> list[Migrated]:
     """Every candidate's settled result (see the module doc); ``checks`` None: no
     verification (``--no-verify``, ``check``); ``target``: the Python the migrated code
     must run on (None: the default, ``Settings.target``). ``refuse_unloadable``: without
@@ -64,9 +64,12 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
     reader, or its cache), not migrated here and not returned: only the cross-file pass
     sees them, as files that define bases for the candidates. Their readings are final
     (``exported`` only decides the imports a rewrite keeps, which ``check`` never
-    writes). ``written_lines``: the workers also map each new source's lines for the
-    report (``report/written_lines``; ``rewrite PATH`` shows them)."""
-    migrated = migrate_all(candidates, index, jobs, progress, target, written_lines)
+    writes). ``extras``: what the workers add to each result for the report and the
+    output (``runner.Extras``; the refusals are asked for here, with
+    ``refuse_unloadable``)."""
+    if refuse_unloadable and checks is None:
+        extras = replace(extras, refusals=True)
+    migrated = migrate_all(candidates, index, jobs, progress, target, extras)
     base = Settings(index=index) if target is None else Settings(index=index, target=target)
     _settle_cross_file(migrated, base, read)
     if progress is not None:

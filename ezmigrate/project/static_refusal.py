@@ -14,31 +14,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from ezskiros_runtime.dsl.check_context import CheckContext
-from ezskiros_runtime.dsl.checking import CHECKS
-
-from ..lint.legacy import trace_of
-from ..report.results import SkillResult
-from ..verify.verdicts import rejected, rejects
+from ..verify.verdicts import rejected
 from .holding import hold_back, not_written
+from .refusals import static_rejections
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
     from .runner import Migrated
-
-
-def static_rejections(skill: SkillResult, path: str, index: OntologyIndex | None) -> list[str]:
-    """The error-level findings the runtime's early checks give for a converted skill,
-    each with its (legacy) line, once each; ``[]``: it would load."""
-    if skill.status != "converted" or skill.static is None or index is None:
-        return []  # ``rewrite`` always has an index (the bundled core at least)
-    ctx = CheckContext(trace_of(skill.name, path, skill.static), index)
-    for check in CHECKS:
-        check(ctx)
-    return list(dict.fromkeys(
-        found.message + (f" (line {found.line})" if found.line else "")
-        for found in ctx.findings if rejects(found)))
 
 
 def refuse_statically(migrated: Sequence[Migrated], index: OntologyIndex | None) -> None:
@@ -50,8 +33,10 @@ def refuse_statically(migrated: Sequence[Migrated], index: OntologyIndex | None)
         if not item.result.changed:
             continue
         culprits = {}
+        known = item.result.refusals  # made in the worker, for this very result
         for skill in item.result.skills:
-            found = static_rejections(skill, item.candidate.relative, index)
+            found = known.get(skill.name, []) if known is not None else \
+                static_rejections(skill, item.candidate.relative, index)
             if found:
                 culprits[skill.name] = rejected(skill, found)
         if culprits:
@@ -65,4 +50,4 @@ def refuse_statically(migrated: Sequence[Migrated], index: OntologyIndex | None)
                                       "back")
 
 
-__all__ = ["refuse_statically", "static_rejections"]
+__all__ = ["refuse_statically"]

@@ -16,13 +16,22 @@ def decode(data: bytes) -> str:
     return data.decode(encoding, errors="replace")
 
 
-def unified_diff(path: str, before: bytes, after: bytes) -> str:
-    """``--- a/path`` / ``+++ b/path`` diff; line endings shown as they are."""
+def unified_diff(path: str, before: bytes, after: bytes, body: str | None = None) -> str:
+    """``--- a/path`` / ``+++ b/path`` diff; line endings shown as they are. ``body``: its
+    hunks (``diff_body``) when they were made already, where the file was migrated."""
+    hunks = diff_body(before, after) if body is None else body
+    return f"--- a/{path}\n+++ b/{path}\n{hunks}" if hunks else ""
+
+
+def diff_body(before: bytes, after: bytes) -> str:
+    """The hunks of ``unified_diff``, without the two lines naming the file: what a
+    migration's worker can make without knowing how the file will be named."""
     old = decode(before).splitlines(keepends=True)
     new = decode(after).splitlines(keepends=True)
-    lines = difflib.unified_diff(old, new, fromfile=f"a/{path}", tofile=f"b/{path}")
     out = []
-    for line in lines:
+    for number, line in enumerate(difflib.unified_diff(old, new, fromfile="", tofile="")):
+        if number < 2:
+            continue  # the "--- " and "+++ " lines
         out.append(line if line.endswith("\n") else line + "\n\\ No newline at end of file\n")
     return "".join(out)
 

@@ -66,11 +66,14 @@ class SkillResult:
 @dataclass(frozen=True)
 class WrittenLines:
     """Legacy line -> written line, and each top-level class's line, of one new source
-    (``digest``: its SHA-1, so that a changed source never meets an old map)."""
+    (``digest``: its SHA-1, so that a changed source never meets an old map), and the
+    hunks of its diff for ``--dry-run``."""
 
     digest: str
     lines: dict[int, int]
     classes: dict[str, int]
+    diff: str | None = None
+    """The hunks of its diff (``diffs.diff_body``), when the run shows diffs."""
 
 
 @dataclass(frozen=True)
@@ -95,6 +98,10 @@ class FileResult:
     written: WrittenLines | None = None
     """Where the lines of ``new_source`` came from, worked out where it was made
     (``written_lines``): valid only for the new source whose digest it names."""
+    refusals: dict[str, list[str]] | None = None
+    """Skill -> the runtime's early-check refusals of it, worked out in the worker that
+    made this result (``static_refusal.with_refusals``); None: not worked out. A result
+    made again (``replace`` of its skills or source) must not keep it."""
 
     @property
     def error_code(self) -> str | None:

@@ -22,7 +22,7 @@ import hashlib
 import re
 from dataclasses import replace
 
-from .diffs import decode
+from .diffs import decode, diff_body
 from .results import FileResult, ReviewFinding, WrittenLines
 
 _KEY = re.compile(r"""\.addParam\(\s*(?:key\s*=\s*)?(["'])(\w+)\1""")
@@ -70,13 +70,27 @@ def _class_lines(after: str) -> dict[str, int]:
     return {node.name: node.lineno for node in tree.body if isinstance(node, ast.ClassDef)}
 
 
-def with_written_lines(result: FileResult, original: bytes) -> FileResult:
-    """``result`` carrying its ``WrittenLines``: worked out in the worker that migrated the
-    file, so that the main process (``as_written``) does not diff and parse every file
-    again one after the other."""
+def with_written_lines(result: FileResult, original: bytes, diff: bool = False
+                       ) -> FileResult:
+    """``result`` carrying its ``WrittenLines`` (and, with ``diff``, its diff's hunks):
+    worked out in the worker that migrated the file, so that the main process
+    (``as_written``, ``--dry-run``'s diffs) does not diff and parse every file again one
+    after the other."""
     if not result.changed or not isinstance(result.new_source, bytes):
         return result
-    return replace(result, written=_written(original, result.new_source))
+    written = _written(original, result.new_source)
+    if diff:
+        written = replace(written, diff=diff_body(original, result.new_source))
+    return replace(result, written=written)
+
+
+def written_diff(result: FileResult) -> str | None:
+    """The hunks made for ``result``'s new source where it was migrated, if any."""
+    written = result.written
+    if written is None or written.diff is None or not isinstance(result.new_source, bytes) \
+            or written.digest != _digest(result.new_source):
+        return None
+    return written.diff
 
 
 def _written(original: bytes, new_source: bytes) -> WrittenLines:
@@ -115,4 +129,4 @@ def _finding(finding: ReviewFinding, mapped: dict[int, int]) -> ReviewFinding:
     return replace(finding, line=at, legacy_line=finding.line)
 
 
-__all__ = ["as_written", "line_map", "with_written_lines"]
+__all__ = ["as_written", "line_map", "with_written_lines", "written_diff"]

@@ -4,13 +4,16 @@ workers). A map made for one new source is never used for another."""
 
 from __future__ import annotations
 
+import difflib
+import random
 from dataclasses import replace
 from pathlib import Path
 
 from ezmigrate.codemod.migrate import Settings, migrate
 from ezmigrate.files.discover import Candidate
-from ezmigrate.project.runner import migrate_all
-from ezmigrate.report.written_lines import as_written, with_written_lines
+from ezmigrate.project.runner import Extras, migrate_all
+from ezmigrate.report.diffs import decode, unified_diff
+from ezmigrate.report.written_lines import as_written, with_written_lines, written_diff
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
 SOURCE = (FIXTURES / "legacy" / "pick_and_place.py").read_bytes()
@@ -39,6 +42,34 @@ def test_the_workers_hand_back_results_with_their_map(tmp_path: Path) -> None:
     for name in ("a.py", "b.py"):
         (tmp_path / name).write_bytes(SOURCE)
     candidates = [Candidate(tmp_path / n, tmp_path) for n in ("a.py", "b.py")]
-    items = migrate_all(candidates, None, 2, written_lines=True)
+    items = migrate_all(candidates, None, 2, extras=Extras(written_lines=True))
     assert all(m.result.written is not None for m in items)
     assert all(m.result.written is None for m in migrate_all(candidates, None, 2))  # check
+
+
+def test_the_diff_made_in_the_worker_is_the_diff_made_here(tmp_path: Path) -> None:
+    (tmp_path / "a.py").write_bytes(SOURCE)
+    [item] = migrate_all([Candidate(tmp_path / "a.py", tmp_path)], None, 1,
+                         extras=Extras(written_lines=True, diffs=True))
+    assert isinstance(item.result.new_source, bytes)
+    carried = written_diff(item.result)
+    assert carried is not None
+    assert unified_diff("a.py", SOURCE, item.result.new_source, carried) == \
+        unified_diff("a.py", SOURCE, item.result.new_source)
+    other = replace(item.result, new_source=item.result.new_source + b"# more\n")
+    assert written_diff(other) is None  # made for another source: not used
+
+
+def test_a_diff_is_its_two_file_lines_and_its_hunks() -> None:
+    """``unified_diff`` is ``difflib``'s, whatever the line endings; no change, no diff."""
+    chance = random.Random(5)
+    pieces = ["x\n", "y\n", "z", "\r\n", "w\r\n", "q"]
+    for _ in range(2000):
+        before = "".join(chance.choice(pieces) for _ in range(chance.randint(0, 12))).encode()
+        after = "".join(chance.choice(pieces) for _ in range(chance.randint(0, 12))).encode()
+        old = decode(before).splitlines(keepends=True)
+        new = decode(after).splitlines(keepends=True)
+        expected = "".join(
+            line if line.endswith("\n") else line + "\n\\ No newline at end of file\n"
+            for line in difflib.unified_diff(old, new, fromfile="a/p.py", tofile="b/p.py"))
+        assert unified_diff("p.py", before, after) == expected
