@@ -11,7 +11,7 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -37,7 +37,7 @@ from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
 from . import holdpoint
-from .cross_file import RUNTIME_MARKER, dotted
+from .cross_file import RUNTIME_MARKER, module_name
 from .facts_cache import FactsCache, keep_scenes, seed_scenes
 from .implementation_code import IMPLEMENTATION, ModuleFacts, module_facts
 from .import_scan import import_words
@@ -199,10 +199,12 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     may define them: one changed file is read again with the files that depend on it.
     """
     fingerprint = index.fingerprint if index is not None else ""
-    everyone = [(c, d) for c, d in declined if d is not None] + [(c, d) for c, d, _ in plain]
+    everyone = {str(c.path): d for c, d in declined if d is not None}
+    everyone.update((str(c.path), d) for c, d, _ in plain)
     words = {c.path: import_words(d) for c, d in declined if d is not None}
-    wanted = set().union(*words.values()) if words else set()
-    siblings = [Migrated(c, d, None, r) for c, d, r in plain if _may_define(c, wanted)]
+    definers = _Definers(everyone)
+    wanted = definers.of(set().union(*words.values()) if words else set())
+    siblings = [Migrated(c, d, None, r) for c, d, r in plain if str(c.path) in wanted]
     if cache is None:
         for item in settle([c for c, _ in declined], index, workers, read=siblings):
             yield item.candidate, item.original, item.result
@@ -211,21 +213,11 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     def own_key(candidate: Candidate, data: bytes) -> str:
         return cache.key("settled", fingerprint, str(candidate.path), candidate.relative, data)
 
-    by_module: dict[bytes, list[tuple[str, bytes]]] = {}  # module name -> its files
-    packages: list[tuple[str, bytes]] = []  # every __init__.py: any import may run it
-    for c, d in everyone:
-        if c.path.name == "__init__.py":
-            packages.append((str(c.path), d))
-        else:
-            by_module.setdefault(_module_name(c).encode(), []).append((str(c.path), d))
-
     def with_bases_key(candidate: Candidate, data: bytes) -> str:
         here = str(candidate.path)
-        bases = {*packages, *(f for w in words.get(candidate.path, frozenset())
-                              for f in by_module.get(w, ()))}
+        bases = definers.of(words.get(candidate.path, frozenset())) - {here}
         return cache.key("settled-with", fingerprint, here, candidate.relative, data,
-                         *(part for path, d in sorted(bases) if path != here
-                           for part in (path, d)))
+                         *(part for path in sorted(bases) for part in (path, everyone[path])))
 
     found: dict[Path, FileResult] = {}
     for candidate, data in declined:
@@ -239,7 +231,7 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     missing = [c for c, _ in declined if c.path not in found]
     if missing:
         settled = [Migrated(c, d, None, found[c.path]) for c, d in declined
-                   if c.path in found and d is not None and _may_define(c, wanted)]
+                   if c.path in found and d is not None and str(c.path) in wanted]
         for item in settle(missing, index, workers, read=[*siblings, *settled]):
             found[item.candidate.path] = item.result
             if item.candidate.path in words:
@@ -249,14 +241,23 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
         yield candidate, data or b"", found[candidate.path]
 
 
-def _may_define(candidate: Candidate, words: Collection[bytes]) -> bool:
-    """Whether a file may define a base another file's imports (their ``words``) name."""
-    return candidate.path.name == "__init__.py" or _module_name(candidate).encode() in words
+class _Definers:
+    """The files that may define a base another file's imports name: those whose module
+    name is a word of the imports, and every package's ``__init__`` (any import may run
+    it). Indexed once by module name, asked once per declined file."""
 
+    def __init__(self, paths: Iterable[str]) -> None:
+        self.packages: set[str] = set()
+        self.by_module: dict[bytes, set[str]] = {}
+        for path in paths:
+            if Path(path).name == "__init__.py":
+                self.packages.add(path)
+            else:
+                self.by_module.setdefault(module_name(path).encode(), set()).add(path)
 
-def _module_name(candidate: Candidate) -> str:
-    """The last part of the module name a file is imported by."""
-    return dotted(candidate.relative).rpartition(".")[2]
+    def of(self, words: Iterable[bytes]) -> set[str]:
+        """The paths that may define what imports spelling ``words`` name."""
+        return self.packages.union(*(self.by_module.get(w, ()) for w in words))
 
 
 def needs_trees(codes: Iterable[str]) -> bool:
@@ -308,7 +309,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     facts = FactsCache.open(kept[0][0]) if kept is not None else None
     from .reading_pool import ReadingPool  # not before: a kept run needs none of it
 
-    reader = ReadingPool(pool.workers)  # forked now, before any thread of the run exists
+    reader = ReadingPool(pool.workers)  # it forks when the files are read, before threads
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
                        standby, world, cache_dir, trace, facts, reader)

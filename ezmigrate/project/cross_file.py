@@ -37,6 +37,12 @@ def dotted(relative: str) -> str:
     return ".".join(parts)
 
 
+def module_name(path: str) -> str:
+    """The last part of the name a file is imported by (``base`` for ``pkg/base.py``,
+    ``pkg`` for ``pkg/__init__.py``): the word an import statement must spell to reach it."""
+    return dotted(path).rpartition(".")[2]
+
+
 def target_module(importer: str, source: str) -> str:
     """The dotted module a ``from source import X`` in file ``importer`` refers to."""
     level = len(source) - len(source.lstrip("."))

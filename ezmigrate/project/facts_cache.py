@@ -71,8 +71,7 @@ class FactsCache:
         self._key = key
         self._old: dict[str, Any] = self._load()
         self._used: dict[str, Any] = {}
-        self.hits = 0
-        self.misses = 0
+        self._added = False
 
     @classmethod
     def open(cls, folder: Path) -> FactsCache | None:
@@ -93,20 +92,18 @@ class FactsCache:
         if key in self._used:
             return self._used[key]
         found = self._old.get(key)
-        if found is None:
-            self.misses += 1
-            return None
-        self.hits += 1
-        self._used[key] = found
+        if found is not None:
+            self._used[key] = found
         return found
 
     def put(self, key: str, value: Any) -> None:
         self._used[key] = value
+        self._added = True
 
     def save(self) -> None:
         """Write the entries this run used (unchanged ones included), signed; a cache
         that cannot be written keeps nothing."""
-        if not self.misses and self._used.keys() == self._old.keys():
+        if not self._added and self._used.keys() == self._old.keys():
             return  # nothing new: the file on disk says it already
         try:
             data = pickle.dumps(self._used, protocol=pickle.HIGHEST_PROTOCOL)

@@ -24,6 +24,7 @@ from pathlib import Path
 
 from .. import __version__
 from ..verify.protocol import LoadJob, LoadOutcome
+from .cross_file import module_name
 from .import_scan import import_words
 
 FOLDER = ".ezmigrate_cache"
@@ -87,7 +88,7 @@ class _Imports:
         self._data = {os.path.abspath(path): data for path, data in sources}
         self._by_module: dict[bytes, list[str]] = {}
         for path in sorted(self._data):
-            self._by_module.setdefault(_module(path).encode(), []).append(path)
+            self._by_module.setdefault(module_name(path).encode(), []).append(path)
         self._words: dict[str, frozenset[bytes]] = {}
 
     def closure(self, path: str, data: bytes) -> list[tuple[str, bytes]]:
@@ -106,13 +107,6 @@ class _Imports:
                     seen.add(other)
                     pending.append((other, self._data[other]))
         return [(p, hashlib.sha256(self._data[p]).digest()) for p in sorted(seen - {start})]
-
-
-def _module(path: str) -> str:
-    """The name a file is imported by: its stem, or its folder's for ``__init__.py``."""
-    name = os.path.basename(path)
-    return os.path.basename(os.path.dirname(path)) if name == "__init__.py" \
-        else os.path.splitext(name)[0]
 
 
 def _packages_around(path: str) -> list[str]:

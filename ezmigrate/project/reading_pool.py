@@ -79,23 +79,19 @@ class ReadingPool:
                              for path in self._waiting]
         self._waiting = []
 
-    def seed_scenes(self) -> list[tuple[Path, str, Scene]]:
-        """Hand ``read_scene`` every scene parsed in the workers; returns them."""
+    def seed_scenes(self) -> None:
+        """Hand ``read_scene`` every scene parsed in the workers."""
         from ezskiros_runtime.world.scene import seed_scene
 
         self._start_scenes()
-        done = []
         for path, future in self._scenes:
             try:
                 parsed = future.result()
             except (BrokenProcessPool, OSError):  # the main process parses it
                 continue
             if parsed is not None:
-                text, scene = parsed
-                seed_scene(path, text, scene)
-                done.append((path, text, scene))
+                seed_scene(path, *parsed)
         self._scenes = []
-        return done
 
     def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
                    ) -> list[FileFacts]:

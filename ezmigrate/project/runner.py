@@ -111,9 +111,9 @@ def _init_worker(settings: Settings, extras: Extras = NO_EXTRAS) -> None:
 
 
 def _migrate_one(relative: str, data: bytes, ambiguous: bool = False) -> FileResult:
-    """One file's migration, with the line map its report needs when it has one
-    (``with_written_lines``: here, in the worker, rather than for every file in the main
-    process afterwards).
+    """One file's migration, with what the run's ``Extras`` ask for besides (the report's
+    line map, the diff's hunks, the early-check refusals: here, in the worker, rather than
+    for every file in the main process afterwards).
     ``ambiguous``: the prefilter's text could not rule the file out; its parse
     (``marker_is_identifier``) is taken here too, and an empty result is what the
     prefilter would have given."""
@@ -175,7 +175,7 @@ class _Workers:
 
     @property
     def settings(self) -> Settings:
-        if self._settings is None:  # no libcst: the workers import it, in parallel
+        if self._settings is None:  # no libcst yet: ``_start`` imports it before the fork
             from ..codemod.settings import Settings
 
             self._settings = (Settings(index=self.index) if self.target is None
