@@ -26,7 +26,6 @@ from __future__ import annotations
 import argparse
 import ast
 import contextlib
-import importlib.util
 import json
 import os
 import random
@@ -35,7 +34,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
-from typing import Any
+
+from bench_check import _generator
 
 HERE = Path(__file__).resolve().parent
 STEPS = 12
@@ -127,15 +127,6 @@ def _missions(rng: random.Random, package: int) -> str:
     out.append(_implementation(campaign, "SkillBase", _expand(
         [_call(m, {"Where": "Site", "What": "Cargo"}) for m in missions])))
     return "".join(out)
-
-
-def _generator() -> Any:
-    spec = importlib.util.spec_from_file_location("generate_repo", HERE / "generate_repo.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["generate_repo"] = module
-    spec.loader.exec_module(module)
-    return module
 
 
 def generate(root: Path, files: int = 2000, packages: int = 14, seed: int = 7) -> int:
