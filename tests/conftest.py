@@ -1,7 +1,8 @@
 """Test-session setup shared by every test package.
 
-Tests use a private ontology cache so that a run never reads or writes the user's real
-``~/.cache/ezskiros`` (and so that a stale cache can never make a test pass).
+Tests use a private ontology cache and a private signing key for ``check``'s cache, so
+that a run never reads or writes the user's real ``~/.cache/ezskiros`` or
+``~/.cache/ezmigrate`` (and so that a stale cache can never make a test pass).
 """
 
 from __future__ import annotations
@@ -18,6 +19,9 @@ import pytest
 
 _CACHE = tempfile.mkdtemp(prefix="ezskiros-test-cache-")
 os.environ.setdefault("EZSKIROS_CACHE_DIR", _CACHE)
+# the signing key of ``check``'s facts cache, made by every run with a cache: here, not in
+# the user's ``~/.cache/ezmigrate`` (children inherit it; pip's cache stays where it is)
+os.environ.setdefault("EZMIGRATE_KEY_DIR", tempfile.mkdtemp(prefix="ezmigrate-test-key-"))
 
 
 _SUMMARY = pytest.StashKey[List[str]]()

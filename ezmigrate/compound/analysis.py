@@ -29,7 +29,7 @@ from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_batched
 from ..verify.protocol import LoadOutcome
-from .repository import RepositoryScan, description_of
+from .repository import Recovered, RepositoryScan, description_of
 from .static import (
     NeedsTrace,
     class_bases,
@@ -87,6 +87,9 @@ class Trees:
     prepared: dict[str, TreeFacts] = field(default_factory=dict)
     """Facts of files with no description, read with the run's files (``file_facts``):
     ``add`` takes them in its own order instead of parsing the file."""
+    recovered: dict[str, Recovered] = field(default_factory=dict)
+    """Files ``ast`` cannot parse, as ``recover_classes`` read them with the run's files:
+    the repository scan takes them instead of reading them again."""
 
     def wants(self, candidate: Candidate, data: bytes) -> bool:
         """Whether ``add`` would read this file: not yet seen, and holding a marker."""

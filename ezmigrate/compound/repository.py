@@ -20,7 +20,7 @@ import ast
 import io
 import os
 import tokenize
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -71,17 +71,27 @@ def description_of(name: str, model: dict[str, Any] | None, origin: str, path: s
     return DescriptionInfo(name, {p.key: p.element_type for p in params}, origin, path, line)
 
 
+Recovered = list[tuple[str, int, str | None]] | None
+"""What ``recover_classes`` makes of a module ``ast`` cannot parse."""
+
+
 def scan_repository(named: Sequence[Path], exclude: Sequence[str] = (),
                     skip: Iterable[str] = (),
-                    read: Sequence[tuple[Candidate, bytes]] = ()) -> RepositoryScan:
+                    read: Sequence[tuple[Candidate, bytes]] = (),
+                    recovered: Mapping[str, Recovered] | None = None) -> RepositoryScan:
     """Descriptions, implementations, bases and literal trees of the repository around
     ``named``. ``read``: the run's own files with their bytes (never read again); ``skip``:
-    the paths among them whose syntax tree the caller already read. Only a named *file*
-    widens the scope to its repository; the files of a named folder are all in ``read``."""
+    the paths among them whose syntax tree the caller already read; ``recovered``: by path,
+    files of ``read`` that ``ast`` cannot parse, recovered already where the run read
+    them (``file_facts``). Only a named *file* widens the scope to its repository; the
+    files of a named folder are all in ``read``."""
     scan = RepositoryScan()
     skipped = set(skip)
     for candidate, data in read:  # the run reads these itself, unless ast cannot parse them
-        if str(candidate.path) not in skipped and any(m in data for m in READ_WHEN):
+        path = str(candidate.path)
+        if recovered is not None and path in recovered:
+            _add_recovered(candidate, recovered[path], scan)
+        elif path not in skipped and any(m in data for m in READ_WHEN):
             _scan_file(candidate, data, scan, unparsable_only=True)
     items: list[tuple[Candidate, bytes]] = []
     roots = sorted({repository_root(p).resolve() for p in named
@@ -111,16 +121,7 @@ def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan,
         if unparsable_only:
             return
     except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
-        recovered = recover_classes(data)
-        if recovered is None:
-            scan.unread.append(candidate.relative)
-            return
-        for name, line, described in recovered:
-            if described is None:
-                scan.descriptions.append(DescriptionInfo(name, {}, f"repository ({UNPARSED})",
-                                                         path, line, complete=False))
-            else:
-                scan.labels.append((name, described))
+        _add_recovered(candidate, recover_classes(data), scan)
         return
     scan.labels += implementations(tree)
     scan.bases += class_bases(tree)
@@ -147,6 +148,19 @@ def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan,
             scan.compounds.append(found)
 
 
+def _add_recovered(candidate: Candidate, recovered: Recovered, scan: RepositoryScan) -> None:
+    """What a module ``ast`` cannot parse adds to the scan (``recover_classes``)."""
+    if recovered is None:
+        scan.unread.append(candidate.relative)
+        return
+    for name, line, described in recovered:
+        if described is None:
+            scan.descriptions.append(DescriptionInfo(name, {}, f"repository ({UNPARSED})",
+                                                     str(candidate.path), line, complete=False))
+        else:
+            scan.labels.append((name, described))
+
+
 def _looks_described(node: ast.ClassDef) -> bool:
     """A description class by its shape: a ``createDescription`` of its own (an
     implementation's calls ``setDescription`` and is listed apart), or a base named
@@ -159,7 +173,7 @@ def _looks_described(node: ast.ClassDef) -> bool:
                for b in node.bases)
 
 
-def recover_classes(data: bytes) -> list[tuple[str, int, str | None]] | None:
+def recover_classes(data: bytes) -> Recovered:
     """``(class, line, described type or None)`` of a module's top-level classes, read with
     ``tokenize`` where ``ast`` fails (``print x``, ``except E, e:``): a class whose body
     calls ``setDescription(Type(), ...)`` is an implementation of ``Type``, one with

@@ -11,7 +11,7 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -21,6 +21,7 @@ from ezskiros_runtime.compound.library import SkillIndex
 from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.model import SkillModel
 
+from ..codemod.settings import Settings
 from ..files.discover import Candidate, discover
 from ..files.prefilter import by_text
 from ..lint.diagnostic import Diagnostic, Positions, diagnostic
@@ -152,9 +153,12 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
             missing.append((candidate, data, verdict, key))
     items: list[tuple[Candidate, bytes, bool | None]] = [(c, d, v) for c, d, v, _ in missing]
     made = reader.read_files(items, compounds) if reader is not None \
-        else [file_facts(c, d, compounds, v) for c, d, v in items]
-    for (candidate, _, _, key), found in zip(missing, made, strict=True):
+        else [(file_facts(c, d, compounds, v), None) for c, d, v in items]
+    alone: dict[str, tuple[bytes, FileResult]] = {}  # the codemod's, taken by the reader
+    for (candidate, data, _, key), (found, own) in zip(missing, made, strict=True):
         facts[candidate.path] = found
+        if own is not None:
+            alone[str(candidate.path)] = (data, own)
         if cache is not None and key is not None:
             cache.put(key, found)
     plain: list[tuple[Candidate, bytes, FileResult]] = []
@@ -180,12 +184,13 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     yield from plain
     if declined:
         yield from _settled(declined, [(c, d, r) for c, d, r in plain if c.root in whole_package],
-                            index, workers, cache)
+                            index, workers, cache, alone)
 
 
 def _settled(declined: list[tuple[Candidate, bytes | None]],
              plain: list[tuple[Candidate, bytes, FileResult]], index: OntologyIndex | None,
-             workers: int, cache: FactsCache | None
+             workers: int, cache: FactsCache | None,
+             alone: Mapping[str, tuple[bytes, FileResult]] | None = None
              ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
     """The codemod's readings of the files the plain reader declined (``settle``, without
     verification), beside the plain files of their packages (``plain``) that may define
@@ -197,6 +202,7 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     The cache keeps each reading by the ontology's fingerprint and the file's content, and
     for a file whose classes derive from imported bases, the content of every file that
     may define them: one changed file is read again with the files that depend on it.
+    ``alone``: files the reading pool already migrated alone (``runner.own_reading``).
     """
     fingerprint = index.fingerprint if index is not None else ""
     everyone = {str(c.path): d for c, d in declined if d is not None}
@@ -206,7 +212,8 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     wanted = definers.of(set().union(*words.values()) if words else set())
     siblings = [Migrated(c, d, None, r) for c, d, r in plain if str(c.path) in wanted]
     if cache is None:
-        for item in settle([c for c, _ in declined], index, workers, read=siblings):
+        for item in settle([c for c, _ in declined], index, workers, read=siblings,
+                           known=alone):
             yield item.candidate, item.original, item.result
         return
 
@@ -232,7 +239,7 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     if missing:
         settled = [Migrated(c, d, None, found[c.path]) for c, d in declined
                    if c.path in found and d is not None and str(c.path) in wanted]
-        for item in settle(missing, index, workers, read=[*siblings, *settled]):
+        for item in settle(missing, index, workers, read=[*siblings, *settled], known=alone):
             found[item.candidate.path] = item.result
             if item.candidate.path in words:
                 keyed = own_key if not item.result.foreign_bases else with_bases_key
@@ -309,7 +316,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     facts = FactsCache.open(kept[0][0]) if kept is not None else None
     from .reading_pool import ReadingPool  # not before: a kept run needs none of it
 
-    reader = ReadingPool(pool.workers)  # it forks when the files are read, before threads
+    # it forks when the files are read, before threads
+    reader = ReadingPool(pool.workers, Settings(index=index))
     try:
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
                        standby, world, cache_dir, trace, facts, reader)
@@ -390,6 +398,8 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
                 trees.take(candidate, found.trees)
             else:
                 trees.prepared[str(candidate.path)] = found.trees
+        if trees is not None and found.unparsed is not None:
+            trees.recovered[str(candidate.path)] = found.unparsed[0]
         if found.implementation is not None:
             facts[candidate.path] = found.implementation
 
@@ -593,7 +603,8 @@ def compound_pass(read: list[tuple[Candidate, bytes]],
         statics = [(c, r) for c, _, r in read_statically([c for c, _ in library], pool.workers,
                                                          index)]
         add_descriptions(skills, statics, [], "skill library")
-    around = scan_repository(trees.named, trees.exclude, trees.seen | set(trees.prepared), read)
+    around = scan_repository(trees.named, trees.exclude, trees.seen | set(trees.prepared), read,
+                             trees.recovered)
     for info in around.descriptions:  # the files not named; the named ones' readings win
         skills.add_description(info)
     add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],

@@ -14,7 +14,8 @@ The entries are Python objects, kept in one pickle (``facts.pickle``, read once,
 whole with the entries the run used, so it never grows with old ones). A pickle runs code
 when it is read, and ``.ezmigrate_cache`` sits in the checkout, where anybody who can push
 a file could put one: the file is signed with a key that never leaves this user's cache
-folder (``~/.cache/ezmigrate/key``, made on first use), and a file whose signature does not
+folder (``~/.cache/ezmigrate/key``, made on first use; ``EZMIGRATE_KEY_DIR`` names another
+folder), and a file whose signature does not
 match is not unpickled, only ignored. No key (a read-only home): no cache, same results.
 """
 
@@ -37,10 +38,24 @@ PACK = "facts.pickle"
 """The file in ``.ezmigrate_cache`` the entries are kept in."""
 
 
+KEY_DIR = "EZMIGRATE_KEY_DIR"
+"""The variable naming the folder of the signing key instead of this user's cache folder
+(the tests keep theirs in a temporary folder)."""
+
+
+def _key_folder() -> Path:
+    """``$EZMIGRATE_KEY_DIR``, else ``$XDG_CACHE_HOME/ezmigrate``, else
+    ``~/.cache/ezmigrate``."""
+    named = os.environ.get(KEY_DIR)
+    if named:
+        return Path(named)
+    return Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "ezmigrate"
+
+
 def _user_key() -> bytes | None:
     """This user's signing key, made on first use; None when it can be neither read nor
     made."""
-    home = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "ezmigrate"
+    home = _key_folder()
     path = home / "key"
     try:
         return bytes.fromhex(path.read_text(encoding="ascii").strip())

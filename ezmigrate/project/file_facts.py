@@ -15,6 +15,7 @@ import ast
 from dataclasses import dataclass
 
 from ..compound.analysis import READ_WHEN, TreeFacts, tree_facts
+from ..compound.repository import Recovered, recover_classes
 from ..files.discover import Candidate
 from ..files.prefilter import marker_is_identifier
 from ..lint.plain_reader import Declined, read_plain
@@ -36,6 +37,10 @@ class FileFacts:
     """False: the prefilter ruled the file out (``by_text``, ``marker_is_identifier``): no
     description is read in it; ``trees`` then holds what the compound pass will take of
     it, if it parses (``Trees.prepared``)."""
+    unparsed: tuple[Recovered] | None = None
+    """For a file ``ast`` cannot parse (Python 2) that the compound pass reads, what
+    ``recover_classes`` makes of it (one item: it may itself be None), for the repository
+    scan (``Trees.recovered``)."""
 
 
 def parse(data: bytes) -> ast.Module | None:
@@ -55,13 +60,16 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
     ruled out (``described`` False) is read only for the compound pass (a tree or an
     implementation outside a description file), and only when it parses."""
     described = verdict is True or (verdict is None and marker_is_identifier(data))
+    read_when = compounds and any(m in data for m in READ_WHEN)
     if not described:
-        tree = parse(data) if compounds and any(m in data for m in READ_WHEN) else None
+        tree = parse(data) if read_when else None
         return FileFacts(FileResult(path=candidate.relative), described=False,
-                         trees=None if tree is None else tree_facts(tree, str(candidate.path)))
+                         trees=None if tree is None else tree_facts(tree, str(candidate.path)),
+                         unparsed=(recover_classes(data),) if read_when and tree is None
+                         else None)
     tree = parse(data)
     if tree is None:
-        return FileFacts(Declined())
+        return FileFacts(Declined(), unparsed=(recover_classes(data),) if read_when else None)
     static = read_plain(data, candidate.relative, tree) if RUNTIME_MARKER not in data \
         else Declined()
     if not compounds:

@@ -6,8 +6,10 @@ and for tracing). Parsing a file or a scene needs nothing but its path and bytes
 a picklable reading (``file_facts.FileFacts``, ``world.scene.Scene``), so both go to a
 pool forked at the start of the run, before any thread exists: the scenes are submitted
 first and parse while the main process reads the repository; the files' readings are
-split into chunks once the misses of the cache are known. Results are taken in the order
-they were asked for, so a run reports the same bytes as one without the pool
+split into chunks once the misses of the cache are known. A file the plain reader
+declines is read by the codemod in the same turn (``runner.own_reading``), while the
+other files are still being read, rather than after all of them. Results are taken in the
+order they were asked for, so a run reports the same bytes as one without the pool
 (``--jobs 1``, or too little to share).
 """
 
@@ -20,11 +22,15 @@ from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..lint.plain_reader import Declined
+from ..report.results import FileResult
 from .file_facts import FileFacts, file_facts
+from .runner import own_reading
 
 if TYPE_CHECKING:
     from ezskiros_runtime.world.scene import Scene
 
+    from ..codemod.settings import Settings
     from ..files.discover import Candidate
 
 SHARED_FROM = 24
@@ -44,17 +50,44 @@ def _parse_scene(path: str) -> tuple[str, Scene] | None:
         return None
 
 
-def _read_files(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
-                ) -> list[FileFacts]:
-    return [file_facts(candidate, data, compounds, verdict)
-            for candidate, data, verdict in items]
+Reading = tuple[FileFacts, FileResult | None]
+"""A file's facts, and the codemod's own reading of it when the plain reader declined it."""
+
+_SETTINGS: Settings | None = None
+
+
+def _init_worker(settings: Settings | None) -> None:
+    global _SETTINGS
+    _SETTINGS = settings
+
+
+def _read_files(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
+                settings: Settings | None) -> list[Reading]:
+    """Each file's facts; with ``settings``, for each file the plain reader declines, the
+    codemod's reading of it alone (``runner.own_reading``), taken while the file is at hand
+    instead of after every file is read (the cross-file pass still runs after)."""
+    found: list[Reading] = []
+    for candidate, data, verdict in items:
+        facts = file_facts(candidate, data, compounds, verdict)
+        alone = own_reading(candidate.relative, data, settings) \
+            if settings is not None and facts.described and isinstance(facts.static, Declined) \
+            else None
+        found.append((facts, alone))
+    return found
+
+
+def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
+                    ) -> list[Reading]:
+    return _read_files(items, compounds, _SETTINGS)
 
 
 class ReadingPool:
-    """Forked readers for one run (``workers`` of them; fewer than two: none)."""
+    """Forked readers for one run (``workers`` of them; fewer than two: none). ``settings``:
+    what the codemod reads declined files with (None: they are left to ``settle``)."""
 
-    def __init__(self, workers: int) -> None:
+    def __init__(self, workers: int, settings: Settings | None = None) -> None:
         self.workers = workers
+        self.settings = settings
         self._pool: ProcessPoolExecutor | None = None
         self._scenes: list[tuple[Path, Future[tuple[str, Scene] | None]]] = []
         self._waiting: list[Path] = []
@@ -62,9 +95,11 @@ class ReadingPool:
     def _executor(self) -> ProcessPoolExecutor | None:
         if self.workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
             return None
-        if self._pool is None:
+        if self._pool is None:  # forked: the settings' index is inherited, never pickled
             self._pool = ProcessPoolExecutor(max_workers=self.workers,
-                                             mp_context=multiprocessing.get_context("fork"))
+                                             mp_context=multiprocessing.get_context("fork"),
+                                             initializer=_init_worker,
+                                             initargs=(self.settings,))
         return self._pool
 
     def parse_scenes(self, paths: Sequence[Path]) -> None:
@@ -94,21 +129,24 @@ class ReadingPool:
         self._scenes = []
 
     def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
-                   ) -> list[FileFacts]:
-        """``file_facts`` of each ``(candidate, bytes, the prefilter's text verdict)``, in
+                   ) -> list[Reading]:
+        """``file_facts`` of each ``(candidate, bytes, the prefilter's text verdict)``, and
+        the codemod's reading of those the plain reader declines (``_read_files``), in
         order: in the workers when there are enough."""
+        settings = self.settings
         pool = self._executor() if len(items) >= SHARED_FROM else None
         if pool is None:
             self._start_scenes()
-            return _read_files(items, compounds)
+            return _read_files(items, compounds, settings)
         size = max(8, len(items) // (self.workers * 4))
         starts = list(range(0, len(items), size))
         here = starts[len(starts) - len(starts) // (self.workers + 1):]  # the main's share
-        futures = {start: pool.submit(_read_files, items[start:start + size], compounds)
+        futures = {start: pool.submit(_read_in_worker, items[start:start + size], compounds)
                    for start in starts if start not in here}
         self._start_scenes()
-        mine = {start: _read_files(items[start:start + size], compounds) for start in here}
-        found: list[FileFacts] = []
+        mine = {start: _read_files(items[start:start + size], compounds, settings)
+                for start in here}
+        found: list[Reading] = []
         for start in starts:
             if start in mine:
                 found += mine[start]
@@ -116,7 +154,7 @@ class ReadingPool:
             try:
                 found += futures[start].result()
             except (BrokenProcessPool, OSError):  # a worker died: read here what it had
-                found += _read_files(items[start:start + size], compounds)
+                found += _read_files(items[start:start + size], compounds, settings)
         return found
 
     def close(self) -> None:

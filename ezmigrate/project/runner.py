@@ -18,7 +18,7 @@ import importlib
 import multiprocessing
 import os
 import traceback
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
@@ -111,9 +111,16 @@ def _init_worker(settings: Settings, extras: Extras = NO_EXTRAS) -> None:
 
 
 def _migrate_one(relative: str, data: bytes, ambiguous: bool = False) -> FileResult:
+    """``migrate_file`` in a worker, with the settings and extras it was started with."""
+    assert _SETTINGS is not None
+    return migrate_file(relative, data, _SETTINGS, ambiguous, _EXTRAS)
+
+
+def migrate_file(relative: str, data: bytes, settings: Settings, ambiguous: bool = False,
+                 extras: Extras = NO_EXTRAS) -> FileResult:
     """One file's migration, with what the run's ``Extras`` ask for besides (the report's
-    line map, the diff's hunks, the early-check refusals: here, in the worker, rather than
-    for every file in the main process afterwards).
+    line map, the diff's hunks, the early-check refusals: in the worker, rather than for
+    every file in the main process afterwards).
     ``ambiguous``: the prefilter's text could not rule the file out; its parse
     (``marker_is_identifier``) is taken here too, and an empty result is what the
     prefilter would have given."""
@@ -121,19 +128,28 @@ def _migrate_one(relative: str, data: bytes, ambiguous: bool = False) -> FileRes
     from ..report.written_lines import with_written_lines
     from .refusals import with_refusals
 
-    assert _SETTINGS is not None
     if ambiguous and not marker_is_identifier(data):
         return FileResult(relative)
     try:
-        result = migrate(data, _SETTINGS, relative)
-        if _EXTRAS.refusals:
-            result = with_refusals(result, relative, _SETTINGS.index)
-        if _EXTRAS.written_lines:
-            result = with_written_lines(result, data, _EXTRAS.diffs)
+        result = migrate(data, settings, relative)
+        if extras.refusals:
+            result = with_refusals(result, relative, settings.index)
+        if extras.written_lines:
+            result = with_written_lines(result, data, extras.diffs)
         return result
     except Exception:  # a bug of ours must not stop the run nor lose the other files
         return FileResult(path=relative, error="internal error while migrating:\n"
                           + traceback.format_exc(limit=6))
+
+
+def own_reading(relative: str, data: bytes, settings: Settings) -> FileResult:
+    """What ``migrate_all`` makes of one file before the cross-file pass, without extras:
+    taken early by a pool that has the file at hand (``reading_pool``) and handed to
+    ``migrate_all`` as ``known``."""
+    verdict = by_text(data)
+    if verdict is False:
+        return FileResult(relative)
+    return migrate_file(relative, data, settings, verdict is None)
 
 
 def default_jobs() -> int:
@@ -254,15 +270,26 @@ class _Workers:
 def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,
                 jobs: int, progress: Progress | None = None,
                 target: tuple[int, int] | None = None,
-                extras: Extras = NO_EXTRAS) -> list[Migrated]:
+                extras: Extras = NO_EXTRAS,
+                known: Mapping[str, tuple[bytes, FileResult]] | None = None
+                ) -> list[Migrated]:
     """Migrate every candidate; files the prefilter rules out get an empty result.
     ``target``: the Python the migrated code must run on (None: the default); ``extras``:
-    what each result carries besides (``Extras``)."""
+    what each result carries besides (``Extras``). ``known``: by path, files already
+    migrated as this would (``own_reading``, default target, no extras) and the bytes they
+    were read with: taken as they are."""
+    assert not known or (target is None and extras == NO_EXTRAS), "known: default readings"
     workers = _Workers(index, jobs, progress, target, extras)
     done: list[Migrated] = []
     try:
         for candidate, data, error in read_candidates(candidates):
-            if data is None:
+            taken = known.get(str(candidate.path)) if known else None
+            if taken is not None and taken[0] == data:
+                item = Migrated(candidate, data, content_digest(data), taken[1],
+                                workers.settings)
+                done.append(item)
+                workers.finished(item)
+            elif data is None:
                 done.append(Migrated(candidate, b"", "",
                                      FileResult(candidate.relative, error=error)))
                 workers.finished()

@@ -17,12 +17,13 @@ Rounds are bounded: a file still changing after the last one is not written.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from ..codemod.settings import Settings
 from ..files.discover import Candidate
+from ..report.results import FileResult
 from ..verify.verdicts import Comparison, apply_verdicts
 from . import holdpoint
 from .cross_file import imported_from, resolve_cross_file
@@ -53,7 +54,8 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
            checks: Checks | None = None, progress: Progress | None = None,
            target: tuple[int, int] | None = None,
            refuse_unloadable: bool = False,
-           read: Sequence[Migrated] = (), extras: Extras = NO_EXTRAS) -> list[Migrated]:
+           read: Sequence[Migrated] = (), extras: Extras = NO_EXTRAS,
+           known: Mapping[str, tuple[bytes, FileResult]] | None = None) -> list[Migrated]:
     """Every candidate's settled result (see the module doc); ``checks`` None: no
     verification (``--no-verify``, ``check``); ``target``: the Python the migrated code
     must run on (None: the default, ``Settings.target``). ``refuse_unloadable``: without
@@ -66,10 +68,10 @@ def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: i
     (``exported`` only decides the imports a rewrite keeps, which ``check`` never
     writes). ``extras``: what the workers add to each result for the report and the
     output (``runner.Extras``; the refusals are asked for here, with
-    ``refuse_unloadable``)."""
+    ``refuse_unloadable``). ``known``: files already migrated alone (``migrate_all``)."""
     if refuse_unloadable and checks is None:
         extras = replace(extras, refusals=True)
-    migrated = migrate_all(candidates, index, jobs, progress, target, extras)
+    migrated = migrate_all(candidates, index, jobs, progress, target, extras, known)
     base = Settings(index=index) if target is None else Settings(index=index, target=target)
     _settle_cross_file(migrated, base, read)
     if progress is not None:

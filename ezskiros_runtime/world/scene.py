@@ -21,7 +21,9 @@ import re
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterator
+from typing import Iterable, Iterator
+
+from .turtle_subset import read_triples
 
 RDF_TYPE = "http://www.w3.org/1999/02/22-rdf-syntax-ns#type"
 RDFS_LABEL = "http://www.w3.org/2000/01/rdf-schema#label"
@@ -147,8 +149,14 @@ def known_scene(path: str | Path, text: str) -> Scene | None:
     return _KNOWN.get((str(path), text))
 
 
-def _parsed(where: str, text: str) -> Scene:
-    from rdflib import BNode, Graph, Literal, URIRef
+def _triples(where: str, text: str) -> Iterable[tuple[object, object, object]]:
+    """The file's triples: read as SkiROS2 saves scenes (``turtle_subset``), else by
+    rdflib's parser, whose error says where the file is wrong."""
+    with _quiet_rdflib():  # a value that does not fit its datatype is a finding
+        plain = read_triples(text)
+    if plain is not None:
+        return plain
+    from rdflib import Graph
 
     graph = Graph()
     try:
@@ -162,10 +170,23 @@ def _parsed(where: str, text: str) -> Scene:
         raise SceneError(where, line + 1 if isinstance(line, int) else 0,
                          f"not valid Turtle: {message.strip() or type(error).__name__}"
                          ) from error
+    return graph.triples((None, None, None))
+
+
+def _order(triple: tuple[object, object, object]) -> tuple[str, ...]:
+    """Triples in the order of their text, a literal's datatype and language last: the
+    same order whichever reader read them."""
+    s, p, o = triple
+    return (str(s), str(p), str(o), str(getattr(o, "datatype", None) or ""),
+            str(getattr(o, "language", None) or ""))
+
+
+def _parsed(where: str, text: str) -> Scene:
+    from rdflib import BNode, Literal, URIRef
+
     scene = Scene(where, prefixes=_prefixes(text))
     blocks = _Blocks(text, scene.prefixes)
-    triples = sorted(graph.triples((None, None, None)), key=lambda t: (str(t[0]), str(t[1]),
-                                                                         str(t[2])))
+    triples = sorted(_triples(where, text), key=_order)
     schema = {str(s) for s, p, o in triples if str(p) == RDF_TYPE
               and str(o).startswith(SCHEMA) and str(o) not in NOT_CLASSES}
     with _quiet_rdflib():  # a value that does not fit its datatype is a finding

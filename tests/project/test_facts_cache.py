@@ -19,7 +19,7 @@ from ezmigrate.lint.diagnostic import Diagnostic
 from ezmigrate.project import check as check_module
 from ezmigrate.project import facts_cache, reading_pool
 from ezmigrate.project.check import run_check
-from ezmigrate.project.facts_cache import PACK, FactsCache
+from ezmigrate.project.facts_cache import KEY_DIR, PACK, FactsCache
 from ezmigrate.project.load_cache import FOLDER
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.index import bundled_ontology_path
@@ -79,7 +79,7 @@ skiros:Location-1 a skiros:Location, owl:NamedIndividual .
 def own_key(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     """This test's user cache folder, where the signing key is made."""
     home = tmp_path / "user-cache"
-    monkeypatch.setenv("XDG_CACHE_HOME", str(home))
+    monkeypatch.setenv(KEY_DIR, str(home))
     return home
 
 
@@ -186,11 +186,11 @@ def test_a_pack_signed_with_another_key_is_never_unpickled(repo: Path, own_key: 
     assert pack.exists()
     marker = tmp_path / "unpickled.marker"
     hostile = pickle.dumps(_Hostile(str(marker)))
-    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "somebody-else"))
+    monkeypatch.setenv(KEY_DIR, str(tmp_path / "somebody-else"))
     stranger = FactsCache.open(repo / FOLDER)
     assert stranger is not None
     pack.write_bytes(stranger._sign(hostile) + hostile)  # a valid pack, for their key
-    monkeypatch.setenv("XDG_CACHE_HOME", str(own_key))
+    monkeypatch.setenv(KEY_DIR, str(own_key))
     mine = FactsCache.open(repo / FOLDER)
     assert mine is not None and not marker.exists()
     assert mine.get(FactsCache.key("anything")) is None
@@ -209,8 +209,21 @@ def test_without_a_key_there_is_no_cache_and_the_same_findings(
         repo: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     blocked = tmp_path / "not-a-folder"
     blocked.write_text("a file where the cache folder would be", encoding="utf-8")
-    monkeypatch.setenv("XDG_CACHE_HOME", str(blocked))
+    monkeypatch.setenv(KEY_DIR, str(blocked))
     assert facts_cache._user_key() is None
     assert FactsCache.open(repo / FOLDER) is None
     assert _run(repo, cached=True) == _run(repo, cached=False)
     assert not (repo / FOLDER / PACK).exists()
+
+
+def test_the_key_lives_in_the_users_cache_folder_unless_a_folder_is_named(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv(KEY_DIR, raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    made = facts_cache._user_key()
+    assert made is not None
+    assert (tmp_path / "xdg" / "ezmigrate" / "key").read_text(encoding="ascii") == made.hex()
+    monkeypatch.setenv(KEY_DIR, str(tmp_path / "named"))
+    other = facts_cache._user_key()
+    assert other is not None and other != made
+    assert (tmp_path / "named" / "key").read_text(encoding="ascii") == other.hex()

@@ -5,8 +5,9 @@ from __future__ import annotations
 
 import shutil
 import subprocess
-import sys
 from pathlib import Path
+
+from cache_support import check_json
 
 from ezmigrate.project.load_cache import FOLDER, LoadCache, cached_loads
 from ezmigrate.verify.protocol import LoadJob, LoadOutcome
@@ -14,12 +15,6 @@ from ezmigrate.verify.protocol import LoadJob, LoadOutcome
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
 LOADS = "[0-9a-f][0-9a-f]/*.json"
 """The loads' entries (whole runs are kept apart, in ``outcomes/``: test_outcome_cache)."""
-
-
-def _check(repo: Path, *extra: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero",
-                           "--output-format", "json", *extra, "."], cwd=repo,
-                          capture_output=True, text=True, timeout=600, check=False)
 
 
 def _repo(tmp_path: Path) -> Path:
@@ -33,28 +28,28 @@ def _repo(tmp_path: Path) -> Path:
 
 def test_the_second_run_reads_the_cache_and_finds_the_same(tmp_path: Path) -> None:
     repo = _repo(tmp_path)
-    first = _check(repo)
+    first = check_json(repo)
     assert first.returncode == 0, first.stderr
     entries = sorted((repo / FOLDER).glob(LOADS))
     assert len(entries) == 3  # one loaded outcome per EzSkiROS file
     assert (repo / FOLDER / ".gitignore").read_text().splitlines()[-1] == "*"
     stamps = [entry.stat().st_mtime_ns for entry in entries]
-    second = _check(repo)
+    second = check_json(repo)
     assert second.stdout == first.stdout
     assert [entry.stat().st_mtime_ns for entry in entries] == stamps  # nothing rewritten
-    uncached = _check(repo, "--no-cache")
+    uncached = check_json(repo, "--no-cache")
     assert uncached.stdout == first.stdout
 
 
 def test_a_changed_file_misses_and_a_damaged_entry_is_a_miss(tmp_path: Path) -> None:
     repo = _repo(tmp_path)
-    first = _check(repo)
+    first = check_json(repo)
     for entry in (repo / FOLDER).glob(LOADS):
         entry.write_text("{not json")
-    assert _check(repo).stdout == first.stdout
+    assert check_json(repo).stdout == first.stdout
     before = len(list((repo / FOLDER).glob(LOADS)))
     (repo / "unrelated.py").write_text("X = 1\n")  # nothing imports it: nothing misses
-    assert _check(repo).stdout == first.stdout
+    assert check_json(repo).stdout == first.stdout
     assert len(list((repo / FOLDER).glob(LOADS))) == before
 
 
@@ -67,11 +62,11 @@ def test_a_changed_module_misses_for_the_files_importing_it_alone(tmp_path: Path
     (repo / "lab" / "units.py").write_text("SCALE = 1.0\n")
     descriptions = repo / "descriptions.py"
     descriptions.write_text("import lab\n" + descriptions.read_text())
-    first = _check(repo)
+    first = check_json(repo)
     assert first.returncode == 0, first.stderr
     before = len(list((repo / FOLDER).glob(LOADS)))
     (repo / "lab" / "units.py").write_text("SCALE = 2.0\n")
-    assert _check(repo).stdout == first.stdout
+    assert check_json(repo).stdout == first.stdout
     assert len(list((repo / FOLDER).glob(LOADS))) == before + 1  # descriptions.py alone
 
 

@@ -12,6 +12,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+from cache_support import check_json
+
 from ezmigrate.project.load_cache import FOLDER
 from ezmigrate.project.outcome_cache import OUTCOMES
 
@@ -48,12 +50,6 @@ skiros:Location-1 a skiros:Location, owl:NamedIndividual{extra} .
 """
 
 
-def _check(repo: Path, *extra: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero",
-                           "--output-format", "json", *extra, "."], cwd=repo,
-                          capture_output=True, text=True, timeout=600, check=False)
-
-
 def _repo(tmp_path: Path) -> Path:
     repo = tmp_path / "repo"
     (repo / "pkg").mkdir(parents=True)
@@ -66,32 +62,32 @@ def _repo(tmp_path: Path) -> Path:
 def test_an_unchanged_repository_is_answered_from_the_kept_run(tmp_path: Path) -> None:
     repo = _repo(tmp_path)
     marker = repo / "pkg" / "traced.marker"
-    first = _check(repo)
+    first = check_json(repo)
     assert first.returncode == 0, first.stderr
     assert "EZ307" in first.stdout and marker.exists()  # the tree was traced
     assert len(list((repo / FOLDER / OUTCOMES).glob("*.json"))) == 1
     marker.unlink()
-    second = _check(repo)
+    second = check_json(repo)
     assert (second.stdout, second.stderr) == (first.stdout, first.stderr)
     assert not marker.exists()  # nothing was traced again
-    uncached = _check(repo, "--no-cache")
+    uncached = check_json(repo, "--no-cache")
     assert uncached.stdout == first.stdout and marker.exists()
 
 
 def test_what_the_run_reads_is_the_key(tmp_path: Path) -> None:
     repo = _repo(tmp_path)
-    first = _check(repo)
+    first = check_json(repo)
     (repo / "scene.turtle").write_text(SCENE.format(extra=" ;\n    skiros:hasA skiros:Gone-9"),
                                        encoding="utf-8")
-    changed = _check(repo)
+    changed = check_json(repo)
     assert "EZ404" in changed.stdout and "EZ404" not in first.stdout
     (repo / "pkg" / "tour.py").write_text(TRACED.replace('"Time"', '"Duration"'),
                                           encoding="utf-8")
-    fixed = _check(repo)
+    fixed = check_json(repo)
     assert "EZ307" not in fixed.stdout
     for entry in (repo / FOLDER / OUTCOMES).glob("*.json"):
         entry.write_text("{not json")  # a damaged entry is a miss, and the run is redone
-    assert _check(repo).stdout == fixed.stdout
+    assert check_json(repo).stdout == fixed.stdout
 
 
 def test_a_run_over_named_files_is_not_kept(tmp_path: Path) -> None:

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 from bench_generator import generator
 
-from ezmigrate.project import reading_pool
+from ezmigrate.project import reading_pool, runner
 from ezmigrate.project.check import run_check
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.index import bundled_ontology_path
@@ -64,6 +64,29 @@ def test_the_workers_find_what_one_process_finds(tree: Path,
     assert shared == alone
     assert in_main == []  # every scene was parsed in a worker
     assert len(alone) > 10
+
+
+def test_a_declined_file_is_migrated_once_in_the_turn_it_is_read(
+        tree: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The codemod reads each file the plain reader declines where the file is read (in a
+    worker, or the main process's share), and ``settle`` takes that reading instead of
+    migrating the file again. Every process notes each migration in one log, appended to,
+    so the workers' notes are seen too."""
+    log = tmp_path / "migrated.log"
+    real = runner.migrate_file
+
+    def noted(relative: str, data: bytes, *args: object, **kwargs: object) -> object:
+        with log.open("a", encoding="utf-8") as stream:
+            stream.write(relative + "\n")
+        return real(relative, data, *args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(runner, "migrate_file", noted)
+    shared = _findings(tree, 2)
+    names = log.read_text(encoding="utf-8").splitlines()
+    assert len(names) >= 5 and len(names) == len(set(names))
+    log.unlink()
+    assert _findings(tree, 1) == shared
+    assert sorted(log.read_text(encoding="utf-8").splitlines()) == sorted(names)
 
 
 def test_too_few_files_are_read_in_the_main_process(tmp_path: Path) -> None:

@@ -1,0 +1,189 @@
+"""The triples of a Turtle file written in the plain form SkiROS2's world model saves
+scenes in, read without rdflib's parser; ``None`` for anything else, which rdflib reads.
+
+rdflib's Turtle parser is written in Python, character by character: a run over a lab's
+37 scenes spends more time in it than in everything else it does with them. A saved scene
+uses a small part of Turtle: ``@prefix`` lines, then statements ``subject predicate
+object`` with ``;`` and ``,`` lists, whose terms are absolute IRIs, prefixed names,
+``a``, simple quoted strings (with a language tag or a datatype), integers and booleans.
+
+The subset is accepted only when it is certain to mean what rdflib reads: each term is
+built with rdflib's own constructors (``URIRef``, ``Literal``), as its parser builds them,
+and anything outside the subset (blank nodes, collections, escapes, long strings,
+decimals and doubles, ``@base`` and relative IRIs, a name that continues past where the
+subset stops reading it, an unknown prefix, any syntax error) gives ``None`` and the
+file goes to rdflib, which reads it or says where it is wrong. A test holds the two
+readings equal on every scene this project has, under each robot's rdflib.
+
+Runs on the robot's Python 3.8 with rdflib 4.2.2 as well as on rdflib 7.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Tuple
+
+XSD = "http://www.w3.org/2001/XMLSchema#"
+RDF_TYPE = "http://www.w3.org/1999/02/22-rdf-syntax-ns#type"
+
+_TOKEN = re.compile(r"""
+  (?P<space>(?:[ \t\r\n]|\#[^\r\n]*)+)
+| (?P<iri><[A-Za-z][A-Za-z0-9+.-]*:[^<>"{}|^`\\\x00-\x20\x7f-\U0010ffff]*>)
+| (?P<string>"[^"\\\r\n]*")
+| (?P<at>@[A-Za-z]+(?:-[A-Za-z0-9]+)*)
+| (?P<hats>\^\^)
+| (?P<name>(?:[A-Za-z][A-Za-z0-9_-]*)?:(?:[A-Za-z_][A-Za-z0-9_-]*)?)
+| (?P<number>-?(?:0|[1-9][0-9]*))
+| (?P<word>a|true|false)
+| (?P<punct>[.;,])
+""", re.VERBOSE)
+"""One token of the subset. A prefixed name's local part has no ``.``, ``:``, escape or
+leading digit; numbers are integers without a sign ``+`` or leading zeros."""
+
+_ENDS = frozenset(" \t\r\n,;")
+"""What may follow a name, a number or a keyword for the subset to have read all of it
+(a ``.`` too, when followed by one of these or the end of the file, except after a name
+with an empty local part)."""
+
+Token = Tuple[str, str]
+Term = object
+Triple = Tuple[Term, Term, Term]
+
+
+def _tokens(text: str) -> list[Token] | None:
+    """The file's tokens without spaces and comments, or None when some text is outside
+    the subset or a term runs on past what the subset reads of it."""
+    found: list[Token] = []
+    position, end = 0, len(text)
+    spaced = False
+    for match in _TOKEN.finditer(text):
+        if match.start() != position:
+            return None
+        kind = match.lastgroup or ""
+        position = match.end()
+        if spaced and found and ((kind in ("at", "hats") and found[-1][0] == "string")
+                                 or found[-1][0] == "hats"):
+            return None  # a literal's tag or datatype is read only when written against it
+        spaced = kind == "space"
+        if spaced:
+            continue
+        value = match.group()
+        if kind in ("name", "number", "word") and position < end:
+            after = text[position]
+            if after not in _ENDS and not (
+                    after == "." and (position + 1 == end or text[position + 1] in _ENDS)
+                    and not (kind == "name" and value.endswith(":"))):
+                return None  # rdflib 4.2.2 reads ``ex:.`` as one name, and refuses it
+        found.append((kind, value))
+    if position != end:
+        return None
+    return found
+
+
+def read_triples(text: str) -> set[Triple] | None:
+    """The set of triples rdflib would read from ``text`` (as ``URIRef`` and ``Literal``),
+    or None when ``text`` is not in the subset (see the module doc)."""
+    tokens = _tokens(text)
+    if tokens is None:
+        return None
+    from rdflib import Literal, URIRef
+
+    prefixes: dict[str, str] = {}
+    triples: set[Triple] = set()
+    iris: dict[str, object] = {}  # one term per text: a scene repeats few of them often
+    literals: dict[tuple[str, str, str], object] = {}
+
+    def uri(iri: str) -> object:
+        node = iris.get(iri)
+        if node is None:
+            node = iris[iri] = URIRef(iri)
+        return node
+
+    def literal(lexical: str, lang: str = "", datatype: str = "") -> object:
+        key = (lexical, lang, datatype)
+        node = literals.get(key)
+        if node is None:
+            node = literals[key] = Literal(lexical, lang=lang or None,
+                                           datatype=URIRef(datatype) if datatype else None)
+        return node
+    count = len(tokens)
+    i = 0
+
+    def at(index: int) -> Token:
+        return tokens[index] if index < count else ("", "")
+
+    def resource(token: Token) -> str | None:
+        kind, value = token
+        if kind == "iri":
+            return value[1:-1]
+        if kind == "name":
+            prefix, _, local = value.partition(":")
+            namespace = prefixes.get(prefix)
+            return None if namespace is None else namespace + local
+        return None
+
+    while i < count:
+        kind, value = tokens[i]
+        if kind == "at":
+            if value != "@prefix" or at(i + 1)[0] != "name" or not at(i + 1)[1].endswith(":") \
+                    or at(i + 2)[0] != "iri" or at(i + 3) != ("punct", "."):
+                return None
+            prefixes[at(i + 1)[1][:-1]] = at(i + 2)[1][1:-1]
+            i += 4
+            continue
+        subject = resource(tokens[i])
+        if subject is None:
+            return None
+        i += 1
+        while True:  # predicate object (, object)* (; predicate ...)* .
+            if at(i) == ("word", "a"):
+                predicate: str | None = RDF_TYPE
+            else:
+                predicate = resource(at(i))
+            if predicate is None:
+                return None
+            i += 1
+            while True:
+                kind, value = at(i)
+                node: object
+                if kind in ("iri", "name"):
+                    iri = resource(at(i))
+                    if iri is None:
+                        return None
+                    node = uri(iri)
+                    i += 1
+                elif kind == "string":
+                    lexical = value[1:-1]
+                    following = at(i + 1)
+                    if following[0] == "at":
+                        node = literal(lexical, lang=following[1][1:])
+                        i += 2
+                    elif following[0] == "hats":
+                        datatype = resource(at(i + 2))
+                        if datatype is None:
+                            return None
+                        node = literal(lexical, datatype=datatype)
+                        i += 3
+                    else:
+                        node = literal(lexical)
+                        i += 1
+                elif kind == "number":
+                    node = literal(value, datatype=XSD + "integer")
+                    i += 1
+                elif kind == "word" and value in ("true", "false"):
+                    node = literal(value, datatype=XSD + "boolean")
+                    i += 1
+                else:
+                    return None
+                triples.add((uri(subject), uri(predicate), node))
+                if at(i) != ("punct", ","):
+                    break
+                i += 1
+            if at(i) == ("punct", ";"):
+                i += 1
+                continue
+            if at(i) == ("punct", "."):
+                i += 1
+                break
+            return None
+    return triples
