@@ -23,7 +23,7 @@ from ezskiros_runtime.compare import compare
 from ezskiros_runtime.model import SkillModel
 
 from ..report.findings import skill_findings
-from ..report.results import FileResult, ReviewFinding, SkillResult
+from ..report.results import ClassLines, FileResult, ReviewFinding, SkillResult, source_digest
 from .core.classes import DescriptionClass, description_classes, inert_classes
 from .core.context import ExtractContext, StatementLines, module_constants, positions_of
 from .core.cst_facts import facts_of
@@ -50,6 +50,7 @@ from .core.ir import (
     Unsupported,
 )
 from .core.legacy_names import LegacyNames, dotted_name, is_legacy_module
+from .core.python2 import comma_handler
 from .core.reader import (
     class_bindings,
     find_create_description,
@@ -106,8 +107,10 @@ def guarded_readings(source: bytes | str, settings: Settings,
         result = _migrate_text(text, origin, settings, path, facts, holes)
         if result is not None:
             if isinstance(source, bytes) and isinstance(result.new_source, str):
-                result = replace(result, new_source=result.new_source.encode(
-                    encoding_of(source)))
+                encoded = result.new_source.encode(encoding_of(source))
+                result = replace(result, new_source=encoded, new_classes=None
+                                 if result.new_classes is None else replace(
+                                     result.new_classes, digest=source_digest(encoded)))
             yield result, lost_line(source, result, tree)
 
 
@@ -226,7 +229,7 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
             return None
         code = _like(source, raw)
     try:  # the parser that read the original reads the result
-        ast.parse(code) if facts.python_parses else cst.parse_module(code)
+        checked = ast.parse(code) if facts.python_parses else cst.parse_module(code)
     except (SyntaxError, ValueError, cst.ParserSyntaxError) as error:  # a bug of ours
         message = f"internal error: migrated code does not parse ({error})"
         return replace(found, error=message, skills=[
@@ -234,7 +237,10 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
             for s in found.skills])
     if isinstance(source, bytes) and isinstance(code, str):
         code = code.encode(new_module.encoding)
-    return replace(found, new_source=code)
+    classes = ClassLines(source_digest(code) if isinstance(code, bytes) else None, {
+        node.name: node.lineno for node in checked.body if isinstance(node, ast.ClassDef)}) \
+        if isinstance(checked, ast.Module) else None
+    return replace(found, new_source=code, new_classes=classes)
 
 
 def _syntax_facts(module: cst.Module, source: bytes | str) -> SyntaxFacts | FileResult:
@@ -606,6 +612,12 @@ def _python2_except(module: cst.Module, source: bytes | str) -> tuple[int, int] 
     raw = _raw(source)
     if not _EXCEPT_COMMA.search(raw) or _python_parses(raw):
         return None  # the common case: ``except (A, B):``, which Python itself accepts
+    by_tokens = comma_handler(raw)
+    return by_tokens if by_tokens is not None else _python2_except_in_tree(module)
+
+
+def _python2_except_in_tree(module: cst.Module) -> tuple[int, int] | None:
+    """``_python2_except`` by libcst's tree and its position pass."""
     found: list[cst.ExceptHandler] = []
 
     class _Handlers(cst.CSTVisitor):

@@ -10,6 +10,7 @@ makes a new result with ``dataclasses.replace`` and puts it in the old one's pla
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import asdict, dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
@@ -63,6 +64,21 @@ class SkillResult:
         return code_for(self.status) if self.status in ("skipped", "failed") else None
 
 
+def source_digest(data: bytes) -> str:
+    """The SHA-1 a map of a new source's lines names it by (a checksum, not a secret)."""
+    return hashlib.sha1(data).hexdigest()
+
+
+@dataclass(frozen=True)
+class ClassLines:
+    """Each top-level class of one new source and the line of its ``class`` statement, as
+    the parse that checked the migrated code read them (``digest``: the source's
+    ``source_digest``, None while it is text: a changed source never meets them)."""
+
+    digest: str | None
+    classes: dict[str, int]
+
+
 @dataclass(frozen=True)
 class WrittenLines:
     """Legacy line -> written line, and each top-level class's line, of one new source
@@ -98,6 +114,9 @@ class FileResult:
     written: WrittenLines | None = None
     """Where the lines of ``new_source`` came from, worked out where it was made
     (``written_lines``): valid only for the new source whose digest it names."""
+    new_classes: ClassLines | None = None
+    """The top-level classes of ``new_source`` as the migration's own check parsed it
+    (``written_lines`` takes them instead of parsing it again)."""
     refusals: dict[str, list[str]] | None = None
     """Skill -> the runtime's early-check refusals of it, worked out in the worker that
     made this result (``static_refusal.with_refusals``); None: not worked out. A result

@@ -18,12 +18,11 @@ from __future__ import annotations
 
 import ast
 import difflib
-import hashlib
 import re
 from dataclasses import replace
 
 from .diffs import decode, diff_body
-from .results import FileResult, ReviewFinding, WrittenLines
+from .results import ClassLines, FileResult, ReviewFinding, WrittenLines, source_digest
 
 _KEY = re.compile(r"""\.addParam\(\s*(?:key\s*=\s*)?(["'])(\w+)\1""")
 _CONDITION_CALL = re.compile(r"\.add(?:Pre|Post|Hold)?Condition\(")
@@ -78,7 +77,7 @@ def with_written_lines(result: FileResult, original: bytes, diff: bool = False
     after the other."""
     if not result.changed or not isinstance(result.new_source, bytes):
         return result
-    written = _written(original, result.new_source)
+    written = _written(original, result.new_source, result.new_classes)
     if diff:
         written = replace(written, diff=diff_body(original, result.new_source))
     return replace(result, written=written)
@@ -88,19 +87,19 @@ def written_diff(result: FileResult) -> str | None:
     """The hunks made for ``result``'s new source where it was migrated, if any."""
     written = result.written
     if written is None or written.diff is None or not isinstance(result.new_source, bytes) \
-            or written.digest != _digest(result.new_source):
+            or written.digest != source_digest(result.new_source):
         return None
     return written.diff
 
 
-def _written(original: bytes, new_source: bytes) -> WrittenLines:
+def _written(original: bytes, new_source: bytes, known: ClassLines | None) -> WrittenLines:
+    """The map of ``new_source``'s lines; its classes are those the migration's check
+    parsed (``known``) when they are of this very source."""
     after = decode(new_source)
-    return WrittenLines(_digest(new_source), line_map(decode(original), after),
-                        _class_lines(after))
-
-
-def _digest(data: bytes) -> str:
-    return hashlib.sha1(data).hexdigest()  # a checksum of the source, not a secret
+    digest = source_digest(new_source)
+    classes = known.classes if known is not None and known.digest == digest \
+        else _class_lines(after)
+    return WrittenLines(digest, line_map(decode(original), after), classes)
 
 
 def as_written(result: FileResult, original: bytes) -> FileResult:
@@ -109,8 +108,8 @@ def as_written(result: FileResult, original: bytes) -> FileResult:
     if not result.changed or not isinstance(result.new_source, bytes):
         return result
     written = result.written
-    if written is None or written.digest != _digest(result.new_source):
-        written = _written(original, result.new_source)
+    if written is None or written.digest != source_digest(result.new_source):
+        written = _written(original, result.new_source, result.new_classes)
     mapped, classes = written.lines, written.classes
     skills = []
     for skill in result.skills:

@@ -73,3 +73,37 @@ def test_a_diff_is_its_two_file_lines_and_its_hunks() -> None:
             line if line.endswith("\n") else line + "\n\\ No newline at end of file\n"
             for line in difflib.unified_diff(old, new, fromfile="a/p.py", tofile="b/p.py"))
         assert unified_diff("p.py", before, after) == expected
+
+
+def test_the_classes_are_those_the_migrations_own_check_parsed(monkeypatch) -> None:
+    """The written file's classes come from the parse that checked the migrated code
+    (``FileResult.new_classes``), not from a second parse; they are the classes a fresh
+    parse finds, on every legacy fixture; for another source they are not used."""
+    from ezmigrate.report import written_lines
+
+    compared = 0
+    for path in sorted((FIXTURES / "legacy").glob("*.py")):
+        original = path.read_bytes()
+        result = migrate(original, Settings(), path.name)
+        if not result.changed:
+            continue
+        assert isinstance(result.new_source, bytes) and result.new_classes is not None
+        fresh = written_lines._class_lines(decode(result.new_source))
+        assert result.new_classes.classes == fresh and fresh
+        compared += 1
+    assert compared >= 5
+
+    parsed: list[str] = []
+    real = written_lines._class_lines
+
+    def counted(after: str) -> dict[str, int]:
+        parsed.append(after)
+        return real(after)
+
+    monkeypatch.setattr(written_lines, "_class_lines", counted)
+    result = migrate(SOURCE, Settings(), "pick_and_place.py")
+    assert with_written_lines(result, SOURCE).written is not None and parsed == []
+    assert isinstance(result.new_source, bytes)
+    shifted = replace(result, new_source=b"# one more line\n" + result.new_source)
+    with_written_lines(shifted, SOURCE)
+    assert len(parsed) == 1  # made for another source: parsed again
