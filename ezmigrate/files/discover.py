@@ -22,14 +22,19 @@ import os
 import re
 import subprocess
 from collections.abc import Callable, Iterable, Iterator, Sequence
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TypeVar
 
 from ezskiros_runtime.ontology.discovery import enclosing_project
 from ezskiros_runtime.ontology.vendored import VendoredRule, upstream_package
 
 from .paths import shown
 from .writing import is_temporary_name
+
+_T = TypeVar("_T")
+_R = TypeVar("_R")
 
 ROS_IGNORE_MARKERS = ("CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE")
 """Files whose presence keeps a folder out of the ROS build (catkin, colcon, ament): what
@@ -56,7 +61,11 @@ class Candidate:
 
 
 def excluded_under(base: Path, patterns: Sequence[str]) -> Callable[[Path], bool]:
-    """Whether a path is excluded, matched relative to ``base`` (the project's folder)."""
+    """Whether a path is excluded, matched relative to ``base`` (the project's folder).
+    Without patterns nothing is, and no path is resolved to say so."""
+    if not patterns:
+        return lambda _path: False
+
     def skip(path: Path) -> bool:
         try:
             relative = path.resolve().relative_to(base.resolve()).as_posix()
@@ -271,25 +280,41 @@ def _git_ignored(files: list[str]) -> set[str]:
         by_folder.setdefault(os.path.dirname(file), []).append(file)
     exact = any(name in os.environ for name in _GIT_DISCOVERY_ENV)
     keys: dict[str, str] = {}
-    top_of: dict[str, str | None] = {}
+    key_of = {folder: folder if exact else _checkout_key(folder, keys) for folder in by_folder}
+    asked = {key: folder for folder, key in reversed(key_of.items())}  # a folder per key
+    tops = dict(zip(asked, _each(_git_top, list(asked.values())), strict=True))
     groups: dict[str, list[str]] = {}
     for folder, group in by_folder.items():
-        key = folder if exact else _checkout_key(folder, keys)
-        if key not in top_of:
-            top_of[key] = _git_top(folder)
-        top = top_of[key]
+        top = tops[key_of[folder]]
         if top is not None:
             groups.setdefault(top, []).extend(group)
     ignored: set[str] = set()
-    for top, group in groups.items():
-        try:
-            proc = subprocess.run(["git", "-C", top, "check-ignore", "--stdin", "-z"],
-                                  input=b"\0".join(os.fsencode(p) for p in group),
-                                  capture_output=True, timeout=60, check=False)
-        except (OSError, subprocess.TimeoutExpired):
-            continue
-        ignored |= {os.path.realpath(os.fsdecode(p)) for p in proc.stdout.split(b"\0") if p}
+    for found in _each(_check_ignore, list(groups.items())):
+        ignored |= found
     return ignored
+
+
+def _each(ask: Callable[[_T], _R], items: list[_T]) -> list[_R]:
+    """``ask`` of each item, in order: at once in threads when there are several (a
+    folder of many checkouts asks git once per checkout, and each answer is a process's
+    start-up, mostly waited for). The threads are gone when this returns, before any
+    worker is forked."""
+    if len(items) <= 1:
+        return [ask(item) for item in items]
+    with ThreadPoolExecutor(max_workers=min(8, len(items))) as threads:
+        return list(threads.map(ask, items))
+
+
+def _check_ignore(checkout: tuple[str, list[str]]) -> set[str]:
+    """The real paths among a checkout's files that git ignores."""
+    top, group = checkout
+    try:
+        proc = subprocess.run(["git", "-C", top, "check-ignore", "--stdin", "-z"],
+                              input=b"\0".join(os.fsencode(p) for p in group),
+                              capture_output=True, timeout=60, check=False)
+    except (OSError, subprocess.TimeoutExpired):
+        return set()
+    return {os.path.realpath(os.fsdecode(p)) for p in proc.stdout.split(b"\0") if p}
 
 
 def _checkout_key(folder: str, memo: dict[str, str]) -> str:
