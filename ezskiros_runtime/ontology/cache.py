@@ -20,10 +20,11 @@ from __future__ import annotations
 import contextlib
 import os
 import sys
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, BinaryIO
 
+from .errors import OntologyLoadError
 from .index import OntologyIndex
 
 if TYPE_CHECKING:
@@ -202,12 +203,85 @@ def write_cached_index(directory: Path, index: OntologyIndex) -> Path | None:
     return target
 
 
-def _prune(directory: Path, keep: Path) -> None:
-    """Delete all but the `KEEP_INDEXES` most recently used indexes (never `keep`)."""
+def refusal_path(directory: Path, fingerprint: str, sources: Sequence[str]) -> Path:
+    """Where the refusal of these files, at these paths, is (or would be) remembered.
+
+    Unlike an index, a refusal names a file: the paths count, and so does the rdflib that
+    refused (its module file's place, size and time: another rdflib may word it apart, or
+    read the file)."""
+    digest = _sha256_factory()()
+    for part in (fingerprint, *sources, _rdflib_stamp()):
+        digest.update(part.encode("utf-8", "surrogateescape") + b"\0")
+    return directory / f"ontology-refusal-{digest.hexdigest()}.json"
+
+
+def _rdflib_stamp() -> str:
+    """Which rdflib is installed, without importing it (that is what a hit saves)."""
+    from importlib.util import find_spec
+
+    try:
+        spec = find_spec("rdflib")
+        origin = spec.origin if spec is not None else None
+        state = os.stat(origin) if origin else None
+    except (ImportError, ValueError, OSError):
+        return "?"
+    return f"{origin}:{state.st_size}:{state.st_mtime_ns}" if state else "?"
+
+
+def read_cached_refusal(directory: Path, fingerprint: str, sources: Sequence[str]
+                        ) -> OntologyLoadError | None:
+    """The error an earlier load of these very files raised, or None."""
+    import json
+
+    path = refusal_path(directory, fingerprint, sources)
+    try:
+        kept = json.loads(path.read_text(encoding="utf-8"))
+        error = OntologyLoadError(str(kept["message"]), path=kept["path"], line=kept["line"])
+    except FileNotFoundError:
+        return None
+    except Exception as error:  # corrupt or foreign: load the files again
+        _ignored("cannot read ontology refusal %s: %s", path, error)
+        return None
+    stats.hits += 1
+    with contextlib.suppress(OSError):
+        os.utime(path)
+    return error
+
+
+def write_cached_refusal(directory: Path, fingerprint: str, sources: Sequence[str],
+                         error: OntologyLoadError) -> None:
+    """Remember that these files were refused, and why (atomically, as an index)."""
+    import json
+    import tempfile
+
+    target = refusal_path(directory, fingerprint, sources)
+    temporary: str | None = None
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+        handle, temporary = tempfile.mkstemp(dir=directory, prefix=".ontology-refusal-",
+                                             suffix=".tmp")
+        with os.fdopen(handle, "w", encoding="utf-8") as stream:
+            json.dump({"message": str(error), "path": error.path, "line": error.line}, stream)
+        os.replace(temporary, target)
+        temporary = None
+    except Exception as problem:  # unwritable: the next load parses again
+        _ignored("cannot write ontology refusal %s: %s", target, problem)
+        return
+    finally:
+        if temporary is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(temporary)
+    stats.writes += 1
+    _prune(directory, keep=target, pattern="ontology-refusal-*.json")
+
+
+def _prune(directory: Path, keep: Path, pattern: str = "ontology-index-*.pickle") -> None:
+    """Delete all but the `KEEP_INDEXES` most recently used entries of ``pattern`` (never
+    `keep`)."""
     try:
         found = [
             (entry.stat().st_mtime, entry)
-            for entry in directory.glob("ontology-index-*.pickle")
+            for entry in directory.glob(pattern)
             if entry != keep
         ]
     except OSError as error:

@@ -36,12 +36,22 @@ def load_index(
     The file contents are hashed first; when the persistent cache holds an index for that
     hash it is returned without importing rdflib (the fast path every launch after the
     first takes). Otherwise the files are parsed with rdflib, indexed, and the result is
-    cached. Raises `OntologyLoadError` naming the file that is missing or does not parse.
+    cached. Raises `OntologyLoadError` naming the file that is missing or does not parse;
+    a parse error is remembered too, so that a repository with a broken file among its
+    ontologies (an empty `lth.owl`, which discovery then leaves out) does not import
+    rdflib and parse on every run to hear it again.
     """
     # Imported here, not at module level: the index module stays cheap to import for code
     # that only handles indexes, and `from .x import y` avoids the package's __getattr__.
-    from .cache import default_cache_dir, read_cached_index, write_cached_index
+    from .cache import (
+        default_cache_dir,
+        read_cached_index,
+        read_cached_refusal,
+        write_cached_index,
+        write_cached_refusal,
+    )
     from .cache import fingerprint as content_fingerprint
+    from .errors import OntologyLoadError
     from .parsing import collect_ontology_files, read_ontology_files
 
     requested = _as_path_list(paths) or [bundled_ontology_path()]
@@ -53,9 +63,17 @@ def load_index(
         cached = read_cached_index(directory, fingerprint)
         if cached is not None:
             return cached if cached.sources == sources else cached.with_sources(sources)
+        refused = read_cached_refusal(directory, fingerprint, sources)
+        if refused is not None:  # a file that did not parse does not parse now either
+            raise refused
     from .build import build_index  # imports rdflib: only on a cache miss
 
-    index = build_index(files, fingerprint)
+    try:
+        index = build_index(files, fingerprint)
+    except OntologyLoadError as error:
+        if directory is not None:
+            write_cached_refusal(directory, fingerprint, sources, error)
+        raise
     if directory is not None:
         write_cached_index(directory, index)
     return index

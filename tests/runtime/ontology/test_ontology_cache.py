@@ -214,3 +214,50 @@ def test_old_indexes_are_pruned(ontology: Path, cache_dir: Path) -> None:
     assert index_cache.cache_path(cache_dir, index.fingerprint).name in remaining
     assert stale[0].name not in remaining  # the least recently used one went
     assert unrelated.exists()
+
+
+REFUSED = """
+import json, sys
+from ezskiros_runtime.ontology.cache import stats
+from ezskiros_runtime.ontology.errors import OntologyLoadError
+from ezskiros_runtime.ontology.load import load_index
+try:
+    load_index(sys.argv[1:])
+except OntologyLoadError as error:
+    print(json.dumps({"rdflib": "rdflib" in sys.modules, "hits": stats.hits,
+                      "message": str(error), "path": error.path, "line": error.line}))
+"""
+
+
+def test_a_refused_file_is_refused_again_without_rdflib_until_it_changes(
+    ontology: Path, cache_dir: Path
+) -> None:
+    """A repository with an empty ``lth.owl`` among its ontologies (discovery leaves it
+    out, after the load refuses it) must not import rdflib and parse on every run."""
+    broken = ontology.parent / "lth.owl"
+    broken.write_text("", encoding="utf-8")
+    env = {**os.environ, "EZSKIROS_CACHE_DIR": str(cache_dir)}
+
+    def child(*paths: Path) -> dict[str, object]:
+        result = subprocess.run([sys.executable, "-c", REFUSED, *map(str, paths)],
+                                capture_output=True, text=True, env=env, cwd=REPO,
+                                timeout=60, check=True)
+        return json.loads(result.stdout) if result.stdout.strip() else {}
+
+    cold = child(ontology.parent)
+    warm = child(ontology.parent)
+    assert cold["rdflib"] is True and cold["hits"] == 0
+    assert warm["rdflib"] is False and warm["hits"] == 1
+    assert {k: warm[k] for k in ("message", "path", "line")} == \
+        {k: cold[k] for k in ("message", "path", "line")}
+    assert str(broken) in str(cold["path"])
+
+    moved = ontology.parent.parent / "moved"
+    ontology.parent.rename(moved)  # the same bytes elsewhere: the error names the new place
+    there = child(moved)
+    assert there["rdflib"] is True and str(moved / "lth.owl") in str(there["path"])
+
+    (moved / "lth.owl").unlink()  # fixed: it loads
+    fixed = subprocess.run([sys.executable, "-c", CHILD, str(moved)], capture_output=True,
+                           text=True, env=env, cwd=REPO, timeout=60, check=True)
+    assert json.loads(fixed.stdout)["classes"] == 5

@@ -122,7 +122,8 @@ def test_what_lies_outside_the_subset_is_left_to_rdflib(body: str):
 SUBJECTS = (["ex:s", "ex:o", "ex:Door-10", "ex:_x", ":x", "ex:", "<http://example.org/i>"],
             ["ex:a.b", "ex:a:b", "ex:1a", "<rel>", "nope:o", "_:b", "a", '"v"'])
 PREDICATES = (["a", "ex:p", "ex:q", "<http://example.org/p>"], ["true", "ex:p.x", "ex:p;"])
-OBJECTS = ([*SUBJECTS[0], "true", "false", "0", "-3", "12", '"v"', '"v"@en', '"v"^^xsd:int',
+OBJECTS = ([*SUBJECTS[0], "true", "false", "0", "-0", "-3", "12", '"v"', '"v"@en', '"v"@EN',
+            '"TRUE"^^xsd:boolean', '"01"^^xsd:integer', '"v"^^xsd:int',
             '"v"^^<http://example.org/t>', '"7"^^xsd:integer', '""', '"0,35"^^xsd:float'],
            [*SUBJECTS[1], "007", "+5", "1.5", "1e3", '"v" @en', '"a\\"b"', "'v'",
             "[ ex:p ex:o ]", "( ex:o )", "ex:o#c"])
