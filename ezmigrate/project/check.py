@@ -133,6 +133,7 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     compounds = on_facts is not None
     read: list[tuple[Candidate, bytes | None]] = []
     facts: dict[Path, FileFacts] = {}
+    alone: dict[str, tuple[bytes, FileResult]] = {}  # the codemod's readings, taken already
     missing: list[tuple[Candidate, bytes, bool | None, str | None]] = []
     for candidate in candidates:
         try:
@@ -149,16 +150,18 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
         found = None if cache is None or key is None else cache.get(key)
         if isinstance(found, FileFacts):
             facts[candidate.path] = found
+            if found.settled is not None:
+                alone[str(candidate.path)] = (data, found.settled)
         else:
             missing.append((candidate, data, verdict, key))
     items: list[tuple[Candidate, bytes, bool | None]] = [(c, d, v) for c, d, v, _ in missing]
     made = reader.read_files(items, compounds) if reader is not None \
         else [(file_facts(c, d, compounds, v), None) for c, d, v in items]
-    alone: dict[str, tuple[bytes, FileResult]] = {}  # the codemod's, taken by the reader
     for (candidate, data, _, key), (found, own) in zip(missing, made, strict=True):
         facts[candidate.path] = found
-        if own is not None:
-            alone[str(candidate.path)] = (data, own)
+        taken = own if own is not None else found.settled
+        if taken is not None:
+            alone[str(candidate.path)] = (data, taken)
         if cache is not None and key is not None:
             cache.put(key, found)
     plain: list[tuple[Candidate, bytes, FileResult]] = []

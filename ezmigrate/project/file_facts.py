@@ -18,6 +18,7 @@ from ..compound.analysis import READ_WHEN, TreeFacts, tree_facts
 from ..compound.repository import Recovered, recover_classes
 from ..files.discover import Candidate
 from ..files.prefilter import marker_is_identifier
+from ..lint.ezskiros_reader import read_ezskiros
 from ..lint.plain_reader import Declined, read_plain
 from ..report.results import FileResult
 from .cross_file import RUNTIME_MARKER
@@ -37,6 +38,9 @@ class FileFacts:
     """False: the prefilter ruled the file out (``by_text``, ``marker_is_identifier``): no
     description is read in it; ``trees`` then holds what the compound pass will take of
     it, if it parses (``Trees.prepared``)."""
+    settled: FileResult | None = None
+    """For a declined EzSkiROS file, the codemod's reading when the syntax alone gives it
+    (``ezskiros_reader``): ``settle`` takes it instead of parsing the file with libcst."""
     unparsed: tuple[Recovered] | None = None
     """For a file ``ast`` cannot parse (Python 2) that the compound pass reads, what
     ``recover_classes`` makes of it (one item: it may itself be None), for the repository
@@ -70,11 +74,12 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
     tree = parse(data)
     if tree is None:
         return FileFacts(Declined(), unparsed=(recover_classes(data),) if read_when else None)
-    static = read_plain(data, candidate.relative, tree) if RUNTIME_MARKER not in data \
-        else Declined()
+    runtime = RUNTIME_MARKER in data
+    static = read_plain(data, candidate.relative, tree) if not runtime else Declined()
+    settled = read_ezskiros(tree, candidate.relative) if runtime else None
     if not compounds:
-        return FileFacts(static)
+        return FileFacts(static, settled=settled)
     trees = tree_facts(tree, str(candidate.path)) \
         if any(m in data for m in READ_WHEN) else None
     implementation = module_facts(tree, data) if b"setDescription" in data else None
-    return FileFacts(static, trees, implementation)
+    return FileFacts(static, trees, implementation, settled=settled)

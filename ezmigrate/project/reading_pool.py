@@ -70,8 +70,8 @@ def _read_files(items: list[tuple[Candidate, bytes, bool | None]], compounds: bo
     for candidate, data, verdict in items:
         facts = file_facts(candidate, data, compounds, verdict)
         alone = own_reading(candidate.relative, data, settings) \
-            if settings is not None and facts.described and isinstance(facts.static, Declined) \
-            else None
+            if settings is not None and facts.described and facts.settled is None \
+            and isinstance(facts.static, Declined) else None
         found.append((facts, alone))
     return found
 
