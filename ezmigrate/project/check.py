@@ -36,7 +36,7 @@ from ..lint.world_model import (
 )
 from ..report.once import once_per_cause
 from ..report.results import FileResult
-from ..verify.pool import PoolConfig, Standby, job_for, run_jobs
+from ..verify.pool import BATCH, PoolConfig, Standby, job_for, run_batched
 from . import holdpoint
 from .cross_file import RUNTIME_MARKER, module_name
 from .facts_cache import FactsCache, keep_scenes, seed_scenes
@@ -437,7 +437,9 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     data_of = {c.path: data for c, data in read}
     outcomes = cached_loads([job_for(c.path, None, c.root) for c in loadable],
                             [data_of[c.path] for c in loadable],
-                            lambda jobs: run_jobs(jobs, pool), cache)
+                            lambda jobs: run_batched(jobs, pool, BATCH,
+                                                     alone=lambda found: not found.loaded),
+                            cache)
     compound = _Compound()
     if trees is not None:
         compound = _compound(read, results, list(zip(loadable, outcomes, strict=True)),
