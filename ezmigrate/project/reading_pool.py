@@ -6,7 +6,9 @@ and for tracing). Parsing a file or a scene needs nothing but its path and bytes
 a picklable reading (``file_facts.FileFacts``, ``world.scene.Scene``), so both go to a
 pool forked at the start of the run, before any thread exists: the scenes are submitted
 first and parse while the main process reads the repository; the files' readings are
-split into chunks once the misses of the cache are known. A file the plain reader
+split into small chunks once the misses of the cache are known, the workers taking them
+from the start and the main process from the end until they meet (so a chunk of costly
+files slows nobody more than its share). A file the plain reader
 declines is read by the codemod in the same turn (``runner.own_reading``), while the
 other files are still being read, rather than after all of them. Results are taken in the
 order they were asked for, so a run reports the same bytes as one without the pool
@@ -138,14 +140,16 @@ class ReadingPool:
         if pool is None:
             self._start_scenes()
             return _read_files(items, compounds, settings)
-        size = max(8, len(items) // (self.workers * 4))
+        size = max(4, len(items) // (self.workers * 12))
         starts = list(range(0, len(items), size))
-        here = starts[len(starts) - len(starts) // (self.workers + 1):]  # the main's share
         futures = {start: pool.submit(_read_in_worker, items[start:start + size], compounds)
-                   for start in starts if start not in here}
+                   for start in starts}
         self._start_scenes()
-        mine = {start: _read_files(items[start:start + size], compounds, settings)
-                for start in here}
+        mine: dict[int, list[Reading]] = {}
+        for start in reversed(starts):  # the main takes chunks from the end, while no
+            if not futures[start].cancel():  # worker has started them: the share each
+                break  # does is what it gets through, whatever a chunk costs
+            mine[start] = _read_files(items[start:start + size], compounds, settings)
         found: list[Reading] = []
         for start in starts:
             if start in mine:

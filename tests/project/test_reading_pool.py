@@ -89,6 +89,28 @@ def test_a_declined_file_is_migrated_once_in_the_turn_it_is_read(
     assert sorted(log.read_text(encoding="utf-8").splitlines()) == sorted(names)
 
 
+def test_each_file_is_read_once_by_whoever_takes_its_chunk(
+        tree: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The main process takes chunks from the end of the list while no worker has started
+    them (a cancelled future is never run): each file is read exactly once, by one process,
+    and the readings come back in order (the findings are one process's)."""
+    log = tmp_path / "read.log"
+    real = reading_pool.file_facts
+
+    def noted(candidate, data, compounds, verdict=True):  # type: ignore[no-untyped-def]
+        with log.open("a", encoding="utf-8") as stream:
+            stream.write(f"{candidate.relative}\n")
+        return real(candidate, data, compounds, verdict)
+
+    monkeypatch.setattr(reading_pool, "file_facts", noted)
+    shared = _findings(tree, 2)
+    read = log.read_text(encoding="utf-8").splitlines()
+    assert len(read) >= reading_pool.SHARED_FROM and len(read) == len(set(read))
+    log.unlink()
+    assert _findings(tree, 1) == shared
+    assert sorted(log.read_text(encoding="utf-8").splitlines()) == sorted(read)
+
+
 def test_too_few_files_are_read_in_the_main_process(tmp_path: Path) -> None:
     pool = reading_pool.ReadingPool(2)
     try:
