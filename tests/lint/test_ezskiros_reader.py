@@ -11,6 +11,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from process_log import log_calls, logged
 
 from ezmigrate.codemod.migrate import Settings, migrate
 from ezmigrate.lint.ezskiros_reader import read_ezskiros
@@ -97,20 +98,13 @@ def test_check_parses_no_such_file_with_libcst(tmp_path: Path, monkeypatch) -> N
             (repo / "pkg" / path.name).write_bytes(path.read_bytes())
     subprocess.run(["git", "init", "-q", str(repo)], check=True)
     log = tmp_path / "migrated.log"
-    real = runner.migrate_file
-
-    def noted(relative: str, data: bytes, *args: object, **kwargs: object) -> object:
-        with log.open("a", encoding="utf-8") as stream:
-            stream.write(relative + "\n")
-        return real(relative, data, *args, **kwargs)  # type: ignore[arg-type]
-
-    monkeypatch.setattr(runner, "migrate_file", noted)
+    log_calls(monkeypatch, runner, "migrate_file", log, lambda relative, *_: relative)
     index = load_index()
     outcome = run_check([repo], index, PoolConfig(workers=2), trace=False)
-    assert outcome.files >= 10 and not log.exists()
+    assert outcome.files >= 10 and logged(log) == []
     monkeypatch.setattr("ezmigrate.project.file_facts.read_ezskiros", lambda *_: None)
     codemod = run_check([repo], index, PoolConfig(workers=2), trace=False)
-    assert log.exists() and codemod.diagnostics == outcome.diagnostics
+    assert len(logged(log)) >= 10 and codemod.diagnostics == outcome.diagnostics
 
 
 @pytest.mark.parametrize("text", [

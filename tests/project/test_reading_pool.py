@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 from bench_generator import generator
+from process_log import log_calls, logged
 
 from ezmigrate.project import reading_pool, runner
 from ezmigrate.project.check import run_check
@@ -73,20 +74,13 @@ def test_a_declined_file_is_migrated_once_in_the_turn_it_is_read(
     migrating the file again. Every process notes each migration in one log, appended to,
     so the workers' notes are seen too."""
     log = tmp_path / "migrated.log"
-    real = runner.migrate_file
-
-    def noted(relative: str, data: bytes, *args: object, **kwargs: object) -> object:
-        with log.open("a", encoding="utf-8") as stream:
-            stream.write(relative + "\n")
-        return real(relative, data, *args, **kwargs)  # type: ignore[arg-type]
-
-    monkeypatch.setattr(runner, "migrate_file", noted)
+    log_calls(monkeypatch, runner, "migrate_file", log, lambda relative, *_: relative)
     shared = _findings(tree, 2)
-    names = log.read_text(encoding="utf-8").splitlines()
+    names = logged(log)
     assert len(names) >= 5 and len(names) == len(set(names))
     log.unlink()
     assert _findings(tree, 1) == shared
-    assert sorted(log.read_text(encoding="utf-8").splitlines()) == sorted(names)
+    assert sorted(logged(log)) == sorted(names)
 
 
 def test_each_file_is_read_once_by_whoever_takes_its_chunk(
@@ -95,20 +89,14 @@ def test_each_file_is_read_once_by_whoever_takes_its_chunk(
     them (a cancelled future is never run): each file is read exactly once, by one process,
     and the readings come back in order (the findings are one process's)."""
     log = tmp_path / "read.log"
-    real = reading_pool.file_facts
-
-    def noted(candidate, data, compounds, verdict=True):  # type: ignore[no-untyped-def]
-        with log.open("a", encoding="utf-8") as stream:
-            stream.write(f"{candidate.relative}\n")
-        return real(candidate, data, compounds, verdict)
-
-    monkeypatch.setattr(reading_pool, "file_facts", noted)
+    log_calls(monkeypatch, reading_pool, "file_facts", log,
+              lambda candidate, *_: candidate.relative)
     shared = _findings(tree, 2)
-    read = log.read_text(encoding="utf-8").splitlines()
+    read = logged(log)
     assert len(read) >= reading_pool.SHARED_FROM and len(read) == len(set(read))
     log.unlink()
     assert _findings(tree, 1) == shared
-    assert sorted(log.read_text(encoding="utf-8").splitlines()) == sorted(read)
+    assert sorted(logged(log)) == sorted(read)
 
 
 def test_too_few_files_are_read_in_the_main_process(tmp_path: Path) -> None:
