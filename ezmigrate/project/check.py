@@ -205,7 +205,8 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     The cache keeps each reading by the ontology's fingerprint and the file's content, and
     for a file whose classes derive from imported bases, the content of every file that
     may define them: one changed file is read again with the files that depend on it.
-    ``alone``: files the reading pool already migrated alone (``runner.own_reading``).
+    ``alone``: files already read alone as the codemod reads them, by the reading pool
+    (``runner.own_reading``) or from their syntax (``ezskiros_reader``).
     """
     fingerprint = index.fingerprint if index is not None else ""
     everyone = {str(c.path): d for c, d in declined if d is not None}
