@@ -84,7 +84,8 @@ def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds
 
 
 class ReadingPool:
-    """Forked readers for one run (``workers`` of them; fewer than two: none). ``settings``:
+    """Forked readers for one run: ``workers`` processes read, the main one among them
+    (so one fewer is forked; ``workers`` under two: none, the main reads alone). ``settings``:
     what the codemod reads declined files with (None: they are left to ``settle``)."""
 
     def __init__(self, workers: int, settings: Settings | None = None) -> None:
@@ -98,7 +99,7 @@ class ReadingPool:
         if self.workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
             return None
         if self._pool is None:  # forked: the settings' index is inherited, never pickled
-            self._pool = ProcessPoolExecutor(max_workers=self.workers,
+            self._pool = ProcessPoolExecutor(max_workers=max(1, self.workers - 1),
                                              mp_context=multiprocessing.get_context("fork"),
                                              initializer=_init_worker,
                                              initargs=(self.settings,))
