@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ezskiros_runtime.world.findings import WorldFinding
-from ezskiros_runtime.world.scene import Relation, Scene, ontology_individuals
+from ezskiros_runtime.world.scene import Relation, Scene, individuals_of
 from ezskiros_runtime.world.scene_checks import bookkeeping
 from ezskiros_runtime.world.vocabulary import spatial_properties
 
@@ -41,7 +41,7 @@ def mermaid(scene: Scene, findings: Iterable[WorldFinding],
     edges = [r for r in scene.relations if r.property in spatial and r.subject not in own]
     shown = _tree_order(sorted((iri for iri in scene.elements if iri not in own),
                                key=lambda iri: scene.elements[iri].line), edges)
-    elsewhere = ontology_individuals(list(index.sources)) if index is not None else {}
+    elsewhere = individuals_of(index) if index is not None else {}
     ids = {iri: f"n{i}" for i, iri in enumerate(shown)}
     out = ["flowchart TD"]
     for iri in shown:

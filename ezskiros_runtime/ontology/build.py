@@ -27,6 +27,7 @@ from rdflib.namespace import OWL, RDF, RDFS, XSD
 from .closure import reflexive_transitive_closure
 from .expressions import ClassExpr, ComplementOf, IntersectionOf, Named, UnionOf, Unsupported
 from .index import OntologyIndex, PropertyInfo
+from .individuals import add_individuals
 from .naming import (
     DEFAULT_PREFIX,
     SKIROS_NAMESPACE,
@@ -66,6 +67,9 @@ def build_index(files: Sequence[OntologyFile], fingerprint: str) -> OntologyInde
     reader = _ExpressionReader(merged, _compactor(prefixes))
     direct, equivalent = _class_hierarchy(merged, reader)
     properties = _properties(merged, kinds, reader)
+    individuals: dict[str, list[str]] = {}
+    for graph in graphs:
+        add_individuals(graph, individuals)
     return OntologyIndex(
         prefixes=prefixes,
         classes=classes,
@@ -75,6 +79,7 @@ def build_index(files: Sequence[OntologyFile], fingerprint: str) -> OntologyInde
         sources=[str(entry.path) for entry in files],
         fingerprint=fingerprint,
         default_prefix=DEFAULT_PREFIX,
+        individuals=individuals,
     )
 
 

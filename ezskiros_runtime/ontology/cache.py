@@ -30,7 +30,8 @@ from .index import OntologyIndex
 if TYPE_CHECKING:
     from .parsing import OntologyFile
 
-CACHE_FORMAT_VERSION = "2"  # 2: sub-properties add their parents' domains and ranges
+CACHE_FORMAT_VERSION = "3"  # 2: sub-properties add their parents' domains and ranges;
+# 3: the index keeps the files' individuals
 """Bump when the pickled shape of the index changes incompatibly."""
 
 _INDEX_CODE = (
@@ -39,6 +40,7 @@ _INDEX_CODE = (
     "dtd_guard.py",
     "expressions.py",
     "index.py",
+    "individuals.py",
     "naming.py",
     "parsing.py",
 )

@@ -72,6 +72,10 @@ class OntologyIndex:
     properties: Mapping[str, PropertyInfo]
     sources: tuple[str, ...]
     fingerprint: str
+    individuals: Mapping[str, list[str]] | None = None
+    """``{iri: [classes]}`` of the individuals the files declare (``individuals``), kept
+    from the build; None for an index made otherwise (``world.scene.individuals_of`` then
+    parses the files)."""
 
     def __init__(
         self,
@@ -84,8 +88,11 @@ class OntologyIndex:
         sources: Iterable[str] = (),
         fingerprint: str = "",
         default_prefix: str = DEFAULT_PREFIX,
+        individuals: Mapping[str, list[str]] | None = None,
     ) -> None:
         self.prefixes = dict(prefixes)
+        self.individuals = None if individuals is None else {
+            iri: list(types) for iri, types in individuals.items()}
         self.default_prefix = default_prefix
         self.classes = frozenset(classes)
         self.properties = dict(properties)

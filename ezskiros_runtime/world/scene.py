@@ -21,16 +21,17 @@ import re
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterable, Iterator
+from typing import TYPE_CHECKING, Iterable, Iterator
 
+from ..ontology.individuals import NOT_CLASSES, add_individuals
 from .turtle_subset import read_triples
+
+if TYPE_CHECKING:
+    from ..ontology.index import OntologyIndex
 
 RDF_TYPE = "http://www.w3.org/1999/02/22-rdf-syntax-ns#type"
 RDFS_LABEL = "http://www.w3.org/2000/01/rdf-schema#label"
-OWL = "http://www.w3.org/2002/07/owl#"
 XSD = "http://www.w3.org/2001/XMLSchema#"
-NOT_CLASSES = frozenset({OWL + "NamedIndividual", OWL + "Thing"})
-"""Types every saved individual carries that say nothing about what it is."""
 SCHEMA = ("http://www.w3.org/2002/07/owl#", "http://www.w3.org/2000/01/rdf-schema#",
           "http://www.w3.org/1999/02/22-rdf-syntax-ns#")
 """Vocabulary about vocabulary: a subject typed with it (the ``owl:Ontology`` header, a
@@ -329,8 +330,6 @@ def ontology_individuals(paths: list[str]) -> dict[str, list[str]]:
 
 @functools.lru_cache(maxsize=8)
 def _individuals(states: tuple[tuple[str, int, int], ...]) -> dict[str, list[str]]:
-    from rdflib import URIRef
-
     from ..ontology.errors import OntologyError
     from ..ontology.parsing import (
         collect_ontology_files,
@@ -345,20 +344,20 @@ def _individuals(states: tuple[tuple[str, int, int], ...]) -> dict[str, list[str
         return found
     for entry in files:
         try:
-            graph = parse_ontology_file(entry)
+            add_individuals(parse_ontology_file(entry), found)
         except OntologyError:
             continue
-        for s, _, o in graph.triples((None, URIRef(RDF_TYPE), None)):
-            iri, cls = str(s), str(o)
-            if cls.startswith(OWL) and cls != OWL + "NamedIndividual":
-                continue  # a class, a property, the ontology itself
-            if cls.startswith("http://www.w3.org/"):
-                continue
-            types = found.setdefault(iri, [])
-            if cls not in NOT_CLASSES and cls not in types:
-                types.append(cls)
     return found
 
 
-__all__ = ["Relation", "Scene", "SceneElement", "SceneError", "Value", "ontology_individuals",
-           "read_scene"]
+def individuals_of(index: OntologyIndex) -> dict[str, list[str]]:
+    """The individuals the index's files declare: kept by the index since it was built
+    (a cached index answers without rdflib), else parsed (``ontology_individuals``)."""
+    kept = getattr(index, "individuals", None)
+    if kept is not None:
+        return dict(kept)
+    return ontology_individuals(list(index.sources))
+
+
+__all__ = ["Relation", "Scene", "SceneElement", "SceneError", "Value", "individuals_of",
+           "ontology_individuals", "read_scene"]

@@ -24,7 +24,7 @@ from .scene import (
     Scene,
     SceneError,
     Value,
-    ontology_individuals,
+    individuals_of,
     read_scene,
 )
 from .vocabulary import (
@@ -52,8 +52,8 @@ def check_scene_file(path: str | Path, index: OntologyIndex | None,
                      elsewhere: dict[str, list[str]] | None = None) -> list[WorldFinding]:
     """Every finding of the scene at ``path`` (``text``: its content, when already read);
     a scene that does not parse is one finding at the line rdflib names. ``elsewhere``:
-    individuals the ontology files declare (``ontology_individuals``; by default those of
-    ``index.sources``)."""
+    individuals the ontology files declare (by default those the index holds:
+    ``individuals_of``)."""
     try:
         scene = read_scene(path, text)
     except SceneError as error:
@@ -71,7 +71,7 @@ def check_scene(scene: Scene, index: OntologyIndex | None,
                 elsewhere: dict[str, list[str]] | None = None) -> list[WorldFinding]:
     """Every finding of a scene already read, in line order."""
     if elsewhere is None:
-        elsewhere = ontology_individuals(list(index.sources)) if index is not None else {}
+        elsewhere = individuals_of(index) if index is not None else {}
     checker = _SceneChecker(scene, index, elsewhere)
     found = (checker.parents() + checker.dangling() + checker.types()
              + checker.datatypes() + checker.unknown_types() + checker.unattached())

@@ -261,3 +261,31 @@ def test_a_refused_file_is_refused_again_without_rdflib_until_it_changes(
     fixed = subprocess.run([sys.executable, "-c", CHILD, str(moved)], capture_output=True,
                            text=True, env=env, cwd=REPO, timeout=60, check=True)
     assert json.loads(fixed.stdout)["classes"] == 5
+
+
+INDIVIDUALS = """
+import json, sys
+from ezskiros_runtime.ontology.load import load_index
+from ezskiros_runtime.world.scene import individuals_of
+index = load_index(sys.argv[1:])
+print(json.dumps({"rdflib": "rdflib" in sys.modules, "kept": index.individuals,
+                  "given": individuals_of(index)}))
+"""
+
+
+def test_the_index_keeps_the_individuals_the_files_declare(tmp_path: Path) -> None:
+    """A robot description's individuals (``owl/robot.owl``) are kept with the index from
+    its build: the same as parsing its files again (``ontology_individuals``), and a
+    cached index in a fresh process hands them over without importing rdflib."""
+    from ezskiros_runtime.world.scene import ontology_individuals
+
+    owl = REPO / "fixtures" / "world_repo" / "owl"
+    index = load_index([skiros2(), owl], cache=False)
+    assert index.individuals is not None and len(index.individuals) >= 3
+    assert index.individuals == ontology_individuals(list(index.sources))
+    env = {**os.environ, "EZSKIROS_CACHE_DIR": str(tmp_path / "cache")}
+    runs = [json.loads(subprocess.run(
+        [sys.executable, "-c", INDIVIDUALS, str(skiros2()), str(owl)], capture_output=True,
+        text=True, env=env, cwd=REPO, timeout=120, check=True).stdout) for _ in range(2)]
+    assert runs[1]["rdflib"] is False
+    assert runs[0]["kept"] == runs[1]["kept"] == runs[1]["given"] == index.individuals
