@@ -180,29 +180,40 @@ def read_cached_index(directory: Path, fingerprint: str) -> OntologyIndex | None
 def write_cached_index(directory: Path, index: OntologyIndex) -> Path | None:
     """Store `index` atomically; returns the file, or None when the cache is unwritable."""
     import pickle
-    import tempfile
 
     target = cache_path(directory, index.fingerprint)
+    data = pickle.dumps(index, protocol=pickle.HIGHEST_PROTOCOL)
+    return target if _store(target, data, "ontology-index-*.pickle") else None
+
+
+def _store(target: Path, data: bytes, pattern: str) -> bool:
+    """Write ``data`` to ``target`` atomically (a temporary file in the same folder, then
+    ``os.replace``), then prune the entries of ``pattern`` (``_prune``); False when the
+    cache cannot be written: a read-only home, a full disk, a file where the folder
+    should be."""
+    import tempfile
+
+    directory = target.parent
     temporary: str | None = None
     try:
         directory.mkdir(parents=True, exist_ok=True)
         handle, temporary = tempfile.mkstemp(
-            dir=directory, prefix=".ontology-index-", suffix=".tmp"
+            dir=directory, prefix="." + pattern.partition("*")[0], suffix=".tmp"
         )
         with os.fdopen(handle, "wb") as stream:
-            pickle.dump(index, stream, protocol=pickle.HIGHEST_PROTOCOL)
+            stream.write(data)
         os.replace(temporary, target)
         temporary = None
-    except Exception as error:  # read-only home, full disk, a file where the folder should be
+    except Exception as error:  # the next load builds or parses again
         _ignored("cannot write ontology cache %s: %s", target, error)
-        return None
+        return False
     finally:
         if temporary is not None:
             with contextlib.suppress(OSError):
                 os.unlink(temporary)
     stats.writes += 1
-    _prune(directory, keep=target)
-    return target
+    _prune(directory, keep=target, pattern=pattern)
+    return True
 
 
 def refusal_path(directory: Path, fingerprint: str, sources: Sequence[str]) -> Path:
@@ -254,30 +265,13 @@ def write_cached_refusal(directory: Path, fingerprint: str, sources: Sequence[st
                          error: OntologyLoadError) -> None:
     """Remember that these files were refused, and why (atomically, as an index)."""
     import json
-    import tempfile
 
-    target = refusal_path(directory, fingerprint, sources)
-    temporary: str | None = None
-    try:
-        directory.mkdir(parents=True, exist_ok=True)
-        handle, temporary = tempfile.mkstemp(dir=directory, prefix=".ontology-refusal-",
-                                             suffix=".tmp")
-        with os.fdopen(handle, "w", encoding="utf-8") as stream:
-            json.dump({"message": str(error), "path": error.path, "line": error.line}, stream)
-        os.replace(temporary, target)
-        temporary = None
-    except Exception as problem:  # unwritable: the next load parses again
-        _ignored("cannot write ontology refusal %s: %s", target, problem)
-        return
-    finally:
-        if temporary is not None:
-            with contextlib.suppress(OSError):
-                os.unlink(temporary)
-    stats.writes += 1
-    _prune(directory, keep=target, pattern="ontology-refusal-*.json")
+    kept = {"message": str(error), "path": error.path, "line": error.line}
+    _store(refusal_path(directory, fingerprint, sources), json.dumps(kept).encode("utf-8"),
+           "ontology-refusal-*.json")
 
 
-def _prune(directory: Path, keep: Path, pattern: str = "ontology-index-*.pickle") -> None:
+def _prune(directory: Path, keep: Path, pattern: str) -> None:
     """Delete all but the `KEEP_INDEXES` most recently used entries of ``pattern`` (never
     `keep`)."""
     try:
