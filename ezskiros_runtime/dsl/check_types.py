@@ -14,13 +14,13 @@ from collections.abc import Sequence
 from typing import Any
 
 from ..ontology.expressions import every
+from ..ontology.naming import XSD
 from .check_context import CheckContext
 from .check_vocabulary import walk
 from .collectors import Recorded
 from .conditions import Cond
 from .vocabulary import to_iri
 
-XSD = "http://www.w3.org/2001/XMLSchema#"
 _INTS = ("int", "integer", "long", "short", "byte", "nonNegativeInteger", "positiveInteger",
          "nonPositiveInteger", "negativeInteger", "unsignedInt", "unsignedLong",
          "unsignedShort", "unsignedByte")

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from typing import Any
 
-RDF_TYPE = "http://www.w3.org/1999/02/22-rdf-syntax-ns#type"
-OWL = "http://www.w3.org/2002/07/owl#"
+from .naming import OWL, RDF_TYPE
+
 NOT_CLASSES = frozenset({OWL + "NamedIndividual", OWL + "Thing"})
 """Types every saved individual carries that say nothing about what it is."""
 

@@ -21,6 +21,11 @@ WELL_KNOWN_PREFIXES: dict[str, str] = {
 }
 """Added when no ontology namespace claims the prefix, so messages can say `xsd:float`."""
 
+OWL = WELL_KNOWN_PREFIXES["owl"]
+XSD = WELL_KNOWN_PREFIXES["xsd"]
+RDF_TYPE = WELL_KNOWN_PREFIXES["rdf"] + "type"
+"""The W3C terms the readers of scenes, ontologies and values name: spelt here once."""
+
 
 def split_iri(iri: str) -> tuple[str, str]:
     """Split an IRI into (namespace, local name).

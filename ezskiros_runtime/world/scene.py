@@ -24,14 +24,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Iterable, Iterator
 
 from ..ontology.individuals import NOT_CLASSES, add_individuals
+from ..ontology.naming import RDF_TYPE
 from .turtle_subset import read_triples
 
 if TYPE_CHECKING:
     from ..ontology.index import OntologyIndex
 
-RDF_TYPE = "http://www.w3.org/1999/02/22-rdf-syntax-ns#type"
 RDFS_LABEL = "http://www.w3.org/2000/01/rdf-schema#label"
-XSD = "http://www.w3.org/2001/XMLSchema#"
 SCHEMA = ("http://www.w3.org/2002/07/owl#", "http://www.w3.org/2000/01/rdf-schema#",
           "http://www.w3.org/1999/02/22-rdf-syntax-ns#")
 """Vocabulary about vocabulary: a subject typed with it (the ``owl:Ontology`` header, a
@@ -353,9 +352,8 @@ def _individuals(states: tuple[tuple[str, int, int], ...]) -> dict[str, list[str
 def individuals_of(index: OntologyIndex) -> dict[str, list[str]]:
     """The individuals the index's files declare: kept by the index since it was built
     (a cached index answers without rdflib), else parsed (``ontology_individuals``)."""
-    kept = getattr(index, "individuals", None)
-    if kept is not None:
-        return dict(kept)
+    if index.individuals is not None:
+        return dict(index.individuals)
     return ontology_individuals(list(index.sources))
 
 

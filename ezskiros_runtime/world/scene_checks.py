@@ -17,9 +17,9 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..ontology.naming import XSD
 from .findings import WorldFinding, finding
 from .scene import (
-    XSD,
     Relation,
     Scene,
     SceneError,

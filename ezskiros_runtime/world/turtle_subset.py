@@ -23,8 +23,7 @@ from __future__ import annotations
 import re
 from typing import Tuple
 
-XSD = "http://www.w3.org/2001/XMLSchema#"
-RDF_TYPE = "http://www.w3.org/1999/02/22-rdf-syntax-ns#type"
+from ..ontology.naming import RDF_TYPE, XSD
 
 _TOKEN = re.compile(r"""
   (?P<space>(?:[ \t\r\n]|\#[^\r\n]*)+)
