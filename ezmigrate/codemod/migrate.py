@@ -24,6 +24,7 @@ from ezskiros_runtime.model import SkillModel
 
 from ..report.findings import skill_findings
 from ..report.results import ClassLines, FileResult, ReviewFinding, SkillResult, source_digest
+from ..report.written_lines import classes_of
 from .core.classes import DescriptionClass, description_classes, inert_classes
 from .core.context import ExtractContext, StatementLines, module_constants, positions_of
 from .core.cst_facts import facts_of
@@ -237,9 +238,8 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
             for s in found.skills])
     if isinstance(source, bytes) and isinstance(code, str):
         code = code.encode(new_module.encoding)
-    classes = ClassLines(source_digest(code) if isinstance(code, bytes) else None, {
-        node.name: node.lineno for node in checked.body if isinstance(node, ast.ClassDef)}) \
-        if isinstance(checked, ast.Module) else None
+    classes = ClassLines(source_digest(code) if isinstance(code, bytes) else None,
+                         classes_of(checked)) if isinstance(checked, ast.Module) else None
     return replace(found, new_source=code, new_classes=classes)
 
 

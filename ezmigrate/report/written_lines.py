@@ -63,9 +63,14 @@ def _replaced(old: list[str], new: list[str], olds: range, news: range) -> dict[
 def _class_lines(after: str) -> dict[str, int]:
     """Top-level class name -> line of its ``class`` statement in the written file."""
     try:
-        tree = ast.parse(after)
+        return classes_of(ast.parse(after))
     except (SyntaxError, ValueError):
         return {}
+
+
+def classes_of(tree: ast.Module) -> dict[str, int]:
+    """Top-level class name -> line of its ``class`` statement (the last of a name wins):
+    of the written file here, or of the parse that checked it (``ClassLines``)."""
     return {node.name: node.lineno for node in tree.body if isinstance(node, ast.ClassDef)}
 
 
