@@ -2,9 +2,9 @@
 
 `plain_reader` reads a plain legacy description with ``ast`` (the fast path; the codemod's
 reader takes what it declines), `ezskiros_reader` an EzSkiROS file with no legacy
-description in it, as the codemod would read it, `legacy` holds the checks only legacy code needs,
-`robot_vocabulary` and `world_model` the checks against the lab's ontology, scenes and
-launch files, `scene_diagram` draws a scene for the report, `diagnostic` is one line of
-output and `select` applies ``--select``/``--ignore`` and suppression comments. May import
+description in it, as the codemod would read it, `legacy` holds the checks only legacy
+code needs, `robot_vocabulary` and `world_model` the checks against the lab's ontology,
+scenes and launch files, `scene_diagram` draws a scene for the report, `diagnostic` is one
+line of output and `select` applies ``--select``/``--ignore`` and suppression comments. May import
 `codemod`, `verify`, `report` and `files`, and the runtime.
 """

@@ -8,11 +8,11 @@ pool forked at the start of the run, before any thread exists: the scenes are su
 first and parse while the main process reads the repository; the files' readings are
 split into small chunks once the misses of the cache are known, the workers taking them
 from the start and the main process from the end until they meet (so a chunk of costly
-files slows nobody more than its share). A file the plain reader
-declines is read by the codemod in the same turn (``runner.own_reading``), while the
-other files are still being read, rather than after all of them. Results are taken in the
-order they were asked for, so a run reports the same bytes as one without the pool
-(``--jobs 1``, or too little to share).
+files slows nobody more than its share). A file the plain reader declines is read by the
+codemod in the same turn (``runner.own_reading``), while the other files are still being
+read, rather than after all of them. Results are taken in the order they were asked for,
+so a run reports the same bytes as one without the pool (``--jobs 1``, or too little to
+share).
 """
 
 from __future__ import annotations
