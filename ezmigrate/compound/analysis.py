@@ -29,7 +29,7 @@ from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..verify.pool import PoolConfig, Standby, job_for, run_batched
 from ..verify.protocol import LoadOutcome
-from .repository import Recovered, RepositoryScan, description_of
+from .repository import READ_WHEN, Recovered, RepositoryScan, description_of
 from .static import (
     NeedsTrace,
     class_bases,
@@ -42,9 +42,8 @@ from .static import (
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
-MARKER = b"expand"
-READ_WHEN = (MARKER, b"setDescription", b"createDescription")
-"""A file is read for compound skills, implementations and description bases if it has any."""
+MARKER = READ_WHEN[0]
+"""``expand``: a file that may build a compound skill's tree."""
 
 
 @dataclass
@@ -90,6 +89,9 @@ class Trees:
     recovered: dict[str, Recovered] = field(default_factory=dict)
     """Files ``ast`` cannot parse, as ``recover_classes`` read them with the run's files:
     the repository scan takes them instead of reading them again."""
+    parsed: set[str] = field(default_factory=set)
+    """Files of the run ``ast`` read where the run read them (``FileFacts.parsed``): the
+    repository scan need not parse them again to learn that they parse."""
 
     def wants(self, candidate: Candidate, data: bytes) -> bool:
         """Whether ``add`` would read this file: not yet seen, and holding a marker."""

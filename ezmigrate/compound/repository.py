@@ -39,7 +39,12 @@ from .static import (
     read_compounds,
 )
 
-READ_WHEN = (b"expand", b"setDescription", b"createDescription", b"SkillDescription")
+READ_WHEN = (b"expand", b"setDescription", b"createDescription")
+"""A file is read for compound skills, implementations and description bases if it has any
+(``analysis.Trees``)."""
+SCAN_WHEN = (*READ_WHEN, b"SkillDescription")
+"""A file is scanned for the repository's descriptions if it has any: ``READ_WHEN``, or a
+description class with no ``createDescription`` of its own."""
 UNPARSED = "in a file Python 3 cannot parse"
 TOP_CLASS = "class@0"
 _LAYOUT = frozenset({tokenize.NL, tokenize.NEWLINE, tokenize.COMMENT, tokenize.INDENT,
@@ -91,7 +96,7 @@ def scan_repository(named: Sequence[Path], exclude: Sequence[str] = (),
         path = str(candidate.path)
         if recovered is not None and path in recovered:
             _add_recovered(candidate, recovered[path], scan)
-        elif path not in skipped and any(m in data for m in READ_WHEN):
+        elif path not in skipped and any(m in data for m in SCAN_WHEN):
             _scan_file(candidate, data, scan, unparsable_only=True)
     items: list[tuple[Candidate, bytes]] = []
     roots = sorted({repository_root(p).resolve() for p in named
@@ -108,7 +113,7 @@ def scan_repository(named: Sequence[Path], exclude: Sequence[str] = (),
             except OSError:
                 continue
     for candidate, data in items:
-        if any(marker in data for marker in READ_WHEN):
+        if any(marker in data for marker in SCAN_WHEN):
             _scan_file(candidate, data, scan)
     return scan
 

@@ -126,7 +126,7 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     parses the files the cache lacks in its workers (``reading_pool``). Files come out in
     the order given, the codemod's last.
     """
-    from ..compound.analysis import READ_WHEN
+    from ..compound.repository import SCAN_WHEN
     from ..lint.plain_reader import Declined  # libcst: only a run that reads files
     from .file_facts import FileFacts, file_facts
 
@@ -143,7 +143,7 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
         read.append((candidate, data))
         verdict = None if data is None else by_text(data)
         if data is None or (verdict is False and not (
-                compounds and any(marker in data for marker in READ_WHEN))):
+                compounds and any(marker in data for marker in SCAN_WHEN))):
             continue  # never parsed: nothing to read in it
         key = None if cache is None else cache.key(
             "file", str(candidate.path), candidate.relative, str(compounds), data)
@@ -404,6 +404,8 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
                 trees.prepared[str(candidate.path)] = found.trees
         if trees is not None and found.unparsed is not None:
             trees.recovered[str(candidate.path)] = found.unparsed[0]
+        if trees is not None and found.parsed:
+            trees.parsed.add(str(candidate.path))
         if found.implementation is not None:
             facts[candidate.path] = found.implementation
 
@@ -609,7 +611,8 @@ def compound_pass(read: list[tuple[Candidate, bytes]],
         statics = [(c, r) for c, _, r in read_statically([c for c, _ in library], pool.workers,
                                                          index)]
         add_descriptions(skills, statics, [], "skill library")
-    around = scan_repository(trees.named, trees.exclude, trees.seen | set(trees.prepared), read,
+    around = scan_repository(trees.named, trees.exclude,
+                             trees.seen | set(trees.prepared) | trees.parsed, read,
                              trees.recovered)
     for info in around.descriptions:  # the files not named; the named ones' readings win
         skills.add_description(info)

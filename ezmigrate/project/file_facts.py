@@ -14,8 +14,8 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass
 
-from ..compound.analysis import READ_WHEN, TreeFacts, tree_facts
-from ..compound.repository import Recovered, recover_classes
+from ..compound.analysis import TreeFacts, tree_facts
+from ..compound.repository import READ_WHEN, SCAN_WHEN, Recovered, recover_classes
 from ..files.discover import Candidate
 from ..files.prefilter import marker_is_identifier
 from ..lint.ezskiros_reader import read_ezskiros
@@ -42,9 +42,12 @@ class FileFacts:
     """For a declined EzSkiROS file, the codemod's reading when the syntax alone gives it
     (``ezskiros_reader``): ``settle`` takes it instead of parsing the file with libcst."""
     unparsed: tuple[Recovered] | None = None
-    """For a file ``ast`` cannot parse (Python 2) that the compound pass reads, what
-    ``recover_classes`` makes of it (one item: it may itself be None), for the repository
-    scan (``Trees.recovered``)."""
+    """For a file ``ast`` cannot parse (Python 2) that the repository scan reads
+    (``SCAN_WHEN``), what ``recover_classes`` makes of it (one item: it may itself be
+    None), for that scan (``Trees.recovered``)."""
+    parsed: bool = False
+    """``ast`` read the file: the repository scan need not parse it again to learn that
+    (``Trees.parsed``)."""
 
 
 def parse(data: bytes) -> ast.Module | None:
@@ -61,25 +64,27 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
     implementation checks read. ``verdict``: the prefilter's text on it (``by_text``); when
     it could not tell (None) the prefilter's parse is taken here, in the reading pool's
     workers and kept by the cache, rather than file by file in the main process. A file
-    ruled out (``described`` False) is read only for the compound pass (a tree or an
-    implementation outside a description file), and only when it parses."""
+    ruled out (``described`` False) is parsed only for the compound pass (a tree or an
+    implementation outside a description file) and the repository scan (a description
+    class; ``SCAN_WHEN``), and read only when it parses."""
     described = verdict is True or (verdict is None and marker_is_identifier(data))
     read_when = compounds and any(m in data for m in READ_WHEN)
+    scanned = compounds and any(m in data for m in SCAN_WHEN)
     if not described:
-        tree = parse(data) if read_when else None
+        tree = parse(data) if scanned else None
         return FileFacts(FileResult(path=candidate.relative), described=False,
-                         trees=None if tree is None else tree_facts(tree, str(candidate.path)),
-                         unparsed=(recover_classes(data),) if read_when and tree is None
-                         else None)
+                         trees=tree_facts(tree, str(candidate.path))
+                         if tree is not None and read_when else None,
+                         unparsed=(recover_classes(data),) if scanned and tree is None
+                         else None, parsed=tree is not None)
     tree = parse(data)
     if tree is None:
-        return FileFacts(Declined(), unparsed=(recover_classes(data),) if read_when else None)
+        return FileFacts(Declined(), unparsed=(recover_classes(data),) if scanned else None)
     runtime = RUNTIME_MARKER in data
     static = read_plain(data, candidate.relative, tree) if not runtime else Declined()
     settled = read_ezskiros(tree, candidate.relative) if runtime else None
     if not compounds:
-        return FileFacts(static, settled=settled)
-    trees = tree_facts(tree, str(candidate.path)) \
-        if any(m in data for m in READ_WHEN) else None
+        return FileFacts(static, settled=settled, parsed=True)
+    trees = tree_facts(tree, str(candidate.path)) if read_when else None
     implementation = module_facts(tree, data) if b"setDescription" in data else None
-    return FileFacts(static, trees, implementation, settled=settled)
+    return FileFacts(static, trees, implementation, settled=settled, parsed=True)

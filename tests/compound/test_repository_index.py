@@ -169,3 +169,28 @@ def test_an_implementation_with_its_own_label_is_no_description(tmp_path: Path):
     assert brief(ez3([repo / "pkg" / "tasks.py"])) == {("tasks.py", 18, "EZ301", "error")}
     (repo / "pkg" / "tasks.py").write_text(HEADER + compound("Navigate"), encoding="utf-8")
     assert ez3([repo / "pkg" / "tasks.py"]) == []
+
+
+def test_a_file_naming_a_description_in_a_comment_is_read_where_the_run_reads(
+        tmp_path: Path, monkeypatch):
+    """A file that mentions ``SkillDescription`` outside its code is not a description
+    file, but the repository scan must still learn whether it parses: an unreadable one
+    softens an unknown child. The run's reading learns it (``FileFacts.parsed``,
+    ``unparsed``); the scan parses none of the run's files again."""
+    from ezmigrate.compound import repository
+
+    scanned: list[str] = []
+    real = repository._scan_file
+    monkeypatch.setattr(repository, "_scan_file", lambda candidate, *rest, **kw: (
+        scanned.append(candidate.relative), real(candidate, *rest, **kw))[1])
+    repo = write(tmp_path / "repo", {
+        "pkg/tasks.py": HEADER + compound("Scan"),
+        "pkg/notes.py": "# not a SkillDescription any more\nVALUE = 1\n",
+    })
+    assert brief(ez3([repo])) == {("tasks.py", 18, "EZ301", "error")}
+    (repo / "pkg" / "notes.py").write_text("# a SkillDescription, once\nx = '''\n",
+                                           encoding="utf-8")  # not even tokenize reads it
+    found = ez3([repo])
+    assert brief(found) == {("tasks.py", 18, "EZ301", "info")}
+    assert "notes.py" in found[0].message and "could not be read" in found[0].message
+    assert scanned == []
