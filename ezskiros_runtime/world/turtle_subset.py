@@ -10,8 +10,9 @@ object`` with ``;`` and ``,`` lists, whose terms are absolute IRIs, prefixed nam
 The subset is accepted only when it is certain to mean what rdflib reads: each term is
 built with rdflib's own constructors (``URIRef``, ``Literal``), as its parser builds them,
 and anything outside the subset (blank nodes, collections, escapes, long strings,
-decimals and doubles, ``@base`` and relative IRIs, a name that continues past where the
-subset stops reading it, an unknown prefix, any syntax error) gives ``None`` and the
+decimals and doubles, ``@base`` and relative IRIs but an unused prefix's ``<>``, a name
+that continues past where the subset stops reading it, an unknown prefix, any syntax
+error) gives ``None`` and the
 file goes to rdflib, which reads it or says where it is wrong. A test holds the two
 readings equal on every scene this project has, under each robot's rdflib.
 
@@ -27,6 +28,7 @@ from ..ontology.naming import RDF_TYPE, XSD
 
 _TOKEN = re.compile(r"""
   (?P<space>(?:[ \t\r\n]|\#[^\r\n]*)+)
+| (?P<empty><>)
 | (?P<iri><[A-Za-z][A-Za-z0-9+.-]*:[^<>"{}|^`\\\x00-\x20\x7f-\U0010ffff]*>)
 | (?P<string>"[^"\\\r\n]*")
 | (?P<at>@[A-Za-z]+(?:-[A-Za-z0-9]+)*)
@@ -37,7 +39,10 @@ _TOKEN = re.compile(r"""
 | (?P<punct>[.;,])
 """, re.VERBOSE)
 """One token of the subset. A prefixed name's local part has no ``.``, ``:``, escape or
-leading digit; numbers are integers without a sign ``+`` or leading zeros."""
+leading digit; numbers are integers without a sign ``+`` or leading zeros. ``<>`` is read
+only as a prefix's namespace: SkiROS2 saves scenes with ``@prefix : <> .`` lines (and
+``default1:`` and so on) that no name uses; a name that uses one is left to rdflib, which
+resolves it against a base of its own."""
 
 _ENDS = frozenset(" \t\r\n,;")
 """What may follow a name, a number or a keyword for the subset to have read all of it
@@ -87,7 +92,7 @@ def read_triples(text: str) -> set[Triple] | None:
         return None
     from rdflib import Literal, URIRef
 
-    prefixes: dict[str, str] = {}
+    prefixes: dict[str, str | None] = {}
     triples: set[Triple] = set()
     iris: dict[str, object] = {}  # one term per text: a scene repeats few of them often
     literals: dict[tuple[str, str, str], object] = {}
@@ -125,9 +130,10 @@ def read_triples(text: str) -> set[Triple] | None:
         kind, value = tokens[i]
         if kind == "at":
             if value != "@prefix" or at(i + 1)[0] != "name" or not at(i + 1)[1].endswith(":") \
-                    or at(i + 2)[0] != "iri" or at(i + 3) != ("punct", "."):
+                    or at(i + 2)[0] not in ("iri", "empty") or at(i + 3) != ("punct", "."):
                 return None
-            prefixes[at(i + 1)[1][:-1]] = at(i + 2)[1][1:-1]
+            relative = at(i + 2)[0] == "empty"  # no name of the subset may use it
+            prefixes[at(i + 1)[1][:-1]] = None if relative else at(i + 2)[1][1:-1]
             i += 4
             continue
         subject = resource(tokens[i])

@@ -64,6 +64,8 @@ READ = {
     "a repeated triple": "ex:s ex:p ex:o . ex:s ex:p ex:o .",
     "text beyond ASCII in a string": 'ex:s ex:label "Kaffebryggare ☕" .',
     "an empty string": 'ex:s ex:label "" .',
+    "prefixes saved as <> and never used": "@prefix : <> .\n@prefix default1: <> .\n"
+                                            "ex:s ex:p ex:o .",
 }
 
 
@@ -96,6 +98,9 @@ LEFT_TO_RDFLIB = {
     "an integer with a leading zero": "ex:s ex:v 007 .",
     "a base": "@base <http://example.org/> .\nex:s ex:p ex:o .",
     "a relative IRI": "ex:s ex:p <o> .",
+    "a name of a prefix saved as <>": "@prefix d: <> .\nex:s ex:p d:o .",
+    "the empty prefix saved as <>": "@prefix : <> .\n:s ex:p ex:o .",
+    "an empty IRI": "ex:s ex:p <> .",
     "SPARQL's PREFIX": "PREFIX ex2: <http://x.org/#>\nex2:s ex2:p ex2:o .",
     "a local name with a full stop inside": "ex:s ex:p ex:a.b .",
     "a local name with a colon": "ex:s ex:p ex:a:b .",
@@ -145,6 +150,8 @@ def _texts(seed: int, count: int) -> list[str]:
         for _ in range(chance.randint(1, 3)):
             if chance.random() < 0.1:
                 out.append("@prefix ex: <http://example.org/again#> .\n")
+            if chance.random() < 0.05:  # as SkiROS2 saves it: the names ``:x`` then use it
+                out.append("@prefix : <> .\n")
             out.append(pick(SUBJECTS))
             for number in range(chance.randint(1, 3)):
                 out.append((pick(SPACES) + ";" if number else "") + " " + pick(PREDICATES))
