@@ -107,14 +107,7 @@ class ReadingPool:
 
     def parse_scenes(self, paths: Sequence[Path]) -> None:
         """Parse ``paths`` in the workers (``seed_scenes`` hands the parses to
-        ``read_scene``): they start after the files' readings, which the run needs first.
-
-        rdflib is imported here, before the workers fork: a scene's terms are rdflib's, so
-        the main process imports it anyway to take the parses, and the workers inherit
-        it instead of importing it again."""
-        if paths and self.workers > 1:
-            import rdflib  # noqa: F401
-
+        ``read_scene``): they start after the files' readings, which the run needs first."""
         self._waiting += paths
 
     def _start_scenes(self) -> None:
