@@ -311,7 +311,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         from ..compound.analysis import Trees
 
         listed = launch.listed("skill_list") if launch is not None else None
-        trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, pool.workers)),
+        trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, 1)),
                       named=tuple(paths), exclude=exclude,
                       launched=frozenset(listed) if listed is not None else None,
                       libraries=frozenset(launch.listed("libraries_list") or ())
