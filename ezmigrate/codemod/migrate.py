@@ -223,9 +223,11 @@ def _migrate_module(module: cst.Module, source: bytes | str, settings: Settings,
     new_module = update_imports(_rewrite(module, converted, base_name), runtime_pairs,
                                 {(n, aliases.get(n, n)) for p in converted for n in p.prefixes},
                                 settings.exported, used=used, used_before=set(facts.names))
-    code: bytes | str = new_module.code
+    printed = new_module.code  # once: ``Module.bytes`` would print the tree again
+    code: bytes | str = printed
     if holes is not None:
-        raw = holes.fill(new_module.bytes if isinstance(source, bytes) else _raw(code))
+        raw = holes.fill(printed.encode(new_module.encoding) if isinstance(source, bytes)
+                         else _raw(printed))
         if raw is None:
             return None
         code = _like(source, raw)
