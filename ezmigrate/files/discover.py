@@ -270,24 +270,29 @@ _GIT_DISCOVERY_ENV = ("GIT_DIR", "GIT_WORK_TREE", "GIT_CEILING_DIRECTORIES",
 def _git_ignored(files: list[str]) -> set[str]:
     """Real paths of the ``files`` (real paths) git ignores; nothing when git is absent.
 
-    git is asked for the checkout of each folder; folders that find the same ``.git``
-    walking up (same device all the way) are in the same checkout, so one ``git rev-parse``
-    answers for all of them. When the git environment variables could change how git
-    finds its checkout, every folder is asked, as git would be.
+    git is asked once per checkout: folders that find the same ``.git`` walking up (same
+    device all the way) are in the same checkout, so one ``git check-ignore`` run from the
+    folder holding it answers for all of them; folders with no ``.git`` above them ask
+    nothing.
+    When the git environment variables could change how git finds its checkout, every
+    folder asks git for its top level first, as git would find it.
     """
     by_folder: dict[str, list[str]] = {}
     for file in files:
         by_folder.setdefault(os.path.dirname(file), []).append(file)
-    exact = any(name in os.environ for name in _GIT_DISCOVERY_ENV)
-    keys: dict[str, str] = {}
-    key_of = {folder: folder if exact else _checkout_key(folder, keys) for folder in by_folder}
-    asked = {key: folder for folder, key in reversed(key_of.items())}  # a folder per key
-    tops = dict(zip(asked, _each(_git_top, list(asked.values())), strict=True))
     groups: dict[str, list[str]] = {}
-    for folder, group in by_folder.items():
-        top = tops[key_of[folder]]
-        if top is not None:
-            groups.setdefault(top, []).extend(group)
+    if any(name in os.environ for name in _GIT_DISCOVERY_ENV):
+        tops = dict(zip(by_folder, _each(_git_top, list(by_folder)), strict=True))
+        for folder, group in by_folder.items():
+            top = tops[folder]
+            if top is not None:
+                groups.setdefault(top, []).extend(group)
+    else:
+        keys: dict[str, str] = {}
+        for folder, group in by_folder.items():
+            key = _checkout_key(folder, keys)
+            if not key.startswith(NO_CHECKOUT):  # no ``.git`` up to where git stops looking
+                groups.setdefault(key, []).extend(group)
     ignored: set[str] = set()
     for found in _each(_check_ignore, list(groups.items())):
         ignored |= found
@@ -306,7 +311,8 @@ def _each(ask: Callable[[_T], _R], items: list[_T]) -> list[_R]:
 
 
 def _check_ignore(checkout: tuple[str, list[str]]) -> set[str]:
-    """The real paths among a checkout's files that git ignores."""
+    """The real paths among a checkout's files that git ignores, asked from a folder of
+    the checkout (its top level, or the folder holding its ``.git``)."""
     top, group = checkout
     try:
         proc = subprocess.run(["git", "-C", top, "check-ignore", "--stdin", "-z"],
@@ -315,6 +321,10 @@ def _check_ignore(checkout: tuple[str, list[str]]) -> set[str]:
     except (OSError, subprocess.TimeoutExpired):
         return set()
     return {os.path.realpath(os.fsdecode(p)) for p in proc.stdout.split(b"\0") if p}
+
+
+NO_CHECKOUT = "\0"
+"""How the key of a folder with no ``.git`` at or above it begins (no path holds it)."""
 
 
 def _checkout_key(folder: str, memo: dict[str, str]) -> str:
@@ -346,7 +356,7 @@ def _checkout_key(folder: str, memo: dict[str, str]) -> str:
         except OSError:
             boundary = True
         if boundary:
-            key = "\0" + current  # no checkout found up to here
+            key = NO_CHECKOUT + current  # no checkout found up to here
             break
         current = parent
     for visited in chain:

@@ -323,11 +323,37 @@ def test_git_is_asked_once_per_checkout_and_each_gitignore_holds(tmp_path, monke
     assert found == {"a/keep.py", "a/local.py", "a/b/keep.py", "a/b/local.py", "c/keep.py",
                      "c/local.py", "nested/keep.py", "nested/ignored.py", "nested/d/keep.py",
                      "nested/d/ignored.py"}
-    assert sum("rev-parse" in call for call in calls) == 2  # one per checkout
-    assert sum("check-ignore" in call for call in calls) == 2
+    assert sum("check-ignore" in call for call in calls) == 2  # one per checkout
+    assert len(calls) == 2
 
 
-def test_outside_any_checkout_git_is_asked_once(tmp_path, monkeypatch):
+def test_with_gits_own_variables_each_folder_asks_for_its_checkout(tmp_path, monkeypatch):
+    """``GIT_CEILING_DIRECTORIES`` and friends change where git finds a checkout: then
+    each folder asks git for its top level, and the answers are those git gives."""
+    outer = tmp_path / "outer"
+    for folder in ("a", "nested/d"):
+        (outer / folder).mkdir(parents=True)
+        (outer / folder / "keep.py").write_text("")
+        (outer / folder / "ignored.py").write_text("")
+    _git("init", "-q", outer)
+    _git("init", "-q", outer / "nested")
+    (outer / ".gitignore").write_text("ignored.py\n")
+    monkeypatch.setenv("GIT_CEILING_DIRECTORIES", str(tmp_path))
+    calls: list[list[str]] = []
+    real_run = subprocess.run
+
+    def counting(args, *rest, **kwargs):
+        calls.append(list(args))
+        return real_run(args, *rest, **kwargs)
+
+    monkeypatch.setattr(subprocess, "run", counting)
+    found = {c.relative for c in discover([outer])[0]}
+    assert found == {"a/keep.py", "nested/d/keep.py", "nested/d/ignored.py"}
+    assert sum("rev-parse" in call for call in calls) == 2  # one per folder
+    assert sum("check-ignore" in call for call in calls) == 2  # one per checkout
+
+
+def test_outside_any_checkout_git_is_never_asked(tmp_path, monkeypatch):
     for index in range(12):
         folder = tmp_path / f"p{index}" / "q"
         folder.mkdir(parents=True)
@@ -344,7 +370,7 @@ def test_outside_any_checkout_git_is_asked_once(tmp_path, monkeypatch):
 
     monkeypatch.setattr(subprocess, "run", counting)
     assert len(discover([tmp_path])[0]) == 12
-    assert len(calls) == 1
+    assert calls == []  # no .git above any folder: nothing to ask
 
 
 # -- verification worker warm-up -----------------------------------------------------------
