@@ -11,7 +11,7 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 
 from __future__ import annotations
 
-import gc
+import contextlib
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -41,6 +41,7 @@ from ..verify.pool import BATCH, PoolConfig, Standby, job_for, run_batched
 from . import holdpoint
 from .cross_file import RUNTIME_MARKER, module_name
 from .facts_cache import FactsCache, keep_scenes, seed_scenes
+from .frozen_heap import frozen_heap
 from .implementation_code import IMPLEMENTATION, ModuleFacts, module_facts
 from .import_scan import import_words
 from .launch import Launch, with_init_scene
@@ -323,8 +324,9 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 
     # it forks when the files are read, before threads
     reader = ReadingPool(pool.workers, Settings(index=index))
-    gc.freeze()  # see _run's doc
+    frozen = contextlib.ExitStack()
     try:
+        frozen.enter_context(frozen_heap())
         outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
                        standby, world, cache_dir, trace, facts, reader)
         outcome.files += len(world.scenes)
@@ -339,7 +341,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
             facts.save()
         return outcome
     finally:
-        gc.unfreeze()
+        frozen.close()
         reader.close()
         for workers in standby:
             workers.close()
@@ -386,14 +388,8 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
          cache_dir: Path | None = None, trace: bool = True,
          facts_cache: FactsCache | None = None,
          reader: ReadingPool | None = None) -> CheckOutcome:
-    """``run_check`` once its compound pass (``trees``) is set up.
-
-    It runs with what the process holds before it frozen out of the collector's reach
-    (``gc.freeze``: the imported modules, the ontology's index): reading a repository
-    allocates syntax trees by the hundred thousand, and every full collection they set off
-    would walk all of that again (a tenth of a second on the 2,000-file tree). What is
-    frozen is thawed when the run ends, so that a process running many checks (the
-    tests) can still collect it."""
+    """``run_check`` once its compound pass (``trees``) is set up, with the heap it started
+    with frozen (``frozen_heap``)."""
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
     results: list[tuple[Candidate, FileResult]] = []

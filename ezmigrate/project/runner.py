@@ -14,6 +14,7 @@ re-reads the bytes from disk when someone asks for them (a copy into ``--output-
 
 from __future__ import annotations
 
+import contextlib
 import importlib
 import multiprocessing
 import os
@@ -29,6 +30,7 @@ from ..files.prefilter import by_text, marker_is_identifier
 from ..files.writing import digest as content_digest
 from ..report.results import FileResult
 from . import holdpoint
+from .frozen_heap import frozen_heap
 from .import_scan import import_words
 from .progress import Progress
 
@@ -188,6 +190,7 @@ class _Workers:
         self.pool: ProcessPoolExecutor | None = None
         self.first: tuple[Migrated, bytes, bool] | None = None
         self.futures: list[tuple[Migrated, Future[FileResult]]] = []
+        self._frozen = contextlib.ExitStack()  # the heap, frozen while the pool runs
 
     @property
     def settings(self) -> Settings:
@@ -219,6 +222,7 @@ class _Workers:
         # the core (and libcst) imported once, here, before the fork: the workers inherit
         # it instead of each importing it while the tree is still being read
         importlib.import_module("ezmigrate.codemod.migrate")
+        self._frozen.enter_context(frozen_heap())  # the workers inherit it frozen
         context = multiprocessing.get_context(
             "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
         return ProcessPoolExecutor(max_workers=self.jobs, mp_context=context,
@@ -265,6 +269,7 @@ class _Workers:
         if self.pool is not None:
             self.pool.shutdown(wait=True, cancel_futures=True)
             self.pool = None
+        self._frozen.close()
 
 
 def migrate_all(candidates: Sequence[Candidate], index: OntologyIndex | None,

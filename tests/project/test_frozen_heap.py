@@ -60,3 +60,39 @@ def test_a_run_that_fails_thaws_the_heap_too(tmp_path: Path, monkeypatch):
         run_check([tmp_path], None, PoolConfig(workers=1))
     assert seen and seen[0] > 0
     assert gc.get_freeze_count() == 0
+
+
+def test_rewrite_workers_fork_from_a_frozen_heap_thawed_after(tmp_path: Path, monkeypatch):
+    """``migrate_all`` freezes before its pool forks (the workers inherit the frozen heap)
+    and thaws when the pool is gone."""
+    from ezmigrate.files.discover import discover
+    from ezmigrate.project import runner
+
+    for name in ("a", "b", "c"):
+        (tmp_path / f"{name}.py").write_text(LEGACY.replace("Pick", f"Pick{name}"),
+                                             encoding="utf-8")
+    gc.unfreeze()
+    seen: list[int] = []
+    real = runner._Workers._submit
+
+    def noted(self: runner._Workers, *args: object) -> None:
+        seen.append(gc.get_freeze_count())
+        real(self, *args)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(runner._Workers, "_submit", noted)
+    done = runner.migrate_all(discover([tmp_path])[0], None, jobs=2)
+    assert sorted(s.name for m in done for s in m.result.skills) == ["Picka", "Pickb", "Pickc"]
+    assert seen and all(count > 0 for count in seen)
+    assert gc.get_freeze_count() == 0
+
+
+def test_an_inner_freeze_leaves_the_outer_one_to_thaw():
+    from ezmigrate.project.frozen_heap import frozen_heap
+
+    gc.unfreeze()
+    with frozen_heap():
+        outer = gc.get_freeze_count()
+        with frozen_heap():
+            pass
+        assert gc.get_freeze_count() >= outer > 0
+    assert gc.get_freeze_count() == 0
