@@ -7,7 +7,8 @@ back the skills that will not be written (`refusals` works out what the runtime'
 early checks refuse); `session` is ``rewrite`` (it writes what settled,
 under `interrupt`'s deferral) and `earlier` adds what an earlier run migrated to its report;
 `check` is ``check``, reading each file once into `file_facts` (in `reading_pool`'s
-forked workers, with the scenes), with `load_cache`,
+forked workers, with the scenes, from the heap `frozen_heap` keeps out of the collector's
+reach, as `runner`'s workers do), with `load_cache`,
 `facts_cache` and `outcome_cache` for its next run (each load, each file's and scene's
 reading by content, the whole run),
 `launch` for the launch files it reads, `uninferable` judging EZ105 and EZ209 by what the

@@ -300,6 +300,19 @@ def _git(*args: str | Path) -> None:
     subprocess.run(["git", *map(str, args)], check=True, capture_output=True)
 
 
+def _git_calls(monkeypatch: pytest.MonkeyPatch) -> list[list[str]]:
+    """The command lines of every process started from now on (discovery's git calls)."""
+    calls: list[list[str]] = []
+    real_run = subprocess.run
+
+    def counting(args, *rest, **kwargs):
+        calls.append(list(args))
+        return real_run(args, *rest, **kwargs)
+
+    monkeypatch.setattr(subprocess, "run", counting)
+    return calls
+
+
 def test_git_is_asked_once_per_checkout_and_each_gitignore_holds(tmp_path, monkeypatch):
     outer = tmp_path / "outer"
     for folder in ("a", "a/b", "c", "nested", "nested/d"):
@@ -311,14 +324,7 @@ def test_git_is_asked_once_per_checkout_and_each_gitignore_holds(tmp_path, monke
     _git("init", "-q", outer / "nested")
     (outer / ".gitignore").write_text("ignored.py\n")
     (outer / "nested" / ".gitignore").write_text("local.py\n")
-    calls: list[list[str]] = []
-    real_run = subprocess.run
-
-    def counting(args, *rest, **kwargs):
-        calls.append(list(args))
-        return real_run(args, *rest, **kwargs)
-
-    monkeypatch.setattr(subprocess, "run", counting)
+    calls = _git_calls(monkeypatch)
     found = {c.relative for c in discover([outer])[0]}
     assert found == {"a/keep.py", "a/local.py", "a/b/keep.py", "a/b/local.py", "c/keep.py",
                      "c/local.py", "nested/keep.py", "nested/ignored.py", "nested/d/keep.py",
@@ -339,14 +345,7 @@ def test_with_gits_own_variables_each_folder_asks_for_its_checkout(tmp_path, mon
     _git("init", "-q", outer / "nested")
     (outer / ".gitignore").write_text("ignored.py\n")
     monkeypatch.setenv("GIT_CEILING_DIRECTORIES", str(tmp_path))
-    calls: list[list[str]] = []
-    real_run = subprocess.run
-
-    def counting(args, *rest, **kwargs):
-        calls.append(list(args))
-        return real_run(args, *rest, **kwargs)
-
-    monkeypatch.setattr(subprocess, "run", counting)
+    calls = _git_calls(monkeypatch)
     found = {c.relative for c in discover([outer])[0]}
     assert found == {"a/keep.py", "nested/d/keep.py", "nested/d/ignored.py"}
     assert sum("rev-parse" in call for call in calls) == 2  # one per folder
@@ -361,14 +360,7 @@ def test_outside_any_checkout_git_is_never_asked(tmp_path, monkeypatch):
     if subprocess.run(["git", "-C", str(tmp_path), "rev-parse"], capture_output=True,
                       check=False).returncode == 0:
         pytest.skip("the temporary folder lies inside a git checkout")
-    calls: list[list[str]] = []
-    real_run = subprocess.run
-
-    def counting(args, *rest, **kwargs):
-        calls.append(list(args))
-        return real_run(args, *rest, **kwargs)
-
-    monkeypatch.setattr(subprocess, "run", counting)
+    calls = _git_calls(monkeypatch)
     assert len(discover([tmp_path])[0]) == 12
     assert calls == []  # no .git above any folder: nothing to ask
 
