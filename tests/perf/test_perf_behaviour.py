@@ -333,6 +333,25 @@ def test_git_is_asked_once_per_checkout_and_each_gitignore_holds(tmp_path, monke
     assert len(calls) == 2
 
 
+def test_a_worktree_whose_git_is_a_file_is_asked_from_its_own_folder(tmp_path, monkeypatch):
+    """A linked worktree (or a submodule) holds a ``.git`` file, not a folder: git is asked
+    from there, and the checkout's ``.gitignore`` holds."""
+    main = tmp_path / "main"
+    main.mkdir()
+    _git("init", "-q", main)
+    (main / ".gitignore").write_text("ignored.py\n")
+    _git("-C", main, "add", ".gitignore")
+    _git("-C", main, "-c", "user.name=t", "-c", "user.email=t@t", "commit", "-q", "-m", "i")
+    _git("-C", main, "worktree", "add", "-q", "-b", "side", tmp_path / "side")
+    assert (tmp_path / "side" / ".git").is_file()
+    for name in ("keep.py", "ignored.py"):
+        (tmp_path / "side" / "pkg").mkdir(exist_ok=True)
+        (tmp_path / "side" / "pkg" / name).write_text("")
+    calls = _git_calls(monkeypatch)
+    assert {c.relative for c in discover([tmp_path / "side"])[0]} == {"pkg/keep.py"}
+    assert len(calls) == 1
+
+
 def test_with_gits_own_variables_each_folder_asks_for_its_checkout(tmp_path, monkeypatch):
     """``GIT_CEILING_DIRECTORIES`` and friends change where git finds a checkout: then
     each folder asks git for its top level, and the answers are those git gives."""
