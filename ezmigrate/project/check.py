@@ -11,7 +11,6 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 
 from __future__ import annotations
 
-import contextlib
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -324,24 +323,22 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 
     # it forks when the files are read, before threads
     reader = ReadingPool(pool.workers, Settings(index=index))
-    frozen = contextlib.ExitStack()
     try:
-        frozen.enter_context(frozen_heap())
-        outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
-                       standby, world, cache_dir, trace, facts, reader)
-        outcome.files += len(world.scenes)
-        outcome.diagnostics = as_the_robot_resolves(
-            outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
-            launch.workspace_unresolved if launch is not None else None,
-            index.prefixes if index is not None else ())
-        if kept is not None:
-            OutcomeCache(kept[0][0]).put(kept[0][1], outcome.files, outcome.skills,
-                                         outcome.notes, outcome.diagnostics)
-        if facts is not None:
-            facts.save()
-        return outcome
+        with frozen_heap():
+            outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
+                           standby, world, cache_dir, trace, facts, reader)
+            outcome.files += len(world.scenes)
+            outcome.diagnostics = as_the_robot_resolves(
+                outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
+                launch.workspace_unresolved if launch is not None else None,
+                index.prefixes if index is not None else ())
+            if kept is not None:
+                OutcomeCache(kept[0][0]).put(kept[0][1], outcome.files, outcome.skills,
+                                             outcome.notes, outcome.diagnostics)
+            if facts is not None:
+                facts.save()
+            return outcome
     finally:
-        frozen.close()
         reader.close()
         for workers in standby:
             workers.close()
