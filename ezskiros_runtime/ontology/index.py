@@ -25,9 +25,9 @@ from .expressions import (
     UnionOf,
     Unsupported,
 )
-from .naming import DEFAULT_PREFIX, local_name, looks_like_iri, split_iri
+from .naming import DEFAULT_PREFIX, OWL, local_name, looks_like_iri, split_iri
 
-OWL_THING = "http://www.w3.org/2002/07/owl#Thing"
+OWL_THING = OWL + "Thing"
 PROPERTY_KINDS = ("object", "data", "annotation")
 NAME_KINDS = ("class", *PROPERTY_KINDS)
 

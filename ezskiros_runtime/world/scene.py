@@ -24,15 +24,14 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Iterable, Iterator
 
 from ..ontology.individuals import NOT_CLASSES, add_individuals
-from ..ontology.naming import RDF_TYPE
+from ..ontology.naming import OWL, RDF_TYPE, WELL_KNOWN_PREFIXES
 from .turtle_subset import read_triples
 
 if TYPE_CHECKING:
     from ..ontology.index import OntologyIndex
 
-RDFS_LABEL = "http://www.w3.org/2000/01/rdf-schema#label"
-SCHEMA = ("http://www.w3.org/2002/07/owl#", "http://www.w3.org/2000/01/rdf-schema#",
-          "http://www.w3.org/1999/02/22-rdf-syntax-ns#")
+RDFS_LABEL = WELL_KNOWN_PREFIXES["rdfs"] + "label"
+SCHEMA = (OWL, WELL_KNOWN_PREFIXES["rdfs"], WELL_KNOWN_PREFIXES["rdf"])
 """Vocabulary about vocabulary: a subject typed with it (the ``owl:Ontology`` header, a
 class the scene declares) is no element of the world, and a predicate from it
 (``owl:imports``, ``rdfs:seeAlso``) no relation between elements."""
