@@ -145,13 +145,11 @@ def migrate_file(relative: str, data: bytes, settings: Settings, ambiguous: bool
 
 
 def own_reading(relative: str, data: bytes, settings: Settings) -> FileResult:
-    """What ``migrate_all`` makes of one file before the cross-file pass, without extras:
-    taken early by a pool that has the file at hand (``reading_pool``) and handed to
-    ``migrate_all`` as ``known``."""
-    verdict = by_text(data)
-    if verdict is False:
-        return FileResult(relative)
-    return migrate_file(relative, data, settings, verdict is None)
+    """What ``migrate_all`` makes, before the cross-file pass and without extras, of a file
+    the prefilter keeps (the caller took its verdict, its parse included when the text
+    could not tell: ``file_facts.described``): taken early by a pool that has the file at
+    hand (``reading_pool``) and handed to ``migrate_all`` as ``known``."""
+    return migrate_file(relative, data, settings)
 
 
 def default_jobs() -> int:
