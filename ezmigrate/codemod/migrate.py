@@ -19,9 +19,6 @@ from typing import TYPE_CHECKING
 
 import libcst as cst
 
-from ezskiros_runtime.compare import compare
-from ezskiros_runtime.model import SkillModel
-
 from ..report.findings import skill_findings
 from ..report.results import ClassLines, FileResult, ReviewFinding, SkillResult, source_digest
 from ..report.written_lines import classes_of
@@ -42,12 +39,10 @@ from .core.imports import (
     used_names,
 )
 from .core.ir import (
-    AddCondition,
     ExtractedSkill,
     KeptStatement,
     Literal,
     Operation,
-    ParamOp,
     Unsupported,
 )
 from .core.legacy_names import LegacyNames, dotted_name, is_legacy_module
@@ -58,7 +53,7 @@ from .core.reader import (
     read_operations,
     self_parameter,
 )
-from .core.replay import replay
+from .core.replay import checked_model, replay
 from .core.syntax_facts import ClassFacts, FunctionFacts, SyntaxFacts
 from .core.tree_walk import walk
 from .rules import CONSTRUCTS
@@ -460,24 +455,6 @@ def _parent_operations(cls: DescriptionClass, base: str,
                           "ezmigrate cannot inline a migrated description: migrate "
                           f"{cls.name} by hand")
     return effective[base]
-
-
-def checked_model(name: str, operations: list[Operation], params: list[ParamOp]) -> SkillModel:
-    """The static legacy model; refused when the EzSkiROS form would lower to another one.
-
-    The EzSkiROS form declares ``params`` first, then the conditions in order.
-    """
-    legacy = replay(name, operations)
-    conditions = [op for op in operations if isinstance(op, AddCondition)]
-    lowered = replay(name, [*params, *conditions])
-    differences = compare(legacy, lowered)
-    if differences:
-        raise Unsupported(
-            "ParamOptions expand at the point of addParam, after conditions added earlier; "
-            "EzSkiROS declares all parameters first, which would reorder conditions ("
-            + str(differences[0]).splitlines()[0] + "). Move the addParam calls above the "
-            "conditions by hand if the order does not matter to you, then migrate")
-    return legacy
 
 
 def _reserved(skill: ExtractedSkill, index: OntologyIndex | None, self_name: str) -> set[str]:

@@ -39,8 +39,8 @@ from ..codemod.core.ir import (
     Unsupported,
 )
 from ..codemod.core.legacy_names import LegacyNames, is_legacy_module
+from ..codemod.core.replay import checked_model
 from ..codemod.core.syntax_facts import note_binding, note_import
-from ..codemod.migrate import checked_model
 from ..codemod.rules.add_param import (
     ARGUMENTS,
     KINDS,
@@ -58,6 +58,15 @@ _NESTED_LEGACY_IMPORT = re.compile(rb"^[ \t]+(?:from|import)[ \t][^\n]*skiros2",
 
 class _Declined(Exception):
     """Not the plain form: the codemod's reader takes the file."""
+
+
+class _Kept(Exception):
+    """A construct the codemod keeps the skill for (``Unsupported``), met where the codemod
+    meets it, worded as it words it: the skill is kept, the file stays plain."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(reason)
+        self.reason = reason
 
 
 class _CrossFile(_Declined):
@@ -83,14 +92,15 @@ def read_plain(data: bytes, path: str, tree: ast.Module | None = None) -> FileRe
         tree = tree or ast.parse(data)
         names = _legacy_names(tree, data)
         constants = _Constants(tree)
-        skills = [_skill(node, names, constants)
+        skills = [_skill(node, names, constants, data)
                   for node in _description_classes(tree, names)]
     except _CrossFile:
         return Declined(cross_file=True)
     except (_Declined, Unsupported, SyntaxError, ValueError, UnicodeError, LookupError,
             MemoryError, RecursionError):
         return Declined()
-    return FileResult(path=path, skills=skills, exports=[s.name for s in skills])
+    return FileResult(path=path, skills=skills,
+                      exports=[s.name for s in skills if s.status == "converted"])
 
 
 def _legacy_names(tree: ast.Module, data: bytes) -> LegacyNames:
@@ -174,15 +184,19 @@ def _shares_a_line(stmt: ast.stmt, lines: list[tuple[int, int]]) -> bool:
     return sum(1 for s, e in lines if s <= end and e >= start) > 1
 
 
-def _skill(node: ast.ClassDef, names: LegacyNames, constants: _Constants) -> SkillResult:
+def _skill(node: ast.ClassDef, names: LegacyNames, constants: _Constants,
+           data: bytes) -> SkillResult:
     func = _create_description(node)
     skill = ExtractedSkill(node.name, node.lineno)
-    reader = _Reader(names, func.args.args[0].arg, skill, constants, node.name)
-    for index, stmt in enumerate(func.body):
-        if index == 0 and isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Constant) \
-                and isinstance(stmt.value.value, str):
-            continue  # the docstring
-        reader.statement(stmt)
+    reader = _Reader(names, func.args.args[0].arg, skill, constants, node.name, data)
+    try:
+        for index, stmt in enumerate(func.body):
+            if index == 0 and isinstance(stmt, ast.Expr) \
+                    and isinstance(stmt.value, ast.Constant) and isinstance(stmt.value.value, str):
+                continue  # the docstring
+            reader.statement(stmt)
+    except _Kept as kept:  # ``migrate._plan``: the skill is kept, with the reason
+        return SkillResult(node.name, node.lineno, "skipped", reason=kept.reason)
     params = emitted_params(skill)
     _emittable(skill)
     try:
@@ -232,12 +246,13 @@ class _Reader:
     """One ``createDescription`` body, statement by statement, into ``skill.operations``."""
 
     def __init__(self, names: LegacyNames, self_name: str, skill: ExtractedSkill,
-                 constants: _Constants, class_name: str) -> None:
+                 constants: _Constants, class_name: str, data: bytes) -> None:
         self.names = names
         self.self_name = self_name
         self.skill = skill
         self.constants = constants
         self.class_name = class_name
+        self.data = data
 
     def resolved(self, node: ast.expr) -> Literal:
         """A literal, or a module constant (``ExtractContext.resolved``); else decline."""
@@ -282,14 +297,15 @@ class _Reader:
         return None
 
     def _add_param(self, call: ast.Call) -> None:
-        args = _bind(call, ARGUMENTS, 3)
+        args = _bind(call, ARGUMENTS, 3, "addParam")
+        key = self._key(args["key"], call)
         options: list[str] = []
         options_text = None
         if "options" in args:
             options, options_text = self._options(args["options"])
         description = self.string(args["description"]) if "description" in args else None
-        op = ParamOp(self.string(args["key"]), self._value(args["value"]),
-                     self._kind(args["param_type"]), options, description, call.lineno,
+        op = ParamOp(key, self._value(args["value"]), self._kind(args["param_type"]), options,
+                     description, call.lineno,
                      options_text=options_text)  # description_code: only emission reads it
         self.skill.operations.append(op)
         param_findings(op, self.skill)
@@ -314,10 +330,26 @@ class _Reader:
                 return OpaqueValue(node.id, known)
         raise _Declined
 
+    def _key(self, node: ast.expr, call: ast.Call) -> str:
+        """The key, as ``ExtractContext.string`` reads it; a literal of another type (a
+        fork's ``("skill", "key")`` pair) keeps the skill, named as the codemod names it."""
+        found = _literal(node)
+        if found is None or isinstance(found.value, str):
+            return self.string(node)
+        code = _own_text(self.data, node, call)
+        if code is None:
+            raise _Declined
+        raise _Kept(f"the key of addParam at line {call.lineno} is `{code}`, not a string "
+                    "literal: the key or name is computed at run time, so the migrated form "
+                    "cannot be written statically")
+
     def _kind(self, node: ast.expr) -> str:
         member = self._member(node, "ParamTypes")
         if member in KINDS:
             return member
+        if member is not None:  # add_param._kind: the codemod reads the kind last, as here
+            raise _Kept(f"ParamTypes.{member} at line {node.lineno} is not upstream SkiROS2 "
+                        "API (a fork's extension)")
         found = _literal(node) if member is None else None
         if found is not None and type(found.value) is int and 0 <= found.value < len(KINDS):
             return KINDS[found.value]
@@ -361,8 +393,11 @@ class _Reader:
                      else None))
 
 
-def _bind(call: ast.Call, names: tuple[str, ...], required: int) -> dict[str, ast.expr]:
-    """``core.context.bind_arguments`` for the plain form: anything unusual declines."""
+def _bind(call: ast.Call, names: tuple[str, ...], required: int,
+          api: str | None = None) -> dict[str, ast.expr]:
+    """``core.context.bind_arguments`` for the plain form: anything unusual declines. With
+    ``api``, a keyword upstream SkiROS2 does not have (a fork's ``remap=``) keeps the skill,
+    as the codemod does: it reads the arguments in order, and stops at the first such one."""
     bound: dict[str, ast.expr] = {}
     if len(call.args) > len(names):
         raise _Declined
@@ -370,13 +405,39 @@ def _bind(call: ast.Call, names: tuple[str, ...], required: int) -> dict[str, as
         if isinstance(arg, ast.Starred):
             raise _Declined
         bound[name] = arg
+    twice = False
     for keyword in call.keywords:
-        if keyword.arg is None or keyword.arg not in names or keyword.arg in bound:
+        if keyword.arg is None:
             raise _Declined
+        if keyword.arg not in names:
+            if api is None:
+                raise _Declined
+            raise _Kept(f"{api}({keyword.arg}=...) at line {call.lineno} is not upstream "
+                        "SkiROS2 API (a fork's extension)")
+        twice = twice or keyword.arg in bound
         bound[keyword.arg] = keyword.value
+    if twice:
+        raise _Declined
     if any(n not in bound for n in names[:required]):
         raise _Declined
     return bound
+
+
+def _own_text(data: bytes, node: ast.expr, call: ast.Call) -> str | None:
+    """The text libcst gives ``node`` (``ExtractContext.code``), when it is one line and
+    the first argument of ``call`` with no parentheses of its own: ``ast`` leaves those
+    out of a node's span, libcst keeps them. None otherwise (the codemod says it)."""
+    if not call.args or call.args[0] is not node or node.lineno != node.end_lineno \
+            or call.func.end_lineno != node.lineno or node.end_col_offset is None \
+            or call.func.end_col_offset is None:
+        return None
+    line = data.splitlines()[node.lineno - 1]
+    if line[call.func.end_col_offset:node.col_offset].strip() != b"(":
+        return None
+    try:
+        return line[node.col_offset:node.end_col_offset].decode("utf-8")
+    except UnicodeDecodeError:
+        return None
 
 
 def _literal_shape(node: ast.expr) -> bool:

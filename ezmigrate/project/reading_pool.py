@@ -4,15 +4,19 @@ Before this, the main process parsed every skill file and every scene one after 
 other while the other core idled (its workers run only for the files the codemod reads
 and for tracing). Parsing a file or a scene needs nothing but its path and bytes and gives
 a picklable reading (``file_facts.FileFacts``, ``world.scene.Scene``), so both go to a
-pool forked at the start of the run, before any thread exists: the scenes are submitted
-first and parse while the main process reads the repository; the files' readings are
+pool forked at the start of the run, before any thread exists: the files' readings are
 split into small chunks once the misses of the cache are known, the workers taking them
 from the start and the main process from the end until they meet (so a chunk of costly
-files slows nobody more than its share). A file the plain reader declines is read by the
-codemod in the same turn (``runner.own_reading``), while the other files are still being
-read, rather than after all of them. Results are taken in the order they were asked for,
-so a run reports the same bytes as one without the pool (``--jobs 1``, or too little to
-share).
+files slows nobody more than its share); the scenes follow, and parse while the main
+process goes on with the files' findings. Results are taken in the order they were asked
+for, so a run reports the same bytes as one without the pool (``--jobs 1``, or too little
+to share).
+
+A file the plain reader declines is read by the codemod (``runner.own_reading``) in the
+main process alone, in the same turn when the main process read it, after the workers'
+chunks when a worker did: libcst, which only the codemod needs, is then imported by one
+process instead of by each (``codemod/core/lazy_cst.py``), and a run whose files are all
+plain imports it nowhere.
 """
 
 from __future__ import annotations
@@ -55,12 +59,10 @@ def _parse_scene(path: str) -> tuple[str, Scene] | None:
 Reading = tuple[FileFacts, FileResult | None]
 """A file's facts, and the codemod's own reading of it when the plain reader declined it."""
 
-_SETTINGS: Settings | None = None
 
-
-def _init_worker(settings: Settings | None) -> None:
-    global _SETTINGS
-    _SETTINGS = settings
+def _declined(facts: FileFacts) -> bool:
+    """Whether the codemod must read the file (``own_reading``)."""
+    return facts.described and facts.settled is None and isinstance(facts.static, Declined)
 
 
 def _read_files(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
@@ -72,15 +74,15 @@ def _read_files(items: list[tuple[Candidate, bytes, bool | None]], compounds: bo
     for candidate, data, verdict in items:
         facts = file_facts(candidate, data, compounds, verdict)
         alone = own_reading(candidate.relative, data, settings) \
-            if settings is not None and facts.described and facts.settled is None \
-            and isinstance(facts.static, Declined) else None
+            if settings is not None and _declined(facts) else None
         found.append((facts, alone))
     return found
 
 
 def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
                     ) -> list[Reading]:
-    return _read_files(items, compounds, _SETTINGS)
+    """A worker's chunk: the facts alone (the main process reads what the codemod must)."""
+    return _read_files(items, compounds, None)
 
 
 class ReadingPool:
@@ -100,9 +102,7 @@ class ReadingPool:
             return None
         if self._pool is None:  # forked: the settings' index is inherited, never pickled
             self._pool = ProcessPoolExecutor(max_workers=max(1, self.workers - 1),
-                                             mp_context=multiprocessing.get_context("fork"),
-                                             initializer=_init_worker,
-                                             initargs=(self.settings,))
+                                             mp_context=multiprocessing.get_context("fork"))
         return self._pool
 
     def parse_scenes(self, paths: Sequence[Path]) -> None:
@@ -157,9 +157,14 @@ class ReadingPool:
                 found += mine[start]
                 continue
             try:
-                found += futures[start].result()
+                theirs = futures[start].result()
             except (BrokenProcessPool, OSError):  # a worker died: read here what it had
                 found += _read_files(items[start:start + size], compounds, settings)
+                continue
+            for (candidate, data, _), (facts, _) in zip(items[start:start + size], theirs,
+                                                       strict=True):
+                found.append((facts, own_reading(candidate.relative, data, settings)
+                              if settings is not None and _declined(facts) else None))
         return found
 
     def close(self) -> None:

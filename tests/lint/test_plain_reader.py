@@ -179,9 +179,17 @@ def test_pass_is_read_as_the_codemod_drops_it(body: str) -> None:
     'class A(SkillDescription):\n    def createDescription(self):\n'
     '        self.addPreCondition(self.getRelationCond("L", "skiros:contain", "x", "y", 1))\n',
     'class A(SkillDescription):\n    def createDescription(self):\n'
-    '        self.addParam("x", float, ParamTypes.Required, remap="y")\n',
-    'class A(SkillDescription):\n    def createDescription(self):\n'
     '        self.addPreCondition(self.getOrCond("L", [], True))\n',
+    'class A(SkillDescription):\n    def createDescription(self):\n'
+    '        self.addParam((("a", "b")), float, ParamTypes.Required)\n',
+    'class A(SkillDescription):\n    def createDescription(self):\n'
+    '        self.addParam(key=("a", "b"), value=float, param_type=ParamTypes.Required)\n',
+    'class A(SkillDescription):\n    def createDescription(self):\n'
+    '        self.addParam(("a",\n                       "b"), float, ParamTypes.Required)\n',
+    'class A(SkillDescription):\n    def createDescription(self):\n'
+    '        self.addParam("x", float, ParamTypes.Required, key="y")\n',
+    'class A(SkillDescription):\n    def createDescription(self):\n'
+    '        self.addParam(*("x", float, ParamTypes.Required), remap="y")\n',
     'from skiros2_common.core.conditions import ConditionFunction\n'
     'class A(SkillDescription):\n    def createDescription(self):\n'
     '        self.addPreCondition(ConditionFunction("L", lambda: True))\n',
@@ -190,6 +198,50 @@ def test_pass_is_read_as_the_codemod_drops_it(body: str) -> None:
 ])
 def test_anything_else_is_left_to_the_codemod(body: str) -> None:
     assert isinstance(read_plain((HEADER + body).encode(), "a.py"), Declined)
+
+
+KEPT = [
+    # a fork's shared parameters: the key names the skill that writes it
+    '        self.addParam(("timer", "timed_out"), Element("skiros:Parameter"), '
+    'ParamTypes.Required)\n',
+    '        self.addParam("timed_out", Element("skiros:Parameter"), ParamTypes.SharedOutput)\n',
+    '        self.addParam("x", float, ParamTypes.Required, remap="y")\n',
+    '        self.addParam("x", float, ParamTypes.Required, key="z", remap="y")\n',
+    '        self.addParam(1, float, ParamTypes.Required)\n',
+    '        self.addParam(-1, float, ParamTypes.Required)\n',
+    '        self.addParam( None , float, ParamTypes.Required)\n',
+    '        self.addParam({"a": [1, 2]}, float, ParamTypes.Required)\n',
+    '        self.addParam(("a", "b"), float, ParamTypes.Required, remap="y")\n',
+    '        self.addParam(("a", "b"), float, ParamTypes.SharedInput)\n',
+    '        self.addParam("x", float, ParamTypes.SharedInput, remap="y")\n',
+    '        self.addParam("x", 1, ParamTypes.SharedInput, [ParamOptions.Lock], "d")\n',
+    '        self.addParam("x", float, ParamTypes.Required)\n'
+    '        self.addParam(("a", "b"), float, ParamTypes.Required)\n'
+    '        for k in "ab":\n            pass\n',
+]
+
+
+@pytest.mark.parametrize("line", KEPT)
+def test_what_the_codemod_keeps_is_kept_here_too(line: str) -> None:
+    """Forks' extensions (a ``(skill, key)`` pair as the key, ``ParamTypes.SharedOutput``,
+    ``remap=``: 11 files of the public repositories) keep the skill where the codemod
+    meets them, with its words, and the file stays plain; the skill beside it converts."""
+    source = HEADER + textwrap.dedent("""
+        class Kept(SkillDescription):
+            def createDescription(self):
+        """) + line + textwrap.dedent("""
+        class Plain(SkillDescription):
+            def createDescription(self):
+                self.addParam("Object", Element("skiros:Product"), ParamTypes.Required)
+        """)
+    fast = read_plain(source.encode(), "a.py")
+    assert isinstance(fast, FileResult)
+    slow = migrate(source, Settings(index=INDEX), "a.py")
+    assert _reported("a.py", source.encode(), fast) == _reported("a.py", source.encode(), slow)
+    assert [(s.name, s.status) for s in fast.skills] == [("Kept", "skipped"),
+                                                          ("Plain", "converted")]
+    assert fast.skills[0].reason == slow.skills[0].reason
+    assert fast.exports == slow.exports == ["Plain"]
 
 
 def test_a_base_from_a_sibling_brings_the_package_along(tmp_path: Path) -> None:

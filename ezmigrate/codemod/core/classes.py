@@ -17,8 +17,12 @@ from __future__ import annotations
 import ast
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-import libcst as cst
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from .lazy_cst import cst
 
 from ..settings import RUNTIME_ROOT
 from .ast_names import ast_dotted_name
@@ -65,7 +69,9 @@ def description_classes(module: cst.Module, names: LegacyNames,
 def ezskiros_classes(module: cst.Module) -> set[str]:
     """Top-level EzSkiROS description classes: deriving from ``ezskiros_runtime``'s
     ``SkillDescription``, directly or through another, without a ``createDescription``."""
-    return _classify(module, LegacyNames.of_module(module), (), (), {})[1]
+    from .cst_facts import legacy_names_of  # libcst's visitor: the reader needs none
+
+    return _classify(module, legacy_names_of(module), (), (), {})[1]
 
 
 def _classify(module: cst.Module, names: LegacyNames, external: Collection[str],

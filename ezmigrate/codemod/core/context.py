@@ -6,10 +6,13 @@ import ast
 import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
-import libcst as cst
-from libcst.metadata import CodeRange, PositionProvider
+if TYPE_CHECKING:
+    import libcst as cst
+    from libcst.metadata import CodeRange
+else:
+    from .lazy_cst import cst
 
 from .ir import CondSpec, ExtractedSkill, Literal, Operation, Unsupported
 from .legacy_names import LegacyNames
@@ -73,18 +76,18 @@ class StatementLines:
         if id(stmt) not in self._positions:
             alone = self.module.with_changes(header=(), body=(stmt,), footer=())
             wrapper = cst.MetadataWrapper(alone, unsafe_skip_copy=True)
-            positions = wrapper.resolve(PositionProvider)
+            positions = wrapper.resolve(cst.metadata.PositionProvider)
             self._positions[id(stmt)] = (
                 positions, self.spans[id(stmt)][0] - positions[stmt].start.line)
         return self._positions[id(stmt)]
 
 
-StatementRule = Callable[[cst.BaseSmallStatement, "ExtractContext"],
+StatementRule = Callable[["cst.BaseSmallStatement", "ExtractContext"],
                          "Sequence[Operation] | None"]
 """Turns one small statement of ``createDescription`` into IR: ``None`` when the statement
 is not its construct, a list of operations (possibly empty) when it handled it, or raises
 ``Unsupported`` with a reason."""
-ConditionRule = Callable[[cst.BaseExpression, "ExtractContext"], "CondSpec | None"]
+ConditionRule = Callable[["cst.BaseExpression", "ExtractContext"], "CondSpec | None"]
 """Turns an expression that builds a condition into a ``CondSpec`` (``None``: not its)."""
 ReadPass = Callable[["list[Operation]"], "list[Operation]"]
 """Runs over a whole ``createDescription``'s operations once it is read."""
@@ -184,7 +187,8 @@ def literal_of(node: cst.BaseExpression, module: cst.Module) -> Literal | None:
     """The literal value of an expression written with literal syntax only."""
     if not _is_literal_shape(node):
         return None
-    if isinstance(node, _LEAVES) and not node.lpar:  # its text is its own: no code pass
+    if isinstance(node, (cst.SimpleString, cst.Integer, cst.Float, cst.Imaginary, cst.Name)) \
+            and not node.lpar:  # its text is its own: no code pass
         code = node.value
         if code in _NAMED:
             return Literal(_NAMED[code], code)
@@ -241,9 +245,6 @@ def module_constants(module: cst.Module, bindings: Mapping[str, int]) -> dict[st
     return found
 
 
-_LEAVES = (cst.SimpleString, cst.Integer, cst.Float, cst.Imaginary, cst.Name)
-
-
 def _is_literal_shape(node: cst.BaseExpression) -> bool:
     """Cheap syntactic pre-check so that ``literal_eval`` only sees literal syntax."""
     if isinstance(node, (cst.SimpleString, cst.ConcatenatedString, cst.Integer, cst.Float,
@@ -295,4 +296,4 @@ def bind_arguments(call: cst.Call, names: Sequence[str], required: int, api: str
 def positions_of(module: cst.Module) -> tuple[cst.Module, Mapping[cst.CSTNode, object]]:
     """Resolve source positions once per module (the wrapper copies the tree)."""
     wrapper = cst.MetadataWrapper(module, unsafe_skip_copy=True)
-    return wrapper.module, wrapper.resolve(PositionProvider)
+    return wrapper.module, wrapper.resolve(cst.metadata.PositionProvider)

@@ -17,7 +17,7 @@ from libcst.metadata import CodeRange
 
 from .context import positions_of
 from .imports import name_counts
-from .legacy_names import LegacyNames
+from .legacy_names import LegacyNames, dotted_name
 from .reader import find_create_description
 from .syntax_facts import ClassFacts, FunctionFacts, Span, SyntaxFacts
 
@@ -29,7 +29,7 @@ def facts_of(module: cst.Module) -> SyntaxFacts:
     bindings: dict[str, int] = {}
     module.visit(_Bindings(bindings))
     classes = [_class(stmt, positions) for stmt in module.body if isinstance(stmt, cst.ClassDef)]
-    return SyntaxFacts(classes, names, bindings, LegacyNames.of_module(module),
+    return SyntaxFacts(classes, names, bindings, legacy_names_of(module),
                        python_parses=False)
 
 
@@ -122,3 +122,46 @@ def _targets(node: cst.BaseExpression) -> list[str]:
     if isinstance(node, (cst.Tuple, cst.List)):
         return [n for e in node.elements for n in _targets(e.value)]
     return []
+
+
+def legacy_names_of(module: cst.Module) -> LegacyNames:
+    """The ``LegacyNames`` of a libcst module: its imports, anywhere in it (legacy files
+    sometimes import inside ``try`` blocks)."""
+    names = LegacyNames()
+    module.visit(_ImportCollector(names))
+    return names
+
+
+class _ImportCollector(cst.CSTVisitor):
+    def __init__(self, names: LegacyNames) -> None:
+        self.names = names
+
+    def visit_Import(self, node: cst.Import) -> None:
+        for alias in node.names:
+            asname = alias.asname
+            local = None
+            if asname is not None and isinstance(asname.name, cst.Name):
+                local = asname.name.value
+            self.names.add_import(_import_name(alias.name), local)
+
+    def visit_ImportFrom(self, node: cst.ImportFrom) -> None:
+        if node.module is None or node.relative:
+            return
+        module = _import_name(node.module)
+        if isinstance(node.names, cst.ImportStar):
+            self.names.add_from_import(module, None)
+            return
+        pairs = []
+        for alias in node.names:
+            name = _import_name(alias.name)
+            local = name
+            if alias.asname is not None and isinstance(alias.asname.name, cst.Name):
+                local = alias.asname.name.value
+            pairs.append((name, local))
+        self.names.add_from_import(module, pairs)
+
+
+def _import_name(node: cst.BaseExpression) -> str:
+    name = dotted_name(node)
+    assert name is not None
+    return name

@@ -23,7 +23,10 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Protocol
 
-import libcst as cst
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from .lazy_cst import cst
 
 from ..settings import DEFAULT_TARGET
 from .ir import AddCondition, CondSpec, ParamOp

@@ -16,8 +16,12 @@ import keyword
 import re
 import unicodedata
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
-import libcst as cst
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from .lazy_cst import cst
 
 from .emit import EmitContext
 from .ir import (

@@ -8,9 +8,12 @@ calls (not the model) in the middle is what lets one rule own one construct end 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import libcst as cst
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from .lazy_cst import cst
 
 
 class Unsupported(Exception):

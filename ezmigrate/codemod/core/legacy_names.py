@@ -8,8 +8,12 @@ module (``import skiros2_common.core.params as params``) or re-exported from
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
-import libcst as cst
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from .lazy_cst import cst
 
 LEGACY_EXPORTS: dict[str, frozenset[str]] = {
     "skiros2_common.core.abstract_skill": frozenset({"SkillDescription", "ParamOptions"}),
@@ -36,13 +40,6 @@ def dotted_name(node: cst.BaseExpression) -> str | None:
     return None
 
 
-
-def _import_name(node: cst.BaseExpression) -> str:
-    name = dotted_name(node)
-    assert name is not None
-    return name
-
-
 def is_legacy_module(module: str) -> bool:
     """True for ``skiros2_common...`` / ``skiros2_skill...`` modules."""
     return module.split(".")[0] in LEGACY_ROOTS
@@ -64,13 +61,6 @@ class LegacyNames:
     def __init__(self) -> None:
         self.symbols: dict[str, str] = {}
         self.modules: dict[str, str] = {}
-
-    @classmethod
-    def of_module(cls, module: cst.Module) -> LegacyNames:
-        names = cls()
-        visitor = _ImportCollector(names)
-        module.visit(visitor)
-        return names
 
     def add_from_import(self, module: str, aliases: Iterable[tuple[str, str]] | None) -> None:
         """Record ``from module import name as alias`` (``aliases`` None means ``*``)."""
@@ -132,32 +122,3 @@ class LegacyNames:
     def local_names_for(self, symbol: str) -> set[str]:
         """Every local name bound directly to ``symbol``."""
         return {alias for alias, sym in self.symbols.items() if sym == symbol}
-
-
-class _ImportCollector(cst.CSTVisitor):
-    def __init__(self, names: LegacyNames) -> None:
-        self.names = names
-
-    def visit_Import(self, node: cst.Import) -> None:
-        for alias in node.names:
-            asname = alias.asname
-            local = None
-            if asname is not None and isinstance(asname.name, cst.Name):
-                local = asname.name.value
-            self.names.add_import(_import_name(alias.name), local)
-
-    def visit_ImportFrom(self, node: cst.ImportFrom) -> None:
-        if node.module is None or node.relative:
-            return
-        module = _import_name(node.module)
-        if isinstance(node.names, cst.ImportStar):
-            self.names.add_from_import(module, None)
-            return
-        pairs = []
-        for alias in node.names:
-            name = _import_name(alias.name)
-            local = name
-            if alias.asname is not None and isinstance(alias.asname.name, cst.Name):
-                local = alias.asname.name.value
-            pairs.append((name, local))
-        self.names.add_from_import(module, pairs)

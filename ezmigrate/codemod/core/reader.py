@@ -7,16 +7,21 @@ on run time. Comments are collected with the statement they stand above.
 
 from __future__ import annotations
 
-import libcst as cst
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from .lazy_cst import cst
 
 from .context import ExtractContext
 from .ir import CommentOnly, Comments, ExtractedSkill, Operation, Unsupported
 
-COMPOUND_REASONS: dict[type, str] = {
-    cst.For: "a loop", cst.While: "a loop", cst.If: "a conditional",
-    cst.Try: "a try block", cst.With: "a with block", cst.FunctionDef: "a nested function",
-    cst.ClassDef: "a nested class",
+COMPOUND_REASONS: dict[str, str] = {
+    "For": "a loop", "While": "a loop", "If": "a conditional", "Try": "a try block",
+    "With": "a with block", "FunctionDef": "a nested function", "ClassDef": "a nested class",
 }
+"""What a compound statement in ``createDescription`` is, by its libcst node's name."""
 
 
 def find_create_description(classdef: cst.ClassDef) -> cst.FunctionDef | None:
@@ -76,7 +81,7 @@ def read_operations(func: cst.FunctionDef, bound: frozenset[str], ctx: ExtractCo
             ctx.skill.docstring = stmt
             continue
         if not isinstance(stmt, cst.SimpleStatementLine):
-            what = COMPOUND_REASONS.get(type(stmt), "a compound statement")
+            what = COMPOUND_REASONS.get(type(stmt).__name__, "a compound statement")
             raise Unsupported(f"{what} at line {ctx.line(stmt)}: parameters or conditions made "
                               "there depend on run time; unroll it by hand, then migrate", stmt)
         comments = Comments(leading=list(stmt.leading_lines),

@@ -12,6 +12,7 @@ import builtins
 from collections.abc import Iterable
 from typing import Any
 
+from ezskiros_runtime.compare import compare
 from ezskiros_runtime.legacy import abstract_skill
 from ezskiros_runtime.legacy.extract import model_of
 from ezskiros_runtime.legacy.params import ParamTypes
@@ -85,3 +86,20 @@ def replay(name: str, operations: Iterable[Operation]) -> SkillModel:
     cls = type(name, (abstract_skill.SkillDescription,), {"createDescription": create_description})
     return model_of(cls())
 
+
+def checked_model(name: str, operations: list[Operation], params: list[ParamOp]) -> SkillModel:
+    """The static legacy model; refused when the EzSkiROS form would lower to another one.
+
+    The EzSkiROS form declares ``params`` first, then the conditions in order.
+    """
+    legacy = replay(name, operations)
+    conditions = [op for op in operations if isinstance(op, AddCondition)]
+    lowered = replay(name, [*params, *conditions])
+    differences = compare(legacy, lowered)
+    if differences:
+        raise Unsupported(
+            "ParamOptions expand at the point of addParam, after conditions added earlier; "
+            "EzSkiROS declares all parameters first, which would reorder conditions ("
+            + str(differences[0]).splitlines()[0] + "). Move the addParam calls above the "
+            "conditions by hand if the order does not matter to you, then migrate")
+    return legacy

@@ -13,8 +13,12 @@ Legacy (legacy-skiros2-api.md §3, §8)           EzSkiROS (docs/dsl.md)
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
-import libcst as cst
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from ..core.lazy_cst import cst
 
 from ..core.context import ExtractContext, bind_arguments
 from ..core.emit import EmitContext

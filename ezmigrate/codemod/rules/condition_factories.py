@@ -15,9 +15,12 @@ A label that the convention would not produce is written with ``.named("...")``.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import libcst as cst
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from ..core.lazy_cst import cst
 
 from ezskiros_runtime.labels import conventional_label
 

@@ -9,7 +9,12 @@ Legacy                                        EzSkiROS
 
 from __future__ import annotations
 
-import libcst as cst
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from ..core.lazy_cst import cst
 
 from ..core.context import ExtractContext, bind_arguments
 from ..core.emit import EmitContext

@@ -7,7 +7,12 @@ trailing ``return`` carry no meaning and are dropped.
 
 from __future__ import annotations
 
-import libcst as cst
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from ..core.lazy_cst import cst
 
 from ..core.context import ExtractContext
 from ..core.ir import CondSpec, KeptStatement, Operation, Unsupported

@@ -11,7 +11,12 @@ cannot be written statically and makes the skill skipped.
 
 from __future__ import annotations
 
-import libcst as cst
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from ..core.lazy_cst import cst
 
 from ..core.context import ExtractContext
 from ..core.ir import CommentOnly, KeptStatement, Operation

@@ -12,9 +12,12 @@ Or-conditions are always labelled "or", so no ``.named`` is ever written for the
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import libcst as cst
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from ..core.lazy_cst import cst
 
 from ..core.context import ExtractContext, bind_arguments
 from ..core.emit import EmitContext

@@ -12,8 +12,12 @@ Only bases whose description was extracted (same module or package) can be inlin
 from __future__ import annotations
 
 import copy
+from typing import TYPE_CHECKING
 
-import libcst as cst
+if TYPE_CHECKING:
+    import libcst as cst
+else:
+    from ..core.lazy_cst import cst
 
 from ..core.context import ExtractContext
 from ..core.ir import CommentOnly, Comments, Operation, Unsupported
