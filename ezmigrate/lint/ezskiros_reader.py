@@ -24,8 +24,7 @@ from __future__ import annotations
 import ast
 
 from ..codemod.core.ast_names import ast_dotted_name
-from ..codemod.core.classes import ast_positional_bases
-from ..codemod.core.legacy_names import is_legacy_module
+from ..codemod.core.classes import ast_foreign_bases, ast_positional_bases
 from ..codemod.core.syntax_facts import SyntaxFacts
 from ..report.results import FileResult
 
@@ -43,28 +42,4 @@ def read_ezskiros(tree: ast.Module, path: str) -> FileResult | None:
             if legacy.symbol_named(name) == "SkillDescription" or (
                     name is not None and (name in local or name.split(".")[0] in local)):
                 return None
-    return FileResult(path, foreign_bases=_foreign_bases(tree, classes))
-
-
-def _foreign_bases(tree: ast.Module, classes: list[ast.ClassDef]) -> list[tuple[str, str]]:
-    """``migrate.foreign_bases`` read from ``ast``: ``(base, module)`` for each class base
-    (starred ones too, as libcst lists them) named by a top-level ``from`` import of a
-    user module, spelt ``"Name as Alias"`` when imported under another name."""
-    imported: dict[str, tuple[str, str]] = {}
-    for node in tree.body:
-        if not isinstance(node, ast.ImportFrom) or node.names[0].name == "*":
-            continue
-        source = "." * node.level + (node.module or "")
-        if node.level or not is_legacy_module(source):
-            for alias in node.names:
-                if alias.asname is not None and alias.asname != alias.name:
-                    imported[alias.asname] = (f"{alias.name} as {alias.asname}", source)
-                else:
-                    imported[alias.name] = (alias.name, source)
-    found = []
-    for node in classes:
-        for base in node.bases:
-            named = base.value if isinstance(base, ast.Starred) else base
-            if isinstance(named, ast.Name) and named.id in imported:
-                found.append(imported[named.id])
-    return found
+    return FileResult(path, foreign_bases=ast_foreign_bases(tree, classes))

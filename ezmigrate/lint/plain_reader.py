@@ -24,6 +24,7 @@ import re
 from dataclasses import dataclass
 
 from ..codemod.core.ast_names import ast_dotted_name
+from ..codemod.core.classes import ast_foreign_bases
 from ..codemod.core.declared import static_description
 from ..codemod.core.function import emitted_params
 from ..codemod.core.ir import (
@@ -38,7 +39,7 @@ from ..codemod.core.ir import (
     TypeValue,
     Unsupported,
 )
-from ..codemod.core.legacy_names import LegacyNames, is_legacy_module
+from ..codemod.core.legacy_names import LegacyNames
 from ..codemod.core.replay import checked_model
 from ..codemod.core.syntax_facts import note_binding, note_import
 from ..codemod.rules.add_param import (
@@ -69,11 +70,6 @@ class _Kept(Exception):
         self.reason = reason
 
 
-class _CrossFile(_Declined):
-    """A class derives from a name imported from a user module: maybe a description of a
-    sibling file, which only the codemod's package pass can tell."""
-
-
 @dataclass(frozen=True)
 class Declined:
     """The file is not plain; ``cross_file``: the codemod must see its whole package."""
@@ -87,19 +83,26 @@ def read_plain(data: bytes, path: str, tree: ast.Module | None = None) -> FileRe
 
     Declined also for a file the codemod must judge itself: one that ``ast`` cannot parse
     (the codemod says why). The caller keeps files using ``ezskiros_runtime`` away.
+
+    A class deriving from a name a user module exports may derive from a description of
+    another file: the result names those bases (``foreign_bases``, as the codemod's first
+    reading does), for the cross-file pass to resolve with the files around it.
     """
     try:
         tree = tree or ast.parse(data)
+    except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
+        return Declined()
+    classes = [node for node in tree.body if isinstance(node, ast.ClassDef)]
+    foreign = ast_foreign_bases(tree, classes)
+    try:
         names = _legacy_names(tree, data)
         constants = _Constants(tree)
         skills = [_skill(node, names, constants, data)
-                  for node in _description_classes(tree, names)]
-    except _CrossFile:
-        return Declined(cross_file=True)
+                  for node in _description_classes(classes, names)]
     except (_Declined, Unsupported, SyntaxError, ValueError, UnicodeError, LookupError,
             MemoryError, RecursionError):
-        return Declined()
-    return FileResult(path=path, skills=skills,
+        return Declined(cross_file=bool(foreign))
+    return FileResult(path=path, skills=skills, foreign_bases=foreign,
                       exports=[s.name for s in skills if s.status == "converted"])
 
 
@@ -111,29 +114,18 @@ def _legacy_names(tree: ast.Module, data: bytes) -> LegacyNames:
     return names
 
 
-def _user_imports(tree: ast.Module) -> set[str]:
-    """Names bound by ``from X import name`` where X is relative or not SkiROS2 (bases
-    the codemod resolves across files: ``ezmigrate.codemod.migrate.foreign_bases``)."""
-    found: set[str] = set()
-    for node in tree.body:
-        if isinstance(node, ast.ImportFrom) and (node.level or not is_legacy_module(
-                node.module or "")):
-            found.update(a.asname or a.name for a in node.names if a.name != "*")
-    return found
-
-
-def _description_classes(tree: ast.Module, names: LegacyNames) -> list[ast.ClassDef]:
-    """Top-level classes deriving directly from the legacy ``SkillDescription``."""
-    imported = _user_imports(tree)
+def _description_classes(classes: list[ast.ClassDef], names: LegacyNames
+                         ) -> list[ast.ClassDef]:
+    """Top-level classes deriving directly from the legacy ``SkillDescription``; a class
+    deriving from another class of the module declines (the codemod inlines its base), and
+    so does ``class A(metaclass=M, *bases)``, which Python reads and libcst refuses."""
     found: list[ast.ClassDef] = []
     local: set[str] = set()
-    for node in tree.body:
-        if not isinstance(node, ast.ClassDef):
-            continue
+    for node in classes:
+        if node.keywords and any(isinstance(b, ast.Starred) for b in node.bases):
+            raise _Declined
         spelled = [ast_dotted_name(b) for b in node.bases]
         direct = [s for s in spelled if names.symbol_named(s) == "SkillDescription"]
-        if any(s in imported for s in spelled):
-            raise _CrossFile
         if any(s in local for s in spelled):
             raise _Declined  # a description through another one
         if not direct:

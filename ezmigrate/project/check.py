@@ -183,6 +183,10 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
                 declined.append((candidate, data))
                 if reading.static.cross_file:
                     whole_package.add(candidate.root)
+            elif reading.static.foreign_bases:  # read, but its bases may be a sibling's:
+                declined.append((candidate, data))  # the cross-file pass takes it as read
+                whole_package.add(candidate.root)
+                alone[str(candidate.path)] = (data, reading.static)
             else:
                 plain.append((candidate, data, reading.static))
     yield from plain

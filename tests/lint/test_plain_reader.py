@@ -52,6 +52,7 @@ def _compare_tree(root: Path) -> tuple[int, int]:
         accepted += 1
         slow = migrate(data, Settings(index=INDEX), path.name)
         assert _reported(str(path), data, fast) == _reported(str(path), data, slow), path
+        assert (fast.foreign_bases, fast.exports) == (slow.foreign_bases, slow.exports), path
     return accepted, considered
 
 
@@ -246,7 +247,8 @@ def test_what_the_codemod_keeps_is_kept_here_too(line: str) -> None:
 
 def test_a_base_from_a_sibling_brings_the_package_along(tmp_path: Path) -> None:
     """``child.py`` derives from a plain description of ``base.py``: only the codemod's
-    package pass knows; ``check`` must report the child's skill (not keep it)."""
+    package pass knows (the plain reader names the base it imports, as the codemod's first
+    reading does); ``check`` must report the child's skill (not keep it)."""
     pkg = tmp_path / "pkg"
     pkg.mkdir()
     (pkg / "__init__.py").write_text("")
@@ -261,7 +263,9 @@ def test_a_base_from_a_sibling_brings_the_package_along(tmp_path: Path) -> None:
                 Move.createDescription(self)
                 self.addParam("Speed", 1.0, ParamTypes.Optional, "fast")
         """))
-    assert isinstance(read_plain((pkg / "child.py").read_bytes(), "child.py"), Declined)
+    child = read_plain((pkg / "child.py").read_bytes(), "child.py")
+    assert isinstance(child, FileResult)  # read, with nothing described yet: its base
+    assert (child.skills, child.foreign_bases) == ([], [("Move", ".base")])  # is a sibling's
     diagnostics, skills = _diagnostics([tmp_path])
     assert skills == 2
     assert any("child.py" in d and "EZ101" in d and "MoveFast" in d for d in diagnostics)

@@ -26,7 +26,7 @@ else:
 
 from ..settings import RUNTIME_ROOT
 from .ast_names import ast_dotted_name
-from .legacy_names import LegacyNames, dotted_name
+from .legacy_names import LegacyNames, dotted_name, is_legacy_module
 from .reader import class_bindings
 
 
@@ -151,6 +151,30 @@ def positional_bases(stmt: cst.ClassDef) -> list[cst.Arg]:
 def ast_positional_bases(node: ast.ClassDef) -> list[ast.expr]:
     """``positional_bases`` as ``ast`` reads the class (keywords are apart already)."""
     return [base for base in node.bases if not isinstance(base, ast.Starred)]
+
+
+def ast_foreign_bases(tree: ast.Module, classes: list[ast.ClassDef]) -> list[tuple[str, str]]:
+    """``migrate.foreign_bases`` read from ``ast``: ``(base, module)`` for each class base
+    (starred ones too, as libcst lists them) named by a top-level ``from`` import of a
+    user module, spelt ``"Name as Alias"`` when imported under another name."""
+    imported: dict[str, tuple[str, str]] = {}
+    for node in tree.body:
+        if not isinstance(node, ast.ImportFrom) or node.names[0].name == "*":
+            continue
+        source = "." * node.level + (node.module or "")
+        if node.level or not is_legacy_module(source):
+            for alias in node.names:
+                if alias.asname is not None and alias.asname != alias.name:
+                    imported[alias.asname] = (f"{alias.name} as {alias.asname}", source)
+                else:
+                    imported[alias.name] = (alias.name, source)
+    found = []
+    for node in classes:
+        for base in node.bases:
+            named = base.value if isinstance(base, ast.Starred) else base
+            if isinstance(named, ast.Name) and named.id in imported:
+                found.append(imported[named.id])
+    return found
 
 
 def _runtime_bound(tree: ast.Module) -> set[str]:
