@@ -11,6 +11,7 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -113,7 +114,8 @@ def _legacy(path: str, result: FileResult, positions: Positions,
 
 def read_statically(candidates: list[Candidate], workers: int, index: OntologyIndex | None,
                     on_facts: Callable[[Candidate, bytes, FileFacts], None] | None = None,
-                    cache: FactsCache | None = None, reader: ReadingPool | None = None
+                    cache: FactsCache | None = None, reader: ReadingPool | None = None,
+                    on_trace: Callable[[], None] | None = None
                     ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
     """What every legacy description declares, without importing user code.
 
@@ -124,11 +126,12 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     description are read, never parsed. ``on_facts`` (when given) sees what the compound
     pass and the implementation checks read of each parsed file (``file_facts``); ``cache``
     keeps those readings, and the codemod's, by content (``facts_cache``); ``reader``
-    parses the files the cache lacks in its workers (``reading_pool``). Files come out in
-    the order given, the codemod's last.
+    parses the files the cache lacks in its workers (``reading_pool``), and calls
+    ``on_trace`` as soon as one of them holds a tree to trace. Files come out in the order
+    given, the codemod's last.
     """
     from ..compound.repository import SCAN_WHEN
-    from ..lint.plain_reader import Declined  # libcst: only a run that reads files
+    from ..lint.plain_reader import Declined
     from .file_facts import FileFacts, file_facts
 
     compounds = on_facts is not None
@@ -156,7 +159,7 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
         else:
             missing.append((candidate, data, verdict, key))
     items: list[tuple[Candidate, bytes, bool | None]] = [(c, d, v) for c, d, v, _ in missing]
-    made = reader.read_files(items, compounds) if reader is not None \
+    made = reader.read_files(items, compounds, on_trace) if reader is not None \
         else [(file_facts(c, d, compounds, v), None) for c, d, v in items]
     for (candidate, data, _, key), (found, own) in zip(missing, made, strict=True):
         facts[candidate.path] = found
@@ -310,12 +313,21 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     if progress is not None:
         progress(f"checking {len(candidates)} files")
     trees = None
-    standby: list[Standby] = []  # started by the static pass when a tree needs tracing
+    standby: list[Standby] = []  # started as soon as a tree needs tracing
+    starting = threading.Lock()
+
+    def start_tracing() -> None:
+        """Start the tracing worker once: as soon as the reading meets a tree to trace (in
+        the reading pool's thread when a worker read it), or the compound pass does."""
+        with starting:
+            if trace and not standby:
+                standby.append(Standby(pool, 1))
+
     if compounds:
         from ..compound.analysis import Trees
 
         listed = launch.listed("skill_list") if launch is not None else None
-        trees = Trees(on_first_trace=lambda: standby.append(Standby(pool, 1)),
+        trees = Trees(on_first_trace=start_tracing,
                       named=tuple(paths), exclude=exclude,
                       launched=frozenset(listed) if listed is not None else None,
                       libraries=frozenset(launch.listed("libraries_list") or ())
@@ -330,7 +342,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     try:
         with frozen_heap():
             outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
-                           standby, world, cache_dir, trace, facts, reader)
+                           standby, world, cache_dir, trace, facts, reader,
+                           start_tracing if trees is not None else None)
             outcome.files += len(world.scenes)
             outcome.diagnostics = as_the_robot_resolves(
                 outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
@@ -388,9 +401,11 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
          standby: list[Standby], world: WorldRun,
          cache_dir: Path | None = None, trace: bool = True,
          facts_cache: FactsCache | None = None,
-         reader: ReadingPool | None = None) -> CheckOutcome:
+         reader: ReadingPool | None = None,
+         start_tracing: Callable[[], None] | None = None) -> CheckOutcome:
     """``run_check`` once its compound pass (``trees``) is set up, with the heap it started
-    with frozen (``frozen_heap``)."""
+    with frozen (``frozen_heap``); ``start_tracing``: what the reading calls when it meets
+    a tree to trace."""
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
     results: list[tuple[Candidate, FileResult]] = []
@@ -419,7 +434,7 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     with line:  # erased before the next message
         for candidate, data, result in read_statically(
                 candidates, pool.workers, index, at_hand if trees is not None else None,
-                facts_cache, reader):
+                facts_cache, reader, start_tracing):
             path = str(candidate.path)
             read.append((candidate, data))
             results.append((candidate, result))

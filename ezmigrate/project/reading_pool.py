@@ -22,12 +22,13 @@ plain imports it nowhere.
 from __future__ import annotations
 
 import multiprocessing
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..compound.static import NeedsTrace
 from ..lint.plain_reader import Declined
 from ..report.results import FileResult
 from .file_facts import FileFacts, file_facts
@@ -85,6 +86,19 @@ def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds
     return _read_files(items, compounds, None)
 
 
+def _to_trace(readings: list[Reading]) -> bool:
+    """Whether a file read holds a compound tree its syntax does not give."""
+    return any(facts.trees is not None and any(isinstance(f, NeedsTrace) for f in
+                                               facts.trees.found) for facts, _ in readings)
+
+
+def _traced(done: Future[list[Reading]], on_trace: Callable[[], None]) -> None:
+    """``on_trace`` for a worker's chunk that holds a tree to trace (a chunk cancelled or
+    lost says nothing: its files are read again in the main process)."""
+    if not done.cancelled() and done.exception() is None and _to_trace(done.result()):
+        on_trace()
+
+
 class ReadingPool:
     """Forked readers for one run: ``workers`` processes read, the main one among them
     (so one fewer is forked; ``workers`` under two: none, the main reads alone). ``settings``:
@@ -131,11 +145,13 @@ class ReadingPool:
                 seed_scene(path, *parsed)
         self._scenes = []
 
-    def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
-                   ) -> list[Reading]:
+    def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
+                   on_trace: Callable[[], None] | None = None) -> list[Reading]:
         """``file_facts`` of each ``(candidate, bytes, the prefilter's text verdict)``, and
         the codemod's reading of those the plain reader declines (``_read_files``), in
-        order: in the workers when there are enough."""
+        order: in the workers when there are enough. ``on_trace`` is called when a chunk
+        read holds a tree to trace, as soon as it is read (from the pool's thread for a
+        worker's chunk): the tracing worker starts while the files are still being read."""
         settings = self.settings
         pool = self._executor() if len(items) >= SHARED_FROM else None
         if pool is None:
@@ -145,12 +161,17 @@ class ReadingPool:
         starts = list(range(0, len(items), size))
         futures = {start: pool.submit(_read_in_worker, items[start:start + size], compounds)
                    for start in starts}
+        if on_trace is not None:
+            for future in futures.values():
+                future.add_done_callback(lambda done: _traced(done, on_trace))
         self._start_scenes()
         mine: dict[int, list[Reading]] = {}
         for start in reversed(starts):  # the main takes chunks from the end, while no
             if not futures[start].cancel():  # worker has started them: the share each
                 break  # does is what it gets through, whatever a chunk costs
             mine[start] = _read_files(items[start:start + size], compounds, settings)
+            if on_trace is not None and _to_trace(mine[start]):
+                on_trace()
         found: list[Reading] = []
         for start in starts:
             if start in mine:
