@@ -414,7 +414,7 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     cached = seed_scenes(facts_cache, world.scenes) if facts_cache is not None else set()
     if reader is not None:
         reader.parse_scenes([scene for scene in world.scenes if scene not in cached])
-    facts: dict[Path, ModuleFacts] = {}
+    facts: dict[Path, ModuleFacts | None] = {}  # None: ``ast`` cannot read the file
 
     def at_hand(candidate: Candidate, data: bytes, found: FileFacts) -> None:
         """What the compound pass and the implementation checks read of a file (of a
@@ -430,6 +430,8 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
             trees.parsed.add(str(candidate.path))
         if found.implementation is not None:
             facts[candidate.path] = found.implementation
+        elif found.described and not found.parsed:  # parsing it again would fail again
+            facts[candidate.path] = None
 
     with line:  # erased before the next message
         for candidate, data, result in read_statically(
@@ -506,7 +508,8 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     # work: the checks inside them, or an EZ105/EZ209 to judge
     judging = any(d.code in (UNINFERABLE, UNKNOWN) for d in outcome.diagnostics)
     implementing = [(c, found) for c, data in read if b"setDescription" in data
-                    for found in (facts.get(c.path) or _facts_of(data),) if found is not None] \
+                    for found in (facts[c.path] if c.path in facts else _facts_of(data),)
+                    if found is not None] \
         if compound.skills is not None or judging else []
     if compound.skills is not None:
         outcome.diagnostics += _implementations(implementing, compound.skills, index, world,

@@ -75,6 +75,8 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
         return FileFacts(FileResult(path=candidate.relative), described=False,
                          trees=tree_facts(tree, str(candidate.path))
                          if tree is not None and read_when else None,
+                         implementation=module_facts(tree, data)
+                         if tree is not None and b"setDescription" in data else None,
                          unparsed=(recover_classes(data),) if scanned and tree is None
                          else None, parsed=tree is not None)
     tree = parse(data)
