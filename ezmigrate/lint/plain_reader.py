@@ -189,7 +189,7 @@ def _skill(node: ast.ClassDef, names: LegacyNames, constants: _Constants,
             reader.statement(stmt)
     except _Kept as kept:  # ``migrate._plan``: the skill is kept, with the reason
         return SkillResult(node.name, node.lineno, "skipped", reason=kept.reason)
-    params = emitted_params(skill)
+    params = emitted_params(skill, comments=False)  # a signature's: never written here
     _emittable(skill)
     try:
         model = checked_model(node.name, skill.operations, params)

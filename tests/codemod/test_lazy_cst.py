@@ -3,7 +3,7 @@
 
 ``check`` reads plain descriptions through the codemod's IR and rules, whose modules bind
 ``cst`` to a stand-in: a run whose files are all plain never pays libcst's import, and in
-a run with declined files only the main process imports it (``reading_pool``). Each case
+a run with a few declined files only the main process imports it (``reading_pool``). Each case
 runs the real command in a fresh interpreter (this one has libcst imported already) and
 asks, at its exit, which of its processes imported libcst.
 """
@@ -16,6 +16,7 @@ import textwrap
 from pathlib import Path
 
 from ezmigrate.codemod.core.lazy_cst import cst
+from ezmigrate.project.reading_pool import TAKES_ON
 
 HEADER = """\
 from skiros2_common.core.abstract_skill import SkillDescription
@@ -27,6 +28,7 @@ PLAIN = HEADER + textwrap.dedent("""
     class Pick{n}(SkillDescription):
         def createDescription(self):
             self.addParam("Object", Element("skiros:Product"), ParamTypes.Required)
+            self.addParam("Speed", 0.5, ParamTypes.Optional, "m/s")  # a comment, migrated
     """)
 
 DECLINED = HEADER + textwrap.dedent("""
@@ -82,12 +84,21 @@ def test_plain_files_import_no_libcst(tmp_path: Path) -> None:
     assert not main and not any(workers)
 
 
-def test_declined_files_import_it_in_the_main_process_alone(tmp_path: Path) -> None:
+def test_a_few_declined_files_import_it_in_the_main_process_alone(tmp_path: Path) -> None:
     files = {f"pick{n}.py": PLAIN.format(n=n) for n in range(40)}
-    files.update({f"place{n}.py": DECLINED.format(n=n) for n in range(0, 40, 4)})
+    files.update({f"place{n}.py": DECLINED.format(n=n)
+                  for n in range(0, 40, 40 // (TAKES_ON - 1))[:TAKES_ON - 1]})
     main, workers = _imported(tmp_path, files, jobs=2)
     assert workers
     assert main and not any(workers)
+
+
+def test_many_declined_files_import_it_in_every_reader(tmp_path: Path) -> None:
+    """A worker that meets ``TAKES_ON`` of them reads them itself: both cores on them."""
+    files = {f"place{n:02}.py": DECLINED.format(n=n) for n in range(60)}
+    main, workers = _imported(tmp_path, files, jobs=2)
+    assert workers
+    assert main and all(workers)
 
 
 def test_the_stand_in_is_libcst() -> None:

@@ -5,6 +5,7 @@ a call made in a worker is not seen there."""
 
 from __future__ import annotations
 
+import os
 import subprocess
 from pathlib import Path
 
@@ -81,6 +82,23 @@ def test_a_declined_file_is_migrated_once_in_the_turn_it_is_read(
     log.unlink()
     assert _findings(tree, 1) == shared
     assert sorted(logged(log)) == sorted(names)
+
+
+def test_a_worker_that_meets_many_declined_files_takes_them_on(
+        tree: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A worker leaves its first declined files to the main process (one libcst import for
+    all), and from the ``TAKES_ON``-th on reads them itself, those it left included: both
+    processes migrate, each file once, and the findings are one process's."""
+    log = tmp_path / "migrated.log"
+    log_calls(monkeypatch, runner, "migrate_file", log,
+              lambda relative, *_: f"{os.getpid()} {relative}")
+    shared = _findings(tree, 2)
+    noted = [line.split(" ", 1) for line in logged(log)]
+    names = [name for _, name in noted]
+    assert len(names) == len(set(names)) >= 2 * reading_pool.TAKES_ON
+    pids = {pid for pid, _ in noted}
+    assert str(os.getpid()) in pids and len(pids) == 2  # the main process and the worker
+    assert _findings(tree, 1) == shared
 
 
 def test_each_file_is_read_once_by_whoever_takes_its_chunk(

@@ -51,8 +51,9 @@ def _expands_options(op: ParamOp) -> bool:
     return bool(op.options) and isinstance(op.value, ElementValue) and not op.value.is_class
 
 
-def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
-    """The signature's parameters, in order.
+def emitted_params(skill: ExtractedSkill, comments: bool = True) -> list[ParamOp]:
+    """The signature's parameters, in order (``comments`` False: without the comments the
+    signature would carry, for a reader that writes nothing, ``lint/plain_reader.py``).
 
     A key declared again replaces the first declaration in its position (§8.3), so when
     the first one expanded no options the second is simply written in the first's place,
@@ -66,7 +67,8 @@ def emitted_params(skill: ExtractedSkill) -> list[ParamOp]:
     params: list[ParamOp] = []
     for declared_op in skill.params():
         op = replace(declared_op, comments=kept_text(declared_op.comments,
-                                                     declared_op.options_text))
+                                                     declared_op.options_text)) \
+            if comments else declared_op
         earlier = next((i for i, p in enumerate(params) if p.key == op.key), None)
         between = params[earlier + 1:] if earlier is not None else []
         if earlier is not None and not _expands_options(params[earlier]) \
