@@ -40,7 +40,7 @@ from ..codemod.core.ir import (
     Unsupported,
 )
 from ..codemod.core.legacy_names import LegacyNames
-from ..codemod.core.replay import checked_model
+from ..codemod.core.replay import checked_model, replay
 from ..codemod.core.syntax_facts import note_binding, note_import
 from ..codemod.rules.add_param import (
     ARGUMENTS,
@@ -179,6 +179,9 @@ def _shares_a_line(stmt: ast.stmt, lines: list[tuple[int, int]]) -> bool:
 def _skill(node: ast.ClassDef, names: LegacyNames, constants: _Constants,
            data: bytes) -> SkillResult:
     func = _create_description(node)
+    if func is None:  # ``migrate._plan``: a description declaring nothing converts as is
+        return SkillResult(node.name, node.lineno, "converted",
+                           model=replay(node.name, []).to_json())
     skill = ExtractedSkill(node.name, node.lineno)
     reader = _Reader(names, func.args.args[0].arg, skill, constants, node.name, data)
     try:
@@ -200,12 +203,15 @@ def _skill(node: ast.ClassDef, names: LegacyNames, constants: _Constants,
                        findings=[ReviewFinding(k, ln, m) for k, ln, m in skill.findings])
 
 
-def _create_description(node: ast.ClassDef) -> ast.FunctionDef:
-    """The class's only member besides a docstring, taking ``self`` alone."""
+def _create_description(node: ast.ClassDef) -> ast.FunctionDef | None:
+    """The class's only member besides a docstring, taking ``self`` alone; None for a class
+    with none (a docstring, ``pass``: a description that declares nothing)."""
     body = node.body
     if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant) \
             and isinstance(body[0].value.value, str):
         body = body[1:]
+    if all(isinstance(stmt, ast.Pass) for stmt in body):
+        return None
     if len(body) != 1 or not isinstance(body[0], ast.FunctionDef):
         raise _Declined
     func = body[0]

@@ -12,6 +12,7 @@ them from one run to the next.
 from __future__ import annotations
 
 import ast
+import re
 from dataclasses import dataclass
 
 from ..compound.analysis import TreeFacts, tree_facts
@@ -39,8 +40,9 @@ class FileFacts:
     description is read in it; ``trees`` then holds what the compound pass will take of
     it, if it parses (``Trees.prepared``)."""
     settled: FileResult | None = None
-    """For a declined EzSkiROS file, the codemod's reading when the syntax alone gives it
-    (``ezskiros_reader``): ``settle`` takes it instead of parsing the file with libcst."""
+    """For a declined file, the codemod's reading when the syntax alone gives it (an
+    EzSkiROS file: ``ezskiros_reader``; a Python 2 statement: ``refused``): ``settle``
+    takes it instead of parsing the file with libcst."""
     unparsed: tuple[Recovered] | None = None
     """For a file ``ast`` cannot parse (Python 2) that the repository scan reads
     (``SCAN_WHEN``), what ``recover_classes`` makes of it (one item: it may itself be
@@ -52,10 +54,38 @@ class FileFacts:
 
 def parse(data: bytes) -> ast.Module | None:
     """The module's syntax tree, or None when ``ast`` cannot read it (the codemod says why)."""
+    tree = _parse(data)
+    return tree if isinstance(tree, ast.Module) else None
+
+
+def _parse(data: bytes) -> ast.Module | SyntaxError | None:
+    """``parse``, with the error when ``ast`` refuses the syntax."""
     try:
         return ast.parse(data)
-    except (SyntaxError, ValueError, UnicodeError, LookupError, MemoryError, RecursionError):
+    except SyntaxError as error:
+        return error
+    except (ValueError, UnicodeError, LookupError, MemoryError, RecursionError):
         return None
+
+
+_STATEMENT = re.compile(r"Missing parentheses in call to '(print|exec)'")
+
+
+def refused(relative: str, data: bytes, error: SyntaxError) -> FileResult | None:
+    """The codemod's reading of a file ``ast`` refuses with ``error``, when the error alone
+    gives it: a Python 2 ``print x`` or ``exec code`` statement.
+
+    The codemod then tries libcst (which reads syntax newer than this Python), and when
+    libcst refuses the file too it reports the error as ``ast`` words it
+    (``migrate.syntax_error_location``). No Python 3 grammar has those statements, libcst's
+    neither, so its answer is known without it: 3 of the 8 files the public repositories
+    still gave the codemod. Any other error (``except X, e:``, which libcst reads as Python
+    3.14's ``except A, B:``) is left to the codemod.
+    """
+    if not error.lineno or not _STATEMENT.match(error.msg or "") or b"\0" in data:
+        return None
+    return FileResult(relative, error=f"cannot parse: {error.msg} (line {error.lineno}, "
+                      f"column {error.offset or 1})", error_line=error.lineno)
 
 
 def file_facts(candidate: Candidate, data: bytes, compounds: bool,
@@ -79,9 +109,12 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
                          if tree is not None and b"setDescription" in data else None,
                          unparsed=(recover_classes(data),) if scanned and tree is None
                          else None, parsed=tree is not None)
-    tree = parse(data)
-    if tree is None:
-        return FileFacts(Declined(), unparsed=(recover_classes(data),) if scanned else None)
+    parsed = _parse(data)
+    if not isinstance(parsed, ast.Module):
+        return FileFacts(Declined(), settled=refused(candidate.relative, data, parsed)
+                         if isinstance(parsed, SyntaxError) else None,
+                         unparsed=(recover_classes(data),) if scanned else None)
+    tree = parsed
     runtime = RUNTIME_MARKER in data
     static = read_plain(data, candidate.relative, tree) if not runtime else Declined()
     settled = read_ezskiros(tree, candidate.relative) if runtime else None

@@ -144,10 +144,16 @@ def test_module_constants_are_read_as_the_codemod_reads_them() -> None:
     '        """Doc."""\n        pass\n',
     "class A(SkillDescription):\n    def createDescription(self):\n        pass\n"
     '        self.addParam("x", float, ParamTypes.Required)\n        pass\n',
+    "class A(SkillDescription):\n    pass\n",
+    'class A(SkillDescription):\n    """Doc."""\n',
+    'class A(SkillDescription):\n    """Doc."""\n    pass\n    pass\n'
+    'class B(SkillDescription):\n    def createDescription(self):\n'
+    '        self.addParam("x", float, ParamTypes.Required)\n',
 ])
 def test_pass_is_read_as_the_codemod_drops_it(body: str) -> None:
     """An empty description (``pass``, met in 11 files of the public repositories) is
-    plain: the codemod drops ``pass`` (``kept_statements``), and so does this reader."""
+    plain: the codemod drops ``pass`` (``kept_statements``), and so does this reader; so
+    is a description class with no ``createDescription`` at all."""
     source = HEADER + body
     fast = read_plain(source.encode(), "a.py")
     assert isinstance(fast, FileResult)
@@ -181,6 +187,8 @@ def test_pass_is_read_as_the_codemod_drops_it(body: str) -> None:
     '        self.addPreCondition(self.getRelationCond("L", "skiros:contain", "x", "y", 1))\n',
     'class A(SkillDescription):\n    def createDescription(self):\n'
     '        self.addPreCondition(self.getOrCond("L", [], True))\n',
+    "class A(SkillDescription):\n    ...\n",
+    "class A(SkillDescription):\n    pass\n    def helper(self):\n        pass\n",
     'class A(SkillDescription):\n    def createDescription(self):\n'
     '        self.addParam((("a", "b")), float, ParamTypes.Required)\n',
     'class A(SkillDescription):\n    def createDescription(self):\n'

@@ -1,0 +1,85 @@
+"""A file only Python 2 reads (``print x``, ``exec code``) gets the codemod's answer from
+``ast``'s error alone (``file_facts.refused``), without libcst: the oracle is the real
+codemod (``runner.migrate_file``, libcst) on the same bytes, on every such file this
+project has, on generated repositories with Python 2 files, and on statements written here.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+from bench_generator import generator
+
+from ezmigrate.codemod.settings import Settings
+from ezmigrate.project.file_facts import refused
+from ezmigrate.project.runner import migrate_file
+
+REPO = Path(__file__).resolve().parents[2]
+SETTINGS = Settings()
+HEADER = b"from skiros2_skill.core.skill import SkillDescription\n\n"
+
+
+def _error(data: bytes) -> SyntaxError | None:
+    try:
+        ast.parse(data)
+    except SyntaxError as error:
+        return error
+    return None
+
+
+def _compare(paths: list[Path]) -> int:
+    """How many files ``refused`` answered; asserts each answer is the codemod's."""
+    answered = 0
+    for path in paths:
+        data = path.read_bytes()
+        error = _error(data)
+        if error is None:
+            continue
+        found = refused(path.name, data, error)
+        if found is not None:
+            answered += 1
+            assert found == migrate_file(path.name, data, SETTINGS), path
+    return answered
+
+
+def test_the_fixtures_refused_statements_read_as_the_codemod_reads_them() -> None:
+    assert _compare(sorted((REPO / "fixtures").rglob("*.py"))) >= 2
+
+
+def test_generated_python2_files_read_as_the_codemod_reads_them(tmp_path: Path) -> None:
+    generator().generate(tmp_path / "repo", 80, skill_share=1.0, seed=5, py2_share=0.5)
+    assert _compare(sorted((tmp_path / "repo").rglob("*.py"))) >= 5
+
+
+@pytest.mark.parametrize("body", [
+    b'print "done"\n',
+    b"print x\n",
+    b"def f():\n    print 'a', 1\n",
+    b"exec code in scope\n",
+    b"x = 1\n\n\nclass A(SkillDescription):\n    def createDescription(self):\n"
+    b"        print 'hello %s' % self\n",
+    b"# -*- coding: latin-1 -*-\nname = '\xe9'\nprint name\n",  # its cookie opens the file
+])
+def test_a_statement_no_python_3_reads_is_answered_here(tmp_path: Path, body: bytes) -> None:
+    data = body if body.startswith(b"#") else HEADER + body
+    error = _error(data)
+    assert error is not None
+    found = refused("a.py", data, error)
+    assert found is not None and found.error is not None
+    assert found == migrate_file("a.py", data, SETTINGS)
+
+
+@pytest.mark.parametrize("body", [
+    b"try:\n    pass\nexcept ValueError, e:\n    pass\n",  # libcst reads it (PEP 758)
+    b"x = (\n",
+    b'x = f"{d["k"]}"\n',  # Python 3.12 syntax: libcst reads it under any Python
+    b"print >>out, x\nx = (\n",  # a valid expression, then another error
+])
+def test_any_other_error_is_left_to_the_codemod(body: bytes) -> None:
+    data = HEADER + body
+    error = _error(data)
+    if error is None:  # newer syntax this Python reads: nothing refused at all
+        return
+    assert refused("a.py", data, error) is None
