@@ -18,15 +18,12 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ezskiros_runtime.codes import code_for
-from ezskiros_runtime.compound.library import SkillIndex
-from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.model import SkillModel
 
 from ..codemod.settings import Settings
 from ..files.discover import Candidate, discover
 from ..files.prefilter import by_text
 from ..lint.diagnostic import Diagnostic, Positions, diagnostic
-from ..lint.legacy import legacy_hits
 from ..lint.robot_vocabulary import as_the_robot_resolves, scene_classes, typing_scenes
 from ..lint.world_model import (
     SCENE_SUFFIX,
@@ -53,6 +50,8 @@ from .settle import settle
 from .uninferable import UNINFERABLE, UNKNOWN
 
 if TYPE_CHECKING:
+    from ezskiros_runtime.compound.library import SkillIndex
+    from ezskiros_runtime.compound.model import CompoundModel
     from ezskiros_runtime.diagnostics import ClassError
     from ezskiros_runtime.ontology.index import OntologyIndex
 
@@ -86,6 +85,8 @@ def _text(data: bytes) -> str:
 
 def _legacy(path: str, result: FileResult, positions: Positions,
             index: OntologyIndex | None) -> list[Diagnostic]:
+    from ..lint.legacy import legacy_hits  # a run its cache answers needs none of this
+
     found: list[Diagnostic] = []
     if result.error:
         found.append(diagnostic(path, positions, result.error_kind, result.error_line or 0,
@@ -627,6 +628,8 @@ def compound_pass(read: list[tuple[Candidate, bytes]],
     no file defines a compound skill or implements a description."""
     if not any(b"expand" in data or b"setDescription" in data for _, data in read):
         return None
+    from ezskiros_runtime.compound.library import SkillIndex
+
     from ..compound.analysis import add_descriptions, analyse, library_candidates
     from ..compound.repository import scan_repository
 
@@ -689,6 +692,8 @@ def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate
         item = diagnostic(path, where, finding.kind, finding.line, finding.message,
                           finding.implementation, finding.suggestion, finding.severity)
         found.setdefault((path, item.line, item.code, item.message), item)
+    from ezskiros_runtime.compound.model import CompoundModel
+
     return _Compound(list(found.values()),
                      [m for _, m in run.models if isinstance(m, CompoundModel)], skills)
 
