@@ -20,7 +20,14 @@ from typing import TYPE_CHECKING
 import libcst as cst
 
 from ..report.findings import skill_findings
-from ..report.results import ClassLines, FileResult, ReviewFinding, SkillResult, source_digest
+from ..report.results import (
+    ClassLines,
+    FileResult,
+    ReviewFinding,
+    SkillResult,
+    source_digest,
+    unparsable,
+)
 from ..report.written_lines import classes_of
 from .core.classes import DescriptionClass, description_classes, inert_classes
 from .core.context import ExtractContext, StatementLines, module_constants, positions_of
@@ -119,8 +126,7 @@ def _migrate_text(text: bytes | str, source: bytes | str, settings: Settings, pa
         if holes is not None:
             return None
         message, line, column = syntax_error_location(source, error)
-        return FileResult(path, error=f"cannot parse: {message} (line {line}, column "
-                          f"{column})", error_line=line)
+        return unparsable(path, message, line, column)
     except (UnicodeDecodeError, LookupError, SyntaxError) as error:
         if holes is not None:
             return None
@@ -251,9 +257,8 @@ def _syntax_facts(module: cst.Module, source: bytes | str) -> SyntaxFacts | File
         if python2 is None:  # syntax newer than this Python: libcst reads it all the same
             return facts_of(module)
         line, column = python2
-        return FileResult("", error=(
-            f"cannot parse: Python 2 syntax `except X, e:` (line {line}, column {column}); "
-            "port the file to Python 3 (`except X as e:`) first"), error_line=line)
+        return unparsable("", "Python 2 syntax `except X, e:`", line, column,
+                          "port the file to Python 3 (`except X as e:`) first")
 
 
 def _used_after(facts: SyntaxFacts, converted: list[_Plan]) -> set[str]:

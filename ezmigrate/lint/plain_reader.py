@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 from ..codemod.core.ast_names import ast_dotted_name
 from ..codemod.core.classes import ast_foreign_bases
+from ..codemod.core.context import fork_keyword, not_a_string
 from ..codemod.core.declared import static_description
 from ..codemod.core.function import emitted_params
 from ..codemod.core.ir import (
@@ -47,6 +48,7 @@ from ..codemod.rules.add_param import (
     KINDS,
     OPTIONS,
     TYPE_OBJECTS,
+    fork_kind,
     literal_type,
     param_findings,
 )
@@ -337,17 +339,14 @@ class _Reader:
         code = _own_text(self.data, node, call)
         if code is None:
             raise _Declined
-        raise _Kept(f"the key of addParam at line {call.lineno} is `{code}`, not a string "
-                    "literal: the key or name is computed at run time, so the migrated form "
-                    "cannot be written statically")
+        raise _Kept(not_a_string(f"the key of addParam at line {call.lineno}", code))
 
     def _kind(self, node: ast.expr) -> str:
         member = self._member(node, "ParamTypes")
         if member in KINDS:
             return member
         if member is not None:  # add_param._kind: the codemod reads the kind last, as here
-            raise _Kept(f"ParamTypes.{member} at line {node.lineno} is not upstream SkiROS2 "
-                        "API (a fork's extension)")
+            raise _Kept(fork_kind(member, node.lineno))
         found = _literal(node) if member is None else None
         if found is not None and type(found.value) is int and 0 <= found.value < len(KINDS):
             return KINDS[found.value]
@@ -410,8 +409,7 @@ def _bind(call: ast.Call, names: tuple[str, ...], required: int,
         if keyword.arg not in names:
             if api is None:
                 raise _Declined
-            raise _Kept(f"{api}({keyword.arg}=...) at line {call.lineno} is not upstream "
-                        "SkiROS2 API (a fork's extension)")
+            raise _Kept(fork_keyword(api, keyword.arg, call.lineno))
         twice = twice or keyword.arg in bound
         bound[keyword.arg] = keyword.value
     if twice:

@@ -21,7 +21,7 @@ from ..files.discover import Candidate
 from ..files.prefilter import marker_is_identifier
 from ..lint.ezskiros_reader import read_ezskiros
 from ..lint.plain_reader import Declined, read_plain
-from ..report.results import FileResult
+from ..report.results import FileResult, unparsable
 from .cross_file import RUNTIME_MARKER
 from .implementation_code import ModuleFacts, module_facts
 
@@ -84,8 +84,7 @@ def refused(relative: str, data: bytes, error: SyntaxError) -> FileResult | None
     """
     if not error.lineno or not _STATEMENT.match(error.msg or "") or b"\0" in data:
         return None
-    return FileResult(relative, error=f"cannot parse: {error.msg} (line {error.lineno}, "
-                      f"column {error.offset or 1})", error_line=error.lineno)
+    return unparsable(relative, error.msg, error.lineno, error.offset or 1)
 
 
 def file_facts(candidate: Candidate, data: bytes, compounds: bool,
@@ -105,8 +104,7 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
         return FileFacts(FileResult(path=candidate.relative), described=False,
                          trees=tree_facts(tree, str(candidate.path))
                          if tree is not None and read_when else None,
-                         implementation=module_facts(tree, data)
-                         if tree is not None and b"setDescription" in data else None,
+                         implementation=_implementation(tree, data),
                          unparsed=(recover_classes(data),) if scanned and tree is None
                          else None, parsed=tree is not None)
     parsed = _parse(data)
@@ -121,5 +119,9 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
     if not compounds:
         return FileFacts(static, settled=settled, parsed=True)
     trees = tree_facts(tree, str(candidate.path)) if read_when else None
-    implementation = module_facts(tree, data) if b"setDescription" in data else None
-    return FileFacts(static, trees, implementation, settled=settled, parsed=True)
+    return FileFacts(static, trees, _implementation(tree, data), settled=settled, parsed=True)
+
+
+def _implementation(tree: ast.Module | None, data: bytes) -> ModuleFacts | None:
+    """What the implementation checks read of a parsed file that may implement a skill."""
+    return module_facts(tree, data) if tree is not None and b"setDescription" in data else None

@@ -22,6 +22,7 @@ by none when all are plain.
 
 from __future__ import annotations
 
+import functools
 import multiprocessing
 from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
@@ -66,11 +67,12 @@ TAKES_ON = 6
 """Declined files a worker meets before it reads them with the codemod itself. Until then
 it leaves them to the main process, which imports libcst once for all (a second import
 costs a worker 0.1 s of a core, the codemod about 0.01 s a file: the 21 public
-repositories decline 8 files in all); from the sixth on, a tree that declines many files
+repositories decline 4 files in all); from the sixth on, a tree that declines many files
 keeps both cores on them, and the worker reads the ones it left too."""
 
 _SETTINGS: Settings | None = None
 _LEFT: list[tuple[Candidate, bytes]] = []  # the declined files this worker left so far
+_CAUGHT_UP: list[tuple[str, FileResult]] = []  # their readings, once it read them after all
 _READS = False  # this worker reads declined files itself now
 
 
@@ -80,46 +82,57 @@ def _init_worker(settings: Settings | None) -> None:
     _SETTINGS = settings
 
 
+ReadDeclined = Callable[["Candidate", bytes], "FileResult | None"]
+"""The codemod's reading of a file the plain reader declines (None: someone else's)."""
+
+
 def _declined(facts: FileFacts) -> bool:
     """Whether the codemod must read the file (``own_reading``)."""
     return facts.described and facts.settled is None and isinstance(facts.static, Declined)
 
 
 def _read_files(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
-                settings: Settings | None) -> list[Reading]:
-    """Each file's facts; with ``settings``, for each file the plain reader declines, the
-    codemod's reading of it alone (``runner.own_reading``), taken while the file is at hand
-    instead of after every file is read (the cross-file pass still runs after)."""
+                declined: ReadDeclined | None) -> list[Reading]:
+    """Each file's facts and, for each file the plain reader declines, ``declined``'s
+    reading of it alone, taken while the file is at hand instead of after every file is
+    read (the cross-file pass still runs after)."""
     found: list[Reading] = []
     for candidate, data, verdict in items:
         facts = file_facts(candidate, data, compounds, verdict)
-        alone = own_reading(candidate.relative, data, settings) \
-            if settings is not None and _declined(facts) else None
-        found.append((facts, alone))
+        found.append((facts, declined(candidate, data)
+                      if declined is not None and _declined(facts) else None))
     return found
+
+
+def _here(settings: Settings, candidate: Candidate, data: bytes) -> FileResult:
+    """The main process's reading of a declined file."""
+    return own_reading(candidate.relative, data, settings)
+
+
+def _in_worker(candidate: Candidate, data: bytes) -> FileResult | None:
+    """A worker's reading of a declined file: none until it has met ``TAKES_ON`` of them
+    (the main process reads those), then its own, and those of the files it left before
+    (``_CAUGHT_UP``)."""
+    global _READS
+    if _SETTINGS is None:
+        return None
+    if not _READS and len(_LEFT) + 1 < TAKES_ON:
+        _LEFT.append((candidate, data))
+        return None
+    if not _READS:
+        _READS = True
+        _CAUGHT_UP.extend((str(c.path), own_reading(c.relative, d, _SETTINGS)) for c, d in _LEFT)
+        _LEFT.clear()
+    return own_reading(candidate.relative, data, _SETTINGS)
 
 
 def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
                     ) -> tuple[list[Reading], list[tuple[str, FileResult]]]:
-    """A worker's chunk: the facts, and the codemod's readings once the worker has met
-    ``TAKES_ON`` declined files; with them, by path, those of the files it left before."""
-    global _READS
-    found: list[Reading] = []
-    caught_up: list[tuple[str, FileResult]] = []
-    for candidate, data, verdict in items:
-        facts = file_facts(candidate, data, compounds, verdict)
-        alone = None
-        if _SETTINGS is not None and _declined(facts):
-            if not _READS and len(_LEFT) + 1 < TAKES_ON:
-                _LEFT.append((candidate, data))
-            else:
-                if not _READS:
-                    _READS = True
-                    caught_up += [(str(c.path), own_reading(c.relative, d, _SETTINGS))
-                                  for c, d in _LEFT]
-                    _LEFT.clear()
-                alone = own_reading(candidate.relative, data, _SETTINGS)
-        found.append((facts, alone))
+    """A worker's chunk (``_read_files`` with ``_in_worker``), and by path the readings of
+    the files it left before and read in this chunk."""
+    found = _read_files(items, compounds, _in_worker)
+    caught_up = list(_CAUGHT_UP)
+    _CAUGHT_UP.clear()
     return found, caught_up
 
 
@@ -192,11 +205,11 @@ class ReadingPool:
         order: in the workers when there are enough. ``on_trace`` is called when a chunk
         read holds a tree to trace, as soon as it is read (from the pool's thread for a
         worker's chunk): the tracing worker starts while the files are still being read."""
-        settings = self.settings
+        here = None if self.settings is None else functools.partial(_here, self.settings)
         pool = self._executor() if len(items) >= SHARED_FROM else None
         if pool is None:
             self._start_scenes()
-            return _read_files(items, compounds, settings)
+            return _read_files(items, compounds, here)
         size = max(4, len(items) // (self.workers * 12))
         starts = list(range(0, len(items), size))
         futures = {start: pool.submit(_read_in_worker, items[start:start + size], compounds)
@@ -209,7 +222,7 @@ class ReadingPool:
         for start in reversed(starts):  # the main takes chunks from the end, while no
             if not futures[start].cancel():  # worker has started them: the share each
                 break  # does is what it gets through, whatever a chunk costs
-            mine[start] = _read_files(items[start:start + size], compounds, settings)
+            mine[start] = _read_files(items[start:start + size], compounds, here)
             if on_trace is not None and _to_trace(mine[start]):
                 on_trace()
         theirs: dict[int, list[Reading]] = {}
@@ -221,7 +234,7 @@ class ReadingPool:
                 theirs[start], late = futures[start].result()
                 caught_up.update(late)
             except (BrokenProcessPool, OSError):  # a worker died: read here what it had
-                mine[start] = _read_files(items[start:start + size], compounds, settings)
+                mine[start] = _read_files(items[start:start + size], compounds, here)
         found: list[Reading] = []
         for start in starts:
             if start in mine:
@@ -229,9 +242,8 @@ class ReadingPool:
                 continue
             for (candidate, data, _), (facts, own) in zip(items[start:start + size],
                                                          theirs[start], strict=True):
-                if own is None and settings is not None and _declined(facts):
-                    own = caught_up.get(str(candidate.path)) \
-                        or own_reading(candidate.relative, data, settings)
+                if own is None and here is not None and _declined(facts):
+                    own = caught_up.get(str(candidate.path)) or here(candidate, data)
                 found.append((facts, own))
         return found
 

@@ -133,3 +133,9 @@ class FileResult:
 
     def count(self, status: str) -> int:
         return sum(1 for s in self.skills if s.status == status)
+
+
+def unparsable(path: str, message: str, line: int, column: int, advice: str = "") -> FileResult:
+    """The result for a file no parser reads: ``message`` where (``advice``: what to do)."""
+    return FileResult(path, error=f"cannot parse: {message} (line {line}, column {column})"
+                      + (f"; {advice}" if advice else ""), error_line=line)

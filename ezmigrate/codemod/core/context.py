@@ -168,10 +168,7 @@ class ExtractContext:
         """A string known statically, or ``Unsupported`` naming ``what`` it should have been."""
         lit = self.resolved(node)
         if lit is None or not isinstance(lit.value, str):
-            raise Unsupported(
-                f"{what} is `{self.code(node).strip()}`, not a string literal: the key or name "
-                "is computed at run time, so the migrated form cannot be written statically",
-                node)
+            raise Unsupported(not_a_string(what, self.code(node).strip()), node)
         return lit.value
 
     def self_method(self, node: cst.BaseExpression) -> str | None:
@@ -264,6 +261,18 @@ def _is_literal_shape(node: cst.BaseExpression) -> bool:
     return False
 
 
+def not_a_string(what: str, code: str) -> str:
+    """Why a skill is kept whose ``what`` (a key, a name), written ``code``, is no string
+    known statically (``lint/plain_reader.py`` words it so too)."""
+    return (f"{what} is `{code}`, not a string literal: the key or name is computed at run "
+            "time, so the migrated form cannot be written statically")
+
+
+def fork_keyword(api: str, keyword: str, line: int) -> str:
+    """Why a skill is kept whose call passes a keyword upstream SkiROS2 lacks."""
+    return f"{api}({keyword}=...) at line {line} is not upstream SkiROS2 API (a fork's extension)"
+
+
 def bind_arguments(call: cst.Call, names: Sequence[str], required: int, api: str,
                    ctx: ExtractContext) -> dict[str, cst.BaseExpression]:
     """Match a call's arguments to the legacy signature ``names``.
@@ -284,8 +293,7 @@ def bind_arguments(call: cst.Call, names: Sequence[str], required: int, api: str
         else:
             keyword = arg.keyword.value
             if keyword not in names:
-                raise Unsupported(f"{api}({keyword}=...) at line {ctx.line(call)} is not "
-                                  "upstream SkiROS2 API (a fork's extension)", call)
+                raise Unsupported(fork_keyword(api, keyword, ctx.line(call)), call)
             bound[keyword] = arg.value
     missing = [n for n in names[:required] if n not in bound]
     if missing:

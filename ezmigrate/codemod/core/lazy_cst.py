@@ -28,9 +28,3 @@ class _LibCST:
 
 
 cst: Any = _LibCST()
-
-
-def load() -> None:
-    """Import libcst now: before forking processes that will all use it (each would
-    otherwise import it on its own)."""
-    importlib.import_module("libcst")

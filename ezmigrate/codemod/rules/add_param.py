@@ -125,13 +125,18 @@ def _kind(node: cst.BaseExpression, ctx: ExtractContext) -> str:
     if member in KINDS:
         return member
     if member is not None:
-        raise Unsupported(f"ParamTypes.{member} at line {ctx.line(node)} is not upstream "
-                          "SkiROS2 API (a fork's extension)", node)
+        raise Unsupported(fork_kind(member, ctx.line(node)), node)
     literal = ctx.literal(node)
     if literal is not None and type(literal.value) is int and 0 <= literal.value < len(KINDS):
         return KINDS[literal.value]
     raise Unsupported(f"the parameter type `{ctx.code(node).strip()}` at line {ctx.line(node)} "
                       "is not ParamTypes.Required/Optional/Inferred", node)
+
+
+def fork_kind(member: str, line: int) -> str:
+    """Why a skill is kept whose parameter kind is a ``ParamTypes`` member upstream SkiROS2
+    lacks (``lint/plain_reader.py`` words it so too)."""
+    return f"ParamTypes.{member} at line {line} is not upstream SkiROS2 API (a fork's extension)"
 
 
 def _options(node: cst.BaseExpression | None, ctx: ExtractContext) -> tuple[list[str], str | None]:
