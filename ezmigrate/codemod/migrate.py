@@ -53,7 +53,13 @@ from .core.ir import (
     Unsupported,
 )
 from .core.legacy_names import LegacyNames, dotted_name, is_legacy_module
-from .core.python2 import comma_handler
+from .core.python2 import (
+    EXCEPT_ADVICE,
+    EXCEPT_COMMA,
+    comma_handler,
+    python2_refusal,
+    python_parses,
+)
 from .core.reader import (
     class_bindings,
     find_create_description,
@@ -105,7 +111,10 @@ def guarded_readings(source: bytes | str, settings: Settings,
     line outside the migrated code it would change (``core/guard.py``; ``None``: none).
     ``migrate`` takes the first result the guard passes; ``bench/guard_triggers.py``
     counts the others."""
-    tree, facts = _python_reading(source)
+    tree, facts, refused = _python_reading(source, path)
+    if refused is not None:  # Python 2: libcst's reading would change nothing
+        yield refused, None
+        return
     for text, holes, origin in _readings(source, tree, facts, settings):
         result = _migrate_text(text, origin, settings, path, facts, holes)
         if result is not None:
@@ -142,15 +151,19 @@ def _migrate_text(text: bytes | str, source: bytes | str, settings: Settings, pa
             "split that expression into smaller ones, then migrate"), error_line=deep)
 
 
-def _python_reading(source: bytes | str) -> tuple[ast.Module | None, SyntaxFacts | None]:
+def _python_reading(source: bytes | str, path: str) -> tuple[
+        ast.Module | None, SyntaxFacts | None, FileResult | None]:
     """The module as Python's own parser reads it, and its facts; ``None`` where it does
     not (Python 2 leftovers, syntax newer than this Python, bad bytes: libcst's reading
-    decides)."""
+    decides), with the file's result when Python's error alone gives it
+    (``python2_refusal``)."""
     try:
         tree = ast.parse(source)
-    except (SyntaxError, ValueError, MemoryError, RecursionError):
-        return None, None
-    return tree, SyntaxFacts.of(tree)
+    except SyntaxError as error:
+        return None, None, python2_refusal(path, _raw(source), error)
+    except (ValueError, MemoryError, RecursionError):
+        return None, None, None
+    return tree, SyntaxFacts.of(tree), None
 
 
 def _readings(source: bytes | str, tree: ast.Module | None, facts: SyntaxFacts | None,
@@ -257,8 +270,7 @@ def _syntax_facts(module: cst.Module, source: bytes | str) -> SyntaxFacts | File
         if python2 is None:  # syntax newer than this Python: libcst reads it all the same
             return facts_of(module)
         line, column = python2
-        return unparsable("", "Python 2 syntax `except X, e:`", line, column,
-                          "port the file to Python 3 (`except X as e:`) first")
+        return unparsable("", "Python 2 syntax `except X, e:`", line, column, EXCEPT_ADVICE)
 
 
 def _used_after(facts: SyntaxFacts, converted: list[_Plan]) -> set[str]:
@@ -324,7 +336,9 @@ def exported_operations(source: bytes | str, wanted: Collection[str],
     Another file deriving from one of them inlines these when it calls the base's
     ``createDescription`` (see ``ezmigrate.project.cross_file``).
     """
-    tree, known = _python_reading(source)
+    tree, known, refused = _python_reading(source, "")
+    if refused is not None:  # Python 2: nothing converts
+        return {}
     for text, _, origin in _readings(source, tree, known, settings):  # nothing to fill back
         try:
             module = cst.parse_module(text)
@@ -575,18 +589,6 @@ def decode_error_message(source: bytes | str, error: Exception) -> tuple[str, in
 _COOKIE = re.compile(rb"^[ \t\f]*#.*?coding[:=][ \t]*([-\w.]+)")
 
 
-_EXCEPT_COMMA = re.compile(rb"\bexcept\b[^:\n]*,")
-
-
-def _python_parses(raw: bytes) -> bool:
-    """Python's own parser (C speed) accepts the module: no Python 2 syntax in it."""
-    try:
-        ast.parse(raw)
-    except (SyntaxError, ValueError, MemoryError, RecursionError):
-        return False
-    return True
-
-
 def _python2_except(module: cst.Module, source: bytes | str) -> tuple[int, int] | None:
     """Line and column of a Python 2 ``except X, e:``, if any.
 
@@ -594,7 +596,7 @@ def _python2_except(module: cst.Module, source: bytes | str) -> tuple[int, int] 
     SkiROS2 module it is Python 2 code that no supported Python can import.
     """
     raw = _raw(source)
-    if not _EXCEPT_COMMA.search(raw) or _python_parses(raw):
+    if not EXCEPT_COMMA.search(raw) or python_parses(raw):
         return None  # the common case: ``except (A, B):``, which Python itself accepts
     by_tokens = comma_handler(raw)
     return by_tokens if by_tokens is not None else _python2_except_in_tree(module)

@@ -1,7 +1,8 @@
 """``ezmigrate check``'s own checks of legacy code and of a robot's world.
 
 `plain_reader` reads a plain legacy description with ``ast`` (the fast path; the codemod's
-reader takes what it declines), `ezskiros_reader` an EzSkiROS file with no legacy
+reader takes what it declines; `newer_fstrings` respells Python 3.12's f-strings for it),
+`ezskiros_reader` an EzSkiROS file with no legacy
 description in it, as the codemod would read it, `legacy` holds the checks only legacy
 code needs, `robot_vocabulary` and `world_model` the checks against the lab's ontology,
 scenes and launch files, `scene_diagram` draws a scene for the report, `diagnostic` is one

@@ -196,8 +196,6 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
     ``settled``: files among ``migrated`` whose readings are final (bases, not migrated
     again).
     """
-    from ..codemod.migrate import exported_operations, migrate  # libcst: only now
-
     fixed = {id(item) for item in settled}
     redone = 0
     done: set[tuple[int, frozenset[str], frozenset[str], frozenset[tuple[str, str]]]] = set()
@@ -229,6 +227,8 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
                 target = target_module(item.candidate.relative, source)
                 found = _others_at(exporters.get((root, name), []), item, target)
                 if len(found) == 1:
+                    from ..codemod.migrate import exported_operations  # libcst: only now
+
                     operations = exported_operations(found[0].original, [name], settings)
                     if name in operations:
                         external[local] = operations[name]
@@ -256,6 +256,8 @@ def resolve_cross_file(migrated: Sequence[Migrated], settings: Settings,
             if not (external or migrated_bases or unresolved) or key in done:
                 continue
             done.add(key)
+            from ..codemod.migrate import migrate  # libcst: only when a file is read again
+
             item.settings = replace(settings, external=external, exported=(exported or {}).get(
                 item.candidate.relative, frozenset()), migrated_bases=frozenset(migrated_bases),
                 unresolved_bases=unresolved)

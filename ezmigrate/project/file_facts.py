@@ -12,16 +12,17 @@ them from one run to the next.
 from __future__ import annotations
 
 import ast
-import re
 from dataclasses import dataclass
 
+from ..codemod.core.python2 import python2_refusal
 from ..compound.analysis import TreeFacts, tree_facts
 from ..compound.repository import READ_WHEN, SCAN_WHEN, Recovered, recover_classes
 from ..files.discover import Candidate
 from ..files.prefilter import marker_is_identifier
 from ..lint.ezskiros_reader import read_ezskiros
+from ..lint.newer_fstrings import older_spelling
 from ..lint.plain_reader import Declined, read_plain
-from ..report.results import FileResult, unparsable
+from ..report.results import FileResult
 from .cross_file import RUNTIME_MARKER
 from .implementation_code import ModuleFacts, module_facts
 
@@ -68,23 +69,10 @@ def _parse(data: bytes) -> ast.Module | SyntaxError | None:
         return None
 
 
-_STATEMENT = re.compile(r"Missing parentheses in call to '(print|exec)'")
-
-
 def refused(relative: str, data: bytes, error: SyntaxError) -> FileResult | None:
     """The codemod's reading of a file ``ast`` refuses with ``error``, when the error alone
-    gives it: a Python 2 ``print x`` or ``exec code`` statement.
-
-    The codemod then tries libcst (which reads syntax newer than this Python), and when
-    libcst refuses the file too it reports the error as ``ast`` words it
-    (``migrate.syntax_error_location``). No Python 3 grammar has those statements, libcst's
-    neither, so its answer is known without it: 3 of the 8 files the public repositories
-    still gave the codemod. Any other error (``except X, e:``, which libcst reads as Python
-    3.14's ``except A, B:``) is left to the codemod.
-    """
-    if not error.lineno or not _STATEMENT.match(error.msg or "") or b"\0" in data:
-        return None
-    return unparsable(relative, error.msg, error.lineno, error.offset or 1)
+    gives it (Python 2 syntax: ``python2_refusal``, where the codemod takes it too)."""
+    return python2_refusal(relative, data, error)
 
 
 def file_facts(candidate: Candidate, data: bytes, compounds: bool,
@@ -109,8 +97,11 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
                          else None, parsed=tree is not None)
     parsed = _parse(data)
     if not isinstance(parsed, ast.Module):
-        return FileFacts(Declined(), settled=refused(candidate.relative, data, parsed)
-                         if isinstance(parsed, SyntaxError) else None,
+        settled = refused(candidate.relative, data, parsed) \
+            if isinstance(parsed, SyntaxError) else None
+        static = _newer_syntax(candidate.relative, data) \
+            if isinstance(parsed, SyntaxError) and settled is None else Declined()
+        return FileFacts(static, settled=settled,
                          unparsed=(recover_classes(data),) if scanned else None)
     tree = parsed
     runtime = RUNTIME_MARKER in data
@@ -120,6 +111,15 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
         return FileFacts(static, settled=settled, parsed=True)
     trees = tree_facts(tree, str(candidate.path)) if read_when else None
     return FileFacts(static, trees, _implementation(tree, data), settled=settled, parsed=True)
+
+
+def _newer_syntax(relative: str, data: bytes) -> FileResult | Declined:
+    """The plain reading of a file that ``ast`` refused only for Python 3.12's f-strings
+    (``older_spelling``: the same tree, read from bytes this Python parses); everything
+    else ``check`` takes of the file stays as for a file ``ast`` cannot read."""
+    older = older_spelling(data) if RUNTIME_MARKER not in data else None
+    tree = parse(older) if older is not None else None
+    return read_plain(data, relative, tree) if tree is not None else Declined()
 
 
 def _implementation(tree: ast.Module | None, data: bytes) -> ModuleFacts | None:

@@ -84,6 +84,35 @@ def test_plain_files_import_no_libcst(tmp_path: Path) -> None:
     assert not main and not any(workers)
 
 
+PYTHON_2 = HEADER + textwrap.dedent("""
+    class Wait{n}(SkillDescription):
+        def createDescription(self):
+            self.addParam("Duration", 1.0, ParamTypes.Required)
+
+    def call():
+        try:
+            pass
+        except IOError, e:
+            pass
+    """)
+
+NEWER_FSTRINGS = PLAIN + textwrap.dedent("""
+    LABELS = {{"speed": "m/s"}}
+    BANNER = f"speed in {{LABELS["speed"]}}"
+    """)
+
+
+def test_python_2_and_newer_f_strings_import_no_libcst(tmp_path: Path) -> None:
+    """Python's error answers a Python 2 file (``python2_refusal``), and an f-string of
+    Python 3.12 is respelt for this Python's ``ast`` (``newer_fstrings``)."""
+    files = {f"pick{n}.py": PLAIN.format(n=n) for n in range(30)}
+    files.update({f"wait{n}.py": PYTHON_2.format(n=n) for n in range(5)})
+    files.update({f"newer{n}.py": NEWER_FSTRINGS.format(n=n) for n in range(5)})
+    main, workers = _imported(tmp_path, files, jobs=2)
+    assert workers
+    assert not main and not any(workers)
+
+
 def test_a_few_declined_files_import_it_in_the_main_process_alone(tmp_path: Path) -> None:
     files = {f"pick{n}.py": PLAIN.format(n=n) for n in range(40)}
     files.update({f"place{n}.py": DECLINED.format(n=n)

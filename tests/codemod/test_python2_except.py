@@ -4,13 +4,20 @@ modules put together at random; where the tokens cannot tell, the tree still ans
 
 from __future__ import annotations
 
+import ast
 import random
 
 import libcst as cst
 import pytest
 
-from ezmigrate.codemod.core.python2 import comma_handler
-from ezmigrate.codemod.migrate import _python2_except, _python2_except_in_tree
+from ezmigrate.codemod.core.python2 import comma_handler, python2_refusal
+from ezmigrate.codemod.migrate import (
+    Settings,
+    _migrate_text,
+    _python2_except,
+    _python2_except_in_tree,
+    migrate,
+)
 
 
 def _tree(text: str) -> tuple[int, int] | None:
@@ -76,3 +83,23 @@ def test_modules_at_random_get_the_same_answer_both_ways() -> None:
             assert _python2_except(module, text) == tree
             compared += 1
     assert compared > 150, compared
+
+
+def test_the_answer_before_libcst_is_the_one_libcst_led_to() -> None:
+    """``python2_refusal`` answers before libcst parses the file; where libcst does parse
+    it, the codemod's reading after the parse (``_syntax_facts``) gives the same result."""
+    compared = 0
+    for text in SHAPES.values():
+        source = ("from skiros2_skill.core.skill import SkillDescription\n\n" + text).encode()
+        try:
+            ast.parse(source)
+        except SyntaxError as error:
+            early = python2_refusal("a.py", source, error)
+        else:
+            continue
+        late = _migrate_text(source, source, Settings(), "a.py", None, None)
+        if early is None:  # Python stopped elsewhere, or the tokens do not tell
+            continue
+        assert late == early == migrate(source, Settings(), "a.py"), text
+        compared += 1
+    assert compared >= len(SHAPES) - 1

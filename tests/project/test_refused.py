@@ -1,7 +1,8 @@
-"""A file only Python 2 reads (``print x``, ``exec code``) gets the codemod's answer from
-``ast``'s error alone (``file_facts.refused``), without libcst: the oracle is the real
-codemod (``runner.migrate_file``, libcst) on the same bytes, on every such file this
-project has, on generated repositories with Python 2 files, and on statements written here.
+"""A file only Python 2 reads (``print x``, ``exec code``, ``except X, e:``) gets the
+codemod's answer from ``ast``'s error alone (``file_facts.refused``), without libcst: the
+oracle is the real codemod (``runner.migrate_file``) on the same bytes, on every such file
+this project has, on generated repositories with Python 2 files, and on statements written
+here.
 """
 
 from __future__ import annotations
@@ -61,6 +62,9 @@ def test_generated_python2_files_read_as_the_codemod_reads_them(tmp_path: Path) 
     b"x = 1\n\n\nclass A(SkillDescription):\n    def createDescription(self):\n"
     b"        print 'hello %s' % self\n",
     b"# -*- coding: latin-1 -*-\nname = '\xe9'\nprint name\n",  # its cookie opens the file
+    b"try:\n    pass\nexcept ValueError, e:\n    pass\n",  # libcst reads it (PEP 758)
+    b"try:\n    pass\nexcept (A,\n        B), e:\n    pass\n",
+    b"def f():\n    try:\n        pass\n    except IOError, e:\n        print e\n",
 ])
 def test_a_statement_no_python_3_reads_is_answered_here(tmp_path: Path, body: bytes) -> None:
     data = body if body.startswith(b"#") else HEADER + body
@@ -72,8 +76,9 @@ def test_a_statement_no_python_3_reads_is_answered_here(tmp_path: Path, body: by
 
 
 @pytest.mark.parametrize("body", [
-    b"try:\n    pass\nexcept ValueError, e:\n    pass\n",  # libcst reads it (PEP 758)
     b"x = (\n",
+    b"x = (\ntry:\n    pass\nexcept ValueError, e:\n    pass\n",  # Python stops first
+    b'x = f"{d["k"]}"\ntry:\n    pass\nexcept A, e:\n    pass\n',  # elsewhere
     b'x = f"{d["k"]}"\n',  # Python 3.12 syntax: libcst reads it under any Python
     b"print >>out, x\nx = (\n",  # a valid expression, then another error
 ])
@@ -83,3 +88,16 @@ def test_any_other_error_is_left_to_the_codemod(body: bytes) -> None:
     if error is None:  # newer syntax this Python reads: nothing refused at all
         return
     assert refused("a.py", data, error) is None
+
+
+def test_python_2_is_named_whatever_else_the_file_holds() -> None:
+    """The ``except X, e:`` Python meets first names the file Python 2, in ``check`` and in
+    the codemod alike, even where libcst would have refused the file for a later line
+    (a ``print x``): before, the codemod then reported Python's words for the clause."""
+    data = HEADER + b"try:\n    pass\nexcept ValueError, e:\n    pass\nprint 'done'\n"
+    error = _error(data)
+    assert error is not None
+    found = refused("a.py", data, error)
+    assert found is not None and found.error is not None
+    assert found.error.startswith("cannot parse: Python 2 syntax `except X, e:` (line 5, ")
+    assert found == migrate_file("a.py", data, SETTINGS)
