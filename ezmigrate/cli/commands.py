@@ -599,11 +599,11 @@ def _world_run(paths: tuple[Path, ...], options: Options, scene: Path | None) ->
     """``check``'s world-model settings: the project's ``single-valued`` (resolved once in
     ``options``), the scenes under ``paths``, and the ``--scene`` skills must start from
     (which must parse: exit 2)."""
-    from ezskiros_runtime.world.scene import SceneError, read_scene
-
-    from ..lint.world_model import WorldRun, scene_files
+    from ..lint.scene_search import WorldRun, scene_files
 
     if scene is not None:
+        from ezskiros_runtime.world.scene import SceneError, read_scene
+
         try:
             read_scene(scene)
         except SceneError as error:

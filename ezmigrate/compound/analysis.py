@@ -23,7 +23,7 @@ from ezskiros_runtime.compound.trace import Unanalysable
 from ezskiros_runtime.ontology.discovery import package_root
 from ezskiros_runtime.ontology.vendored import package_name
 
-from ..files.discover import Candidate, discover
+from ..files.discover import Candidate
 from ..files.package_xml import ros_flavour
 from ..report.once import once_per_cause
 from ..report.results import FileResult
@@ -342,15 +342,3 @@ def _described_type(model: Unanalysable, *trees: Trees) -> str:
             if label == model.implementation and description is not None:
                 return description
     return model.implementation
-
-
-def library_candidates(paths: Sequence[Path]) -> list[tuple[Candidate, bytes]]:
-    """The Python files of ``[tool.ezmigrate] skill-libraries``, read."""
-    found, _ = discover([p for p in paths if p.exists()])
-    items = []
-    for candidate in found:
-        try:
-            items.append((candidate, candidate.path.read_bytes()))
-        except OSError:
-            continue
-    return items

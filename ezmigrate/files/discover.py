@@ -182,6 +182,18 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
     return [c for _, c in ordered], notes
 
 
+def library_candidates(paths: Sequence[Path]) -> list[tuple[Candidate, bytes]]:
+    """The Python files of ``[tool.ezmigrate] skill-libraries``, read."""
+    found, _ = discover([p for p in paths if p.exists()])
+    items = []
+    for candidate in found:
+        try:
+            items.append((candidate, candidate.path.read_bytes()))
+        except OSError:
+            continue
+    return items
+
+
 def _temporaries_of(file: Path) -> list[Path]:
     """Our temporary files for ``file`` (``.NAME.XXXXXXXX.ezmigrate`` beside it)."""
     try:

@@ -24,7 +24,8 @@ from ezskiros_runtime.codes import code_for
 from ..files.discover import repository_root
 from ..report.once import once_per_cause
 from .diagnostic import Diagnostic
-from .world_model import readable_scenes, scene_files
+from .scene_search import scene_files
+from .world_model import readable_scenes
 
 UNKNOWN = code_for("unknown-vocabulary")
 

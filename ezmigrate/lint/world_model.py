@@ -9,14 +9,12 @@ and its fix in the file's own form, and makes diagnostics of them.
 from __future__ import annotations
 
 import ast
-import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ezskiros_runtime.model import SkillModel
-from ezskiros_runtime.ontology.vendored import vendored_skip
 from ezskiros_runtime.world.findings import WorldFinding, finding
 from ezskiros_runtime.world.grounding import can_start
 from ezskiros_runtime.world.postconditions import (
@@ -28,43 +26,14 @@ from ezskiros_runtime.world.scene import Scene, SceneError, read_scene
 from ezskiros_runtime.world.scene_checks import check_scene, unreadable
 from ezskiros_runtime.world.vocabulary import SingleValued, single_valued
 
-from ..files.discover import ALWAYS_EXCLUDED, excluded_under
 from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..report.static_facts import StaticDescription
 from .diagnostic import Diagnostic, Positions, diagnostic
+from .scene_search import WorldRun
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
-
-SCENE_SUFFIX = ".turtle"
-
-
-def scene_files(paths: Sequence[Path], exclude: Sequence[str] = ()) -> list[Path]:
-    """The scenes a run checks: ``*.turtle`` files named on the command line, and every
-    one under the folders named (SkiROS2 saves its scenes as ``.turtle``; labs keep them in
-    ``owl/``, beside a launch file or beside the code), less ``exclude``, hidden and build
-    folders and vendored SkiROS2 packages (whose scenes are upstream's demos)."""
-    found: dict[str, Path] = {}
-    for given in paths:
-        if given.is_file():
-            if given.suffix == SCENE_SUFFIX:
-                found.setdefault(str(given.resolve()), given)
-            continue
-        if not given.is_dir():
-            continue
-        skip = excluded_under(given, exclude)
-        vendored = vendored_skip(given)
-        for folder, dirs, names in os.walk(given):
-            here = Path(folder)
-            dirs[:] = sorted(d for d in dirs if d not in ALWAYS_EXCLUDED
-                             and not d.startswith(".") and not skip(here / d)
-                             and not vendored(here / d))
-            for name in sorted(names):
-                if name.endswith(SCENE_SUFFIX) and not skip(here / name):
-                    found.setdefault(str((here / name).resolve()), here / name)
-    return sorted(found.values())
-
 
 @dataclass
 class SceneRead:
@@ -212,16 +181,6 @@ def cannot_start(path: str, skill: str, line: int, model: SkillModel, scene: Sce
 
 
 
-@dataclass
-class WorldRun:
-    """What ``check``'s world-model pass needs besides the files: the single-valued
-    relations (None: the default list), the scene files, and ``--scene`` (or None)."""
-
-    single_valued: tuple[str, ...] | None = None
-    scenes: tuple[Path, ...] = ()
-    start_scene: Path | None = None
-
-
 def world_diagnostics(run: WorldRun, legacy: Iterable[tuple[str, FileResult]],
                       loaded: Iterable[tuple[str, list[SkillModel]]],
                       index: OntologyIndex | None, sources: dict[str, str]
@@ -264,5 +223,5 @@ def _start_diagnostics(path: Path, models: list[tuple[str, str, int, SkillModel]
     return out
 
 
-__all__ = ["SceneRead", "WorldRun", "cannot_start", "diagnostics_of", "ezskiros_double_places",
-           "legacy_double_places", "read_scenes", "scene_files", "world_diagnostics"]
+__all__ = ["SceneRead", "cannot_start", "diagnostics_of", "ezskiros_double_places",
+           "legacy_double_places", "read_scenes", "world_diagnostics"]

@@ -21,17 +21,10 @@ from ezskiros_runtime.codes import code_for
 from ezskiros_runtime.model import SkillModel
 
 from ..codemod.settings import Settings
-from ..files.discover import Candidate, discover
+from ..files.discover import Candidate, discover, library_candidates
 from ..files.prefilter import by_text
 from ..lint.diagnostic import Diagnostic, Positions, diagnostic
-from ..lint.robot_vocabulary import as_the_robot_resolves, scene_classes, typing_scenes
-from ..lint.world_model import (
-    SCENE_SUFFIX,
-    WorldRun,
-    readable_scenes,
-    scene_files,
-    world_diagnostics,
-)
+from ..lint.scene_search import SCENE_SUFFIX, WorldRun, scene_files
 from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..verify.pool import BATCH, PoolConfig, Standby, job_for, run_batched
@@ -39,14 +32,13 @@ from . import holdpoint
 from .cross_file import RUNTIME_MARKER, module_name
 from .facts_cache import FactsCache, keep_scenes, seed_scenes
 from .frozen_heap import frozen_heap
-from .implementation_code import IMPLEMENTATION, ModuleFacts, module_facts
+from .implementation_code import IMPLEMENTATION
 from .import_scan import import_words
 from .launch import Launch, with_init_scene
 from .load_cache import LoadCache, cached_loads
 from .outcome_cache import OutcomeCache, read_all, run_key
 from .progress import Progress
 from .runner import Migrated
-from .settle import settle
 from .uninferable import UNINFERABLE, UNKNOWN
 
 if TYPE_CHECKING:
@@ -58,6 +50,7 @@ if TYPE_CHECKING:
     from ..compound.analysis import CompoundRun, Trees
     from ..verify.protocol import LoadOutcome
     from .file_facts import FileFacts
+    from .implementation_code import ModuleFacts
     from .reading_pool import ReadingPool
 
 UNRESOLVED_LOAD = {"timeout": "info", "memory": "info", "crashed": "info"}
@@ -217,6 +210,8 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     ``alone``: files already read alone as the codemod reads them, by the reading pool
     (``runner.own_reading``) or from their syntax (``ezskiros_reader``).
     """
+    from .settle import settle  # the codemod's readings: not in a run whose outcome is kept
+
     fingerprint = index.fingerprint if index is not None else ""
     everyone = {str(c.path): d for c, d in declined if d is not None}
     everyone.update((str(c.path), d) for c, d, _ in plain)
@@ -346,6 +341,12 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
                            standby, world, cache_dir, trace, facts, reader,
                            start_tracing if trees is not None else None)
             outcome.files += len(world.scenes)
+            from ..lint.robot_vocabulary import (
+                as_the_robot_resolves,
+                scene_classes,
+                typing_scenes,
+            )
+
             outcome.diagnostics = as_the_robot_resolves(
                 outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
                 launch.workspace_unresolved if launch is not None else None,
@@ -372,8 +373,6 @@ def _kept_run(paths: list[Path], candidates: list[Candidate], world: WorldRun,
     a file that cannot be read)."""
     if cache_dir is None or not paths or not all(p.is_dir() for p in paths):
         return None
-    from ..compound.analysis import library_candidates
-
     files = read_all([*(c.path for c in candidates), *world.scenes,
                       *([launch.path] if launch is not None else [])])
     if files is None:
@@ -499,6 +498,8 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
                 found.actual, found.actual is not None and found.relation is None))
     if reader is not None:
         reader.seed_scenes()
+    from ..lint.world_model import world_diagnostics
+
     outcome.diagnostics += world_diagnostics(
         world, [(str(c.path), r) for c, r in results],
         [(str(c.path), [SkillModel.from_json(m) for m in o.models])
@@ -535,6 +536,7 @@ class _Compound:
 def _facts_of(data: bytes) -> ModuleFacts | None:
     """The implementation facts of a file the static pass did not read for them."""
     from .file_facts import parse
+    from .implementation_code import module_facts
 
     tree = parse(data)
     return None if tree is None else module_facts(tree, data)
@@ -565,6 +567,8 @@ def _implementations(implementing: list[tuple[Candidate, ModuleFacts]], skills: 
     them or the code sets them."""
     from ezskiros_runtime.dsl.vocabulary import to_iri
 
+    from ..lint.robot_vocabulary import scene_classes
+    from ..lint.world_model import readable_scenes
     from .implementation_code import implementation_findings
 
     typed = scene_classes(world.scenes)
@@ -603,6 +607,8 @@ def _scene_counter(world: WorldRun, index: OntologyIndex | None
     without a scene that reads."""
     from ezskiros_runtime.dsl.vocabulary import to_iri
 
+    from ..lint.world_model import readable_scenes
+
     types = [(e.types, {scene.compact(t) for t in e.types})  # IRIs, and as written
              for scene in readable_scenes(world.scenes) for e in scene.elements.values()]
 
@@ -630,7 +636,7 @@ def compound_pass(read: list[tuple[Candidate, bytes]],
         return None
     from ezskiros_runtime.compound.library import SkillIndex
 
-    from ..compound.analysis import add_descriptions, analyse, library_candidates
+    from ..compound.analysis import add_descriptions, analyse
     from ..compound.repository import scan_repository
 
     skills = SkillIndex.with_standard_library()

@@ -28,11 +28,12 @@ import ast
 from collections import deque
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from ezskiros_runtime.codes import code_for
-from ezskiros_runtime.compound.library import SkillIndex
 
-from ..compound.static import described_classes
+if TYPE_CHECKING:  # the compound library: not for ``IMPLEMENTATION`` alone
+    from ezskiros_runtime.compound.library import SkillIndex
 
 IMPLEMENTATION = (code_for("implementation-unknown-key"), code_for("implementation-element-typo"),
                   code_for("implementation-unknown-property"))
@@ -69,6 +70,8 @@ class ModuleFacts:
 def module_facts(tree: ast.Module, data: bytes) -> ModuleFacts:
     """One walk of the module: its implementation classes' reads, and the property names
     any of its code sets (only when its text holds a setter at all)."""
+    from ..compound.static import described_classes
+
     setting = any(m in data for m in _SETTERS)
     described = {id(cls): description for description, cls in described_classes(tree)}
     classes = []

@@ -27,7 +27,7 @@ from ezskiros_runtime.ontology.vendored import package_name, vendored_skip
 
 from ..files.discover import ALWAYS_EXCLUDED
 from ..files.package_xml import manifests_below
-from ..lint.world_model import WorldRun
+from ..lint.scene_search import WorldRun
 
 KEYS = ("workspace_dir", "init_scene", "libraries_list", "skill_list")
 SUFFIXES = (".launch", ".launch.xml", ".launch.py")

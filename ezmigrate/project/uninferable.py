@@ -21,13 +21,17 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 from ezskiros_runtime.codes import code_for
-from ezskiros_runtime.compound.library import SkillIndex, type_name
-from ezskiros_runtime.compound.model import CompoundModel, ProcessorNode, SkillNode
 
 from ..lint.diagnostic import Diagnostic
-from .implementation_code import ModuleFacts
+
+if TYPE_CHECKING:  # the compound library: not for the codes alone (``check.needs_trees``)
+    from ezskiros_runtime.compound.library import SkillIndex
+    from ezskiros_runtime.compound.model import CompoundModel
+
+    from .implementation_code import ModuleFacts
 
 UNINFERABLE = code_for("uninferable")
 UNKNOWN = code_for("unknown-vocabulary")
@@ -48,6 +52,9 @@ def keys_passed(models: Iterable[CompoundModel], skills: SkillIndex
     """``{child description: {key: whether every node of it passes a value}}`` over the
     compound trees: a node passes ``key`` when it specifies or remaps it, or when its
     parent's description declares it (the blackboard hands it down)."""
+    from ezskiros_runtime.compound.library import type_name
+    from ezskiros_runtime.compound.model import ProcessorNode, SkillNode
+
     passed: dict[str, dict[str, bool]] = {}
 
     def visit(nodes: Iterable[object], parent_keys: set[str]) -> None:

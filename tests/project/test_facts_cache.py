@@ -16,8 +16,8 @@ from pathlib import Path
 import pytest
 
 from ezmigrate.lint.diagnostic import Diagnostic
-from ezmigrate.project import check as check_module
 from ezmigrate.project import facts_cache, reading_pool
+from ezmigrate.project import settle as settle_module
 from ezmigrate.project.check import run_check
 from ezmigrate.project.facts_cache import KEY_DIR, PACK, FactsCache
 from ezmigrate.project.load_cache import FOLDER
@@ -102,7 +102,7 @@ class Reads:
         self.parsed: list[str] = []
         self.settled: list[str] = []
         self.scenes: list[str] = []
-        real_facts, real_settle = reading_pool.file_facts, check_module.settle
+        real_facts, real_settle = reading_pool.file_facts, settle_module.settle
         real_scene = scene_module._parsed
 
         def file_facts(candidate, data, compounds, verdict=True):  # type: ignore[no-untyped-def]
@@ -118,7 +118,7 @@ class Reads:
             return real_scene(where, text)
 
         monkeypatch.setattr(reading_pool, "file_facts", file_facts)  # one worker: here
-        monkeypatch.setattr(check_module, "settle", settle)
+        monkeypatch.setattr(settle_module, "settle", settle)  # ``check`` imports it late
         monkeypatch.setattr(scene_module, "_parsed", parsed_scene)
 
     def clear(self) -> None:
