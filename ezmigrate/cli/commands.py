@@ -503,6 +503,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     Suppress a finding on its line with `# ezskiros: ignore[EZ209]` (or `ignore[EZ209,EZ201]`).
     Exit 0 when no finding at error severity remains, 1 when one does, 2 on usage errors.
     """
+    from ezskiros_runtime.ontology.vendored import shared_rules
+
     from ..lint.select import Selection, SelectorError, apply, parse_selectors
     from ..project.check import needs_trees, run_check
     from .output_formats import FORMATS, STATISTICS
@@ -533,17 +535,18 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
             extend_select=parse_selectors(options.extend_select, "--extend-select"))
     except SelectorError as error:
         raise click.UsageError(str(error)) from None
-    index, ontology_files, _ = _load_index(ontology, anchor, roots, options)
-    pool = options.pool(ontology_files)
-    progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
-        if sys.stderr.isatty() and not quiet else None
-    outcome = run_check(list(paths), index, pool, options.exclude, progress,
-                        options.skill_libraries,
-                        compounds=needs_trees(selection.codes()),
-                        world=_world_run(paths, options, scene),
-                        include_vendored=include_vendored,
-                        cache_dir=None if no_cache else _cache_dir(paths, options),
-                        launch=_launch(anchor, launch_file, quiet), trace=not no_trace)
+    with shared_rules():  # the four searches of the repository share their answers
+        index, ontology_files, _ = _load_index(ontology, anchor, roots, options)
+        pool = options.pool(ontology_files)
+        progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
+            if sys.stderr.isatty() and not quiet else None
+        outcome = run_check(list(paths), index, pool, options.exclude, progress,
+                            options.skill_libraries,
+                            compounds=needs_trees(selection.codes()),
+                            world=_world_run(paths, options, scene),
+                            include_vendored=include_vendored,
+                            cache_dir=None if no_cache else _cache_dir(paths, options),
+                            launch=_launch(anchor, launch_file, quiet), trace=not no_trace)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
     found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it

@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import TypeVar
 
 from ezskiros_runtime.ontology.discovery import enclosing_project
-from ezskiros_runtime.ontology.vendored import VendoredRule, upstream_package
+from ezskiros_runtime.ontology.vendored import rule_for, upstream_package
 
 from .paths import shown
 from .writing import is_temporary_name
@@ -208,7 +208,7 @@ def _note_vendored(notes: list[str], given: Path) -> Callable[[Path], bool]:
     """Whether to pass over a folder below the ``given`` path: a vendored SkiROS2 package
     (``VendoredRule``, with ``given`` as the repository outside git), said once in
     ``notes``."""
-    rule = VendoredRule(given)
+    rule = rule_for(given)
 
     def skip(folder: Path) -> bool:
         package = rule.package(folder)

@@ -18,9 +18,10 @@ command and the runtime share.
 
 from __future__ import annotations
 
+import contextlib
 import os
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Iterator
 from xml.etree import ElementTree
 
 PACKAGE_XML = "package.xml"
@@ -90,15 +91,23 @@ def repository_of(folder: Path, fallback: Path) -> Path:
 
 class VendoredRule:
     """Answers "is this folder a vendored SkiROS2 package?" for the folders of one walk,
-    deciding each repository once (a walk meets many packages of the same one)."""
+    deciding each repository once (a walk meets many packages of the same one) and each
+    folder once (the walks of one command share a rule: ``shared_rules``)."""
 
     def __init__(self, fallback: Path) -> None:
         self._fallback = fallback.resolve()
         self._own: dict[Path, bool] = {}
+        self._answers: dict[str, str | None] = {}
 
     def package(self, folder: Path) -> str | None:
         """The SkiROS2 package ``folder`` is a vendored copy of, or None (not SkiROS2's,
         or SkiROS2's in SkiROS2's own repository)."""
+        key = str(folder)
+        if key not in self._answers:
+            self._answers[key] = self._package(folder)
+        return self._answers[key]
+
+    def _package(self, folder: Path) -> str | None:
         package = upstream_package(folder)
         if package is None:
             return None
@@ -108,7 +117,34 @@ class VendoredRule:
         return None if self._own[repository] else package
 
 
+_shared: dict[Path, VendoredRule] | None = None
+
+
+@contextlib.contextmanager
+def shared_rules() -> Iterator[None]:
+    """Within it, the walks under the same folder share one ``VendoredRule``: a command
+    that searches one repository for its ontology, launch files, scenes and Python files
+    asks about each folder once, not four times. Outside it (a robot's runtime, a test
+    that changes a repository between two walks) every walk decides afresh."""
+    global _shared
+    outer, _shared = _shared, {}
+    try:
+        yield
+    finally:
+        _shared = outer
+
+
+def rule_for(fallback: Path) -> VendoredRule:
+    """The rule of a walk under ``fallback``: the shared one within ``shared_rules``."""
+    if _shared is None:
+        return VendoredRule(fallback)
+    key = fallback.resolve()
+    if key not in _shared:
+        _shared[key] = VendoredRule(fallback)
+    return _shared[key]
+
+
 def vendored_skip(fallback: Path) -> Callable[[Path], bool]:
     """A folder predicate for walks that only need the yes or no of ``VendoredRule``."""
-    rule = VendoredRule(fallback)
+    rule = rule_for(fallback)
     return lambda folder: rule.package(folder) is not None

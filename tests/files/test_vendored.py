@@ -191,3 +191,30 @@ def test_a_folder_the_ros_build_ignores_is_passed_over_with_a_note(lab: Path,
         f"{lab / 'cell'}: skipped, its {marker} keeps it out of the ROS build"]
     named, _ = discover([lab / "cell"])  # named: the user's choice
     assert [c.relative for c in named] == ["src/cell/skills.py"]
+
+
+def test_the_searches_of_one_command_ask_about_each_folder_once(
+        lab: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Within ``shared_rules`` (a ``check`` run) the ontology, launch-file and file searches
+    under one folder share their answers; outside it each search decides afresh, so a
+    repository changed between two searches is seen as it is now."""
+    from ezskiros_runtime.ontology import vendored
+
+    asked: list[str] = []
+    real = vendored.VendoredRule._package
+
+    def counting(rule: vendored.VendoredRule, folder: Path) -> str | None:
+        asked.append(str(folder))
+        return real(rule, folder)
+
+    monkeypatch.setattr(vendored.VendoredRule, "_package", counting)
+    with vendored.shared_rules():
+        discover_ontology(lab)
+        launch_files(lab)
+        found, _ = discover([lab])
+    assert asked and len(asked) == len(set(asked))  # each folder once
+    assert "third_party_skills/skiros2_std_skills/src/skiros2_std_skills/std.py" not in {
+        c.relative for c in found}
+    renamed = lab / "framework_copy" / "package.xml"
+    renamed.write_text("<package>\n  <name>cell_tools</name>\n</package>\n")
+    assert "framework_copy/src/core.py" in {c.relative for c in discover([lab])[0]}
