@@ -506,7 +506,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     from ezskiros_runtime.ontology.vendored import shared_rules
 
     from ..lint.select import Selection, SelectorError, apply, parse_selectors
-    from ..project.check import needs_trees, run_check
+    from ..project.check import checked_files, needs_trees, run_check
     from .output_formats import FORMATS, STATISTICS
 
     if statistics and output_format not in STATISTICS:
@@ -536,6 +536,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     except SelectorError as error:
         raise click.UsageError(str(error)) from None
     with shared_rules():  # the four searches of the repository share their answers
+        discovered = checked_files(list(paths), options.exclude, include_vendored)
         index, ontology_files, _ = _load_index(ontology, anchor, roots, options)
         pool = options.pool(ontology_files)
         progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
@@ -546,7 +547,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
                             world=_world_run(paths, options, scene),
                             include_vendored=include_vendored,
                             cache_dir=None if no_cache else _cache_dir(paths, options),
-                            launch=_launch(anchor, launch_file, quiet), trace=not no_trace)
+                            launch=_launch(anchor, launch_file, quiet), trace=not no_trace,
+                            discovered=discovered)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {note}", err=True)
     found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it

@@ -20,21 +20,16 @@ import fnmatch
 import functools
 import os
 import re
-import subprocess
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TypeVar
 
 from ezskiros_runtime.ontology.discovery import enclosing_project
 from ezskiros_runtime.ontology.vendored import rule_for, upstream_package
 
+from .git_ignored import IgnoredQuery
 from .paths import shown
 from .writing import is_temporary_name
-
-_T = TypeVar("_T")
-_R = TypeVar("_R")
 
 ROS_IGNORE_MARKERS = ("CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE")
 """Files whose presence keeps a folder out of the ROS build (catkin, colcon, ament): what
@@ -136,7 +131,19 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
              stale: list[Path] | None = None,
              project: Path | None = None,
              include_vendored: bool = False) -> tuple[list[Candidate], list[str]]:
-    """All candidate files, sorted and unique, plus messages about what was passed over.
+    """All candidate files, sorted and unique, plus messages about what was passed over
+    (``start_discovery``, waited for)."""
+    return start_discovery(paths, exclude, respect_gitignore, stale, project,
+                           include_vendored).result()
+
+
+def start_discovery(paths: Sequence[Path], exclude: Sequence[str] = (),
+                    respect_gitignore: bool = True,
+                    stale: list[Path] | None = None,
+                    project: Path | None = None,
+                    include_vendored: bool = False) -> Discovery:
+    """The walk for ``discover``, done, and git asked what it ignores (``IgnoredQuery``):
+    a caller with other work does it while git answers (``Discovery.result``).
 
     ``stale`` (when given) collects temporary files of ours (``.NAME.XXXXXXXX.ezmigrate``)
     found beside the candidates: only a SIGKILLed run leaves them. Discovery only lists
@@ -174,12 +181,33 @@ def discover(paths: Sequence[Path], exclude: Sequence[str] = (),
                 continue
             found.setdefault(real, candidate)
     ordered = sorted(found.items(), key=lambda pair: str(pair[1].path))
-    if respect_gitignore:
-        ignored = _git_ignored([real for real, _ in ordered])
-        notes += [f"{shown(c.path)}: skipped, git ignores it (.gitignore)"  # named: say so
-                  for real, c in ordered if real in ignored and real in named_files]
-        ordered = [(real, c) for real, c in ordered if real not in ignored]
-    return [c for _, c in ordered], notes
+    asked = IgnoredQuery([real for real, _ in ordered]) if respect_gitignore else None
+    return Discovery(ordered, notes, named_files, asked)
+
+
+class Discovery:
+    """A discovery whose walk is done and whose answers from git may be on their way."""
+
+    def __init__(self, ordered: list[tuple[str, Candidate]], notes: list[str],
+                 named_files: set[str], asked: IgnoredQuery | None) -> None:
+        self._ordered = ordered
+        self._notes = notes
+        self._named_files = named_files
+        self._asked = asked
+        self._result: tuple[list[Candidate], list[str]] | None = None
+
+    def result(self) -> tuple[list[Candidate], list[str]]:
+        """The candidates, sorted and unique, less what git ignores, and the notes."""
+        if self._result is None:
+            ordered, notes = self._ordered, self._notes
+            if self._asked is not None:
+                ignored = self._asked.answer()
+                notes = notes + [f"{shown(c.path)}: skipped, git ignores it (.gitignore)"
+                                 for real, c in ordered  # named: say so
+                                 if real in ignored and real in self._named_files]
+                ordered = [(real, c) for real, c in ordered if real not in ignored]
+            self._result = [c for _, c in ordered], notes
+        return self._result
 
 
 def library_candidates(paths: Sequence[Path]) -> list[tuple[Candidate, bytes]]:
@@ -273,114 +301,3 @@ def _ros_ignored(folder: str) -> str | None:
     """The ROS ignore marker in ``folder`` (``CATKIN_IGNORE``...), or None."""
     return next((m for m in ROS_IGNORE_MARKERS if os.path.lexists(os.path.join(folder, m))),
                 None)
-
-
-_GIT_DISCOVERY_ENV = ("GIT_DIR", "GIT_WORK_TREE", "GIT_CEILING_DIRECTORIES",
-                      "GIT_DISCOVERY_ACROSS_FILESYSTEM", "GIT_COMMON_DIR")
-
-
-def _git_ignored(files: list[str]) -> set[str]:
-    """Real paths of the ``files`` (real paths) git ignores; nothing when git is absent.
-
-    git is asked once per checkout: folders that find the same ``.git`` walking up (same
-    device all the way) are in the same checkout, so one ``git check-ignore`` run from the
-    folder holding it answers for all of them; folders with no ``.git`` above them ask
-    nothing.
-    When the git environment variables could change how git finds its checkout, every
-    folder asks git for its top level first, as git would find it.
-    """
-    by_folder: dict[str, list[str]] = {}
-    for file in files:
-        by_folder.setdefault(os.path.dirname(file), []).append(file)
-    groups: dict[str, list[str]] = {}
-    if any(name in os.environ for name in _GIT_DISCOVERY_ENV):
-        tops = dict(zip(by_folder, _each(_git_top, list(by_folder)), strict=True))
-        for folder, group in by_folder.items():
-            top = tops[folder]
-            if top is not None:
-                groups.setdefault(top, []).extend(group)
-    else:
-        keys: dict[str, str] = {}
-        for folder, group in by_folder.items():
-            key = _checkout_key(folder, keys)
-            if not key.startswith(NO_CHECKOUT):  # no ``.git`` up to where git stops looking
-                groups.setdefault(key, []).extend(group)
-    ignored: set[str] = set()
-    for found in _each(_check_ignore, list(groups.items())):
-        ignored |= found
-    return ignored
-
-
-def _each(ask: Callable[[_T], _R], items: list[_T]) -> list[_R]:
-    """``ask`` of each item, in order: at once in threads when there are several (a
-    folder of many checkouts asks git once per checkout, and each answer is a process's
-    start-up, mostly waited for). The threads are gone when this returns, before any
-    worker is forked."""
-    if len(items) <= 1:
-        return [ask(item) for item in items]
-    with ThreadPoolExecutor(max_workers=min(8, len(items))) as threads:
-        return list(threads.map(ask, items))
-
-
-def _check_ignore(checkout: tuple[str, list[str]]) -> set[str]:
-    """The real paths among a checkout's files that git ignores, asked from a folder of
-    the checkout (its top level, or the folder holding its ``.git``)."""
-    top, group = checkout
-    try:
-        proc = subprocess.run(["git", "-C", top, "check-ignore", "--stdin", "-z"],
-                              input=b"\0".join(os.fsencode(p) for p in group),
-                              capture_output=True, timeout=60, check=False)
-    except (OSError, subprocess.TimeoutExpired):
-        return set()
-    return {os.path.realpath(os.fsdecode(p)) for p in proc.stdout.split(b"\0") if p}
-
-
-NO_CHECKOUT = "\0"
-"""How the key of a folder with no ``.git`` at or above it begins (no path holds it)."""
-
-
-def _checkout_key(folder: str, memo: dict[str, str]) -> str:
-    """Folders with the same key find the same checkout when git looks for one.
-
-    The key is the nearest folder at or above ``folder`` holding a ``.git`` entry, or, when
-    there is none, the highest folder git would look in (below the root or a device
-    boundary, where git stops looking). A folder inside a ``.git`` folder is its own group.
-    """
-    if f"{os.sep}.git{os.sep}" in os.path.join(folder, ""):
-        return folder
-    chain: list[str] = []
-    current = folder
-    try:
-        device = os.stat(current).st_dev
-    except OSError:
-        return folder
-    while True:
-        if current in memo:
-            key = memo[current]
-            break
-        chain.append(current)
-        if os.path.lexists(os.path.join(current, ".git")):
-            key = current
-            break
-        parent = os.path.dirname(current)
-        try:
-            boundary = parent == current or os.stat(parent).st_dev != device
-        except OSError:
-            boundary = True
-        if boundary:
-            key = NO_CHECKOUT + current  # no checkout found up to here
-            break
-        current = parent
-    for visited in chain:
-        memo[visited] = key
-    return key
-
-
-def _git_top(folder: str) -> str | None:
-    try:
-        proc = subprocess.run(["git", "-C", folder, "rev-parse", "--show-toplevel"],
-                              capture_output=True, timeout=30, check=False)
-    except (OSError, subprocess.TimeoutExpired):
-        return None
-    return os.path.realpath(os.fsdecode(proc.stdout.strip())) if proc.returncode == 0 \
-        else None

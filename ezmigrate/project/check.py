@@ -21,7 +21,7 @@ from ezskiros_runtime.codes import code_for
 from ezskiros_runtime.model import SkillModel
 
 from ..codemod.settings import Settings
-from ..files.discover import Candidate, discover, library_candidates
+from ..files.discover import Candidate, Discovery, library_candidates, start_discovery
 from ..files.prefilter import by_text
 from ..lint.diagnostic import Diagnostic, Positions, diagnostic
 from ..lint.scene_search import SCENE_SUFFIX, WorldRun, scene_files
@@ -283,6 +283,15 @@ def needs_trees(codes: Iterable[str]) -> bool:
                for code in codes)
 
 
+def checked_files(paths: list[Path], exclude: tuple[str, ...] = (),
+                  include_vendored: bool = False) -> Discovery:
+    """The files ``check`` reads under ``paths`` (scenes named there are scenes), being
+    discovered: the command starts this before it searches for the ontology, the launch
+    file and the scenes, which it does while git says what it ignores."""
+    return start_discovery([p for p in paths if p.suffix != SCENE_SUFFIX], exclude,
+                           include_vendored=include_vendored)
+
+
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               exclude: tuple[str, ...] = (),
               progress: Callable[[str], None] | None = None,
@@ -290,17 +299,17 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               world: WorldRun | None = None,
               include_vendored: bool = False,
               cache_dir: Path | None = None, launch: Launch | None = None,
-              trace: bool = True) -> CheckOutcome:
+              trace: bool = True, discovered: Discovery | None = None) -> CheckOutcome:
     """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
     the compound skills' trees against every description found (unless ``compounds`` is
     False: no EZ3 code is selected, so their reading and tracing would be thrown away),
     then the world model (EZ4xx: ``world``, or the defaults and the scenes under ``paths``;
     scenes named in ``paths`` are scenes, not Python files). ``trace`` False
-    (``--no-trace``): no user code is imported, neither EzSkiROS files nor compound skills."""
+    (``--no-trace``): no user code is imported, neither EzSkiROS files nor compound skills.
+    ``discovered``: the files of ``paths``, already being discovered (``checked_files``)."""
     world = world or WorldRun(scenes=tuple(scene_files(paths, exclude)))
     world = with_init_scene(world, launch)
-    candidates, notes = discover([p for p in paths if p.suffix != SCENE_SUFFIX], exclude,
-                                 include_vendored=include_vendored)
+    candidates, notes = (discovered or checked_files(paths, exclude, include_vendored)).result()
     outcome = CheckOutcome(files=len(candidates), notes=notes)
     kept = _kept_run(paths, candidates, world, launch, skill_libraries, index, pool,
                      compounds, trace, cache_dir)

@@ -25,6 +25,7 @@ import pytest
 from bench_generator import generator
 
 from ezmigrate.codemod.migrate import migrate
+from ezmigrate.files import git_ignored
 from ezmigrate.files.discover import Candidate, discover
 from ezmigrate.files.prefilter import MARKERS, by_text, may_hold_descriptions
 from ezmigrate.project import runner
@@ -301,15 +302,24 @@ def _git(*args: str | Path) -> None:
 
 
 def _git_calls(monkeypatch: pytest.MonkeyPatch) -> list[list[str]]:
-    """The command lines of every process started from now on (discovery's git calls)."""
+    """The command lines of every process started from now on (discovery's git calls):
+    the shell that asks every checkout at once (``git_ignored``) counts as the gits it
+    starts, one per ``(top, input, output)`` triple of its arguments."""
     calls: list[list[str]] = []
-    real_run = subprocess.run
+    real_popen = subprocess.Popen
 
-    def counting(args, *rest, **kwargs):
-        calls.append(list(args))
-        return real_run(args, *rest, **kwargs)
+    class Counting(real_popen):  # type: ignore[misc, valid-type]
+        def __init__(self, args, *rest, **kwargs):  # type: ignore[no-untyped-def]
+            args = [str(a) for a in args]
+            if args[:2] == [git_ignored.SHELL, "-c"]:
+                triples = args[4:]
+                calls.extend(["git", "-C", triples[i], "check-ignore", "--stdin", "-z"]
+                             for i in range(0, len(triples), 3))
+            else:
+                calls.append(args)
+            super().__init__(args, *rest, **kwargs)
 
-    monkeypatch.setattr(subprocess, "run", counting)
+    monkeypatch.setattr(subprocess, "Popen", Counting)
     return calls
 
 
