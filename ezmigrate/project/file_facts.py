@@ -42,7 +42,7 @@ class FileFacts:
     it, if it parses (``Trees.prepared``)."""
     settled: FileResult | None = None
     """For a declined file, the codemod's reading when the syntax alone gives it (an
-    EzSkiROS file: ``ezskiros_reader``; a Python 2 statement: ``refused``): ``settle``
+    EzSkiROS file: ``ezskiros_reader``; Python 2 syntax: ``python2_refusal``): ``settle``
     takes it instead of parsing the file with libcst."""
     unparsed: tuple[Recovered] | None = None
     """For a file ``ast`` cannot parse (Python 2) that the repository scan reads
@@ -69,12 +69,6 @@ def _parse(data: bytes) -> ast.Module | SyntaxError | None:
         return None
 
 
-def refused(relative: str, data: bytes, error: SyntaxError) -> FileResult | None:
-    """The codemod's reading of a file ``ast`` refuses with ``error``, when the error alone
-    gives it (Python 2 syntax: ``python2_refusal``, where the codemod takes it too)."""
-    return python2_refusal(relative, data, error)
-
-
 def file_facts(candidate: Candidate, data: bytes, compounds: bool,
                verdict: bool | None = True) -> FileFacts:
     """The facts of a file; ``compounds``: also what the compound pass and the
@@ -97,8 +91,8 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
                          else None, parsed=tree is not None)
     parsed = _parse(data)
     if not isinstance(parsed, ast.Module):
-        settled = refused(candidate.relative, data, parsed) \
-            if isinstance(parsed, SyntaxError) else None
+        settled = python2_refusal(candidate.relative, data, parsed) \
+            if isinstance(parsed, SyntaxError) else None  # the codemod's answer too
         static = _newer_syntax(candidate.relative, data) \
             if isinstance(parsed, SyntaxError) and settled is None else Declined()
         return FileFacts(static, settled=settled,

@@ -29,7 +29,7 @@ _CLOSE = frozenset(")]}")
 _LINE_STARTS = frozenset({tokenize.NEWLINE, tokenize.NL, tokenize.INDENT, tokenize.DEDENT,
                           tokenize.ENCODING})
 
-STATEMENT = re.compile(r"Missing parentheses in call to '(print|exec)'")
+_STATEMENT = re.compile(r"Missing parentheses in call to '(print|exec)'")
 """Python's words for Python 2's ``print x`` and ``exec code`` statements."""
 
 _TUPLE_CLAUSE = "multiple exception types must be parenthesized"
@@ -52,7 +52,7 @@ def python2_refusal(path: str, raw: bytes, error: SyntaxError) -> FileResult | N
     """
     if not error.lineno or b"\0" in raw:
         return None  # a NUL byte is reported as binary data (``syntax_error_location``)
-    if STATEMENT.match(error.msg or ""):
+    if _STATEMENT.match(error.msg or ""):
         return unparsable(path, error.msg, error.lineno, error.offset or 1)
     if error.msg != _TUPLE_CLAUSE or not EXCEPT_COMMA.search(raw) or python_parses(raw):
         return None
