@@ -10,6 +10,10 @@ and implementation does; the others ``check`` never parses). Then the whole comm
 with the cache the first one left. Each figure is the minimum of ``--runs``; the totals
 are over all the repositories, as a lab with many packages would see them.
 
+``--alternate``: CHECKOUTS is one tree; the floor and ``check --no-cache`` alternate
+``--runs`` times (the machine's state moves both alike), with the ratios of the minima and
+of the medians.
+
 ``--whole``: CHECKOUTS is one tree, checked as one run (the folder of all the checkouts, or
 a generated tree): the floor, ``check --no-cache``, a second ``check`` with the cache of
 the first, and ``check`` after one file holding a description changed (a comment appended,
@@ -22,6 +26,7 @@ import argparse
 import ast
 import contextlib
 import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -87,12 +92,34 @@ def whole(tree: Path, runs: int) -> int:
     return 0 if same else 1
 
 
+def alternate(tree: Path, runs: int) -> int:
+    """``--alternate``: the floor and ``check --no-cache`` one after the other ``runs``
+    times, so that both see the machine in the same state; the ratio of the minima (the
+    ``--whole`` rule) and of the medians."""
+    floors, checks = [], []
+    for _ in range(runs):
+        floors.append(floor(tree))
+        checks.append(command(tree, "--no-cache"))
+    low, first = min(floors), min(checks)
+    middle, typical = statistics.median(floors), statistics.median(checks)
+    print("| tree | floor min / median (s) | check --no-cache min / median (s) | "
+          "ratio of minima | ratio of medians |")
+    print("|---|---:|---:|---:|---:|")
+    print(f"| {tree.name} | {low:.3f} / {middle:.3f} | {first:.3f} / {typical:.3f} | "
+          f"{first / low:.2f}x | {typical / middle:.2f}x |")
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("checkouts", type=Path)
     parser.add_argument("--runs", type=int, default=2)
     parser.add_argument("--whole", action="store_true", help="one tree, one run")
+    parser.add_argument("--alternate", action="store_true",
+                        help="one tree: floor and check alternated --runs times")
     args = parser.parse_args(argv)
+    if args.alternate:
+        return alternate(args.checkouts, args.runs)
     if args.whole:
         return whole(args.checkouts, args.runs)
     totals = [0.0, 0.0, 0.0]
