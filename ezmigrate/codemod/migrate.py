@@ -54,9 +54,9 @@ from .core.ir import (
 )
 from .core.legacy_names import LegacyNames, dotted_name, is_legacy_module
 from .core.python2 import (
-    EXCEPT_ADVICE,
     EXCEPT_COMMA,
     comma_handler,
+    except_comma,
     python2_refusal,
     python_parses,
 )
@@ -269,8 +269,7 @@ def _syntax_facts(module: cst.Module, source: bytes | str) -> SyntaxFacts | File
         python2 = _python2_except(module, source)
         if python2 is None:  # syntax newer than this Python: libcst reads it all the same
             return facts_of(module)
-        line, column = python2
-        return unparsable("", "Python 2 syntax `except X, e:`", line, column, EXCEPT_ADVICE)
+        return except_comma("", *python2)
 
 
 def _used_after(facts: SyntaxFacts, converted: list[_Plan]) -> set[str]:

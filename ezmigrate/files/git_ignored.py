@@ -66,7 +66,7 @@ class IgnoredQuery:
         for number, (top, group) in enumerate(self._groups):
             given = os.path.join(folder, f"{number}.in")
             with open(given, "wb") as handle:
-                handle.write(b"\0".join(os.fsencode(p) for p in group))
+                handle.write(_asked(group))
             arguments += [top, given, os.path.join(folder, f"{number}.out")]
         try:
             self._shell = subprocess.Popen([SHELL, "-c", _ASK_EACH, "sh", *arguments],
@@ -108,7 +108,7 @@ class IgnoredQuery:
                     output = handle.read()
             except OSError:
                 continue
-            ignored |= {os.path.realpath(os.fsdecode(p)) for p in output.split(b"\0") if p}
+            ignored |= _answered(output)
         return ignored
 
 
@@ -150,11 +150,21 @@ def _check_ignore(checkout: tuple[str, list[str]]) -> set[str]:
     top, group = checkout
     try:
         proc = subprocess.run(["git", "-C", top, "check-ignore", "--stdin", "-z"],
-                              input=b"\0".join(os.fsencode(p) for p in group),
-                              capture_output=True, timeout=TIMEOUT, check=False)
+                              input=_asked(group), capture_output=True, timeout=TIMEOUT,
+                              check=False)
     except (OSError, subprocess.TimeoutExpired):
         return set()
-    return {os.path.realpath(os.fsdecode(p)) for p in proc.stdout.split(b"\0") if p}
+    return _answered(proc.stdout)
+
+
+def _asked(group: list[str]) -> bytes:
+    """``git check-ignore --stdin -z``'s input: the paths, NUL-separated."""
+    return b"\0".join(os.fsencode(p) for p in group)
+
+
+def _answered(output: bytes) -> set[str]:
+    """The real paths of ``git check-ignore -z``'s answer."""
+    return {os.path.realpath(os.fsdecode(p)) for p in output.split(b"\0") if p}
 
 
 NO_CHECKOUT = "\0"

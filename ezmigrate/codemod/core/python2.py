@@ -38,7 +38,6 @@ _TUPLE_CLAUSE = "multiple exception types must be parenthesized"
 EXCEPT_COMMA = re.compile(rb"\bexcept\b[^:\n]*,")
 """A line that may hold ``except X, e:``: the cheap test before the tokens."""
 
-EXCEPT_ADVICE = "port the file to Python 3 (`except X as e:`) first"
 
 
 def python2_refusal(path: str, raw: bytes, error: SyntaxError) -> FileResult | None:
@@ -54,12 +53,18 @@ def python2_refusal(path: str, raw: bytes, error: SyntaxError) -> FileResult | N
         return None  # a NUL byte is reported as binary data (``syntax_error_location``)
     if _STATEMENT.match(error.msg or ""):
         return unparsable(path, error.msg, error.lineno, error.offset or 1)
-    if error.msg != _TUPLE_CLAUSE or not EXCEPT_COMMA.search(raw) or python_parses(raw):
-        return None
+    if error.msg != _TUPLE_CLAUSE or not EXCEPT_COMMA.search(raw):
+        return None  # (``error`` is Python's own parse failing: no need to parse again)
     found = comma_handler(raw)
     if found is None or found[0] != error.lineno:
         return None  # the tokens do not tell, or Python stopped elsewhere first
-    return unparsable(path, "Python 2 syntax `except X, e:`", *found, EXCEPT_ADVICE)
+    return except_comma(path, *found)
+
+
+def except_comma(path: str, line: int, column: int) -> FileResult:
+    """The result for a file with Python 2's ``except X, e:`` at ``line``, ``column``."""
+    return unparsable(path, "Python 2 syntax `except X, e:`", line, column,
+                      "port the file to Python 3 (`except X as e:`) first")
 
 
 def python_parses(raw: bytes) -> bool:
