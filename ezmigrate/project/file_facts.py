@@ -12,7 +12,9 @@ them from one run to the next.
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+
+from ezskiros_runtime.compound.model import CompoundModel
 
 from ..codemod.core.python2 import python2_refusal
 from ..compound.analysis import TreeFacts, tree_facts
@@ -51,6 +53,21 @@ class FileFacts:
     parsed: bool = False
     """``ast`` read the file: the repository scan need not parse it again to learn that
     (``Trees.parsed``)."""
+
+    def moved(self, to: Candidate) -> FileFacts:
+        """The facts of a file with the same bytes at ``to``: a file's facts name its path
+        in three places (the readings' ``FileResult.path``, the relative path, and the
+        trees' ``CompoundModel.path``) and depend on nothing else of it, so a workspace's
+        copies of one package (a fork beside its upstream, a vendored copy) are read once.
+        """
+        path, relative = str(to.path), to.relative
+        static = replace(self.static, path=relative) \
+            if isinstance(self.static, FileResult) else self.static
+        settled = replace(self.settled, path=relative) if self.settled is not None else None
+        trees = None if self.trees is None else replace(self.trees, found=tuple(
+            replace(f, path=path) if isinstance(f, CompoundModel) else f
+            for f in self.trees.found))
+        return replace(self, static=static, settled=settled, trees=trees)
 
 
 def parse(data: bytes) -> ast.Module | None:

@@ -204,7 +204,39 @@ class ReadingPool:
         the codemod's reading of those the plain reader declines (``_read_files``), in
         order: in the workers when there are enough. ``on_trace`` is called when a chunk
         read holds a tree to trace, as soon as it is read (from the pool's thread for a
-        worker's chunk): the tracing worker starts while the files are still being read."""
+        worker's chunk): the tracing worker starts while the files are still being read.
+
+        Files of the same bytes are read once (a workspace keeps a fork beside its
+        upstream, a vendored copy of a package): the copies' facts are moved from the
+        first one's (``FileFacts.moved``). A copy of a file the codemod read is read itself
+        (the codemod's reading is not moved), after the others."""
+        firsts: dict[bytes, int] = {}
+        unique: list[tuple[Candidate, bytes, bool | None]] = []
+        for item in items:
+            if firsts.setdefault(item[1], len(unique)) == len(unique):
+                unique.append(item)
+        read = self._read_all(unique, compounds, on_trace)
+        if len(unique) == len(items):
+            return read
+        found: list[Reading] = []
+        again: list[int] = []
+        for index, (candidate, data, _) in enumerate(items):
+            facts, own = read[firsts[data]]
+            if unique[firsts[data]][0] is candidate:
+                found.append((facts, own))
+            elif own is None:
+                found.append((facts.moved(candidate), None))
+            else:
+                found.append((facts, own))  # a placeholder, read again below
+                again.append(index)
+        for index, reading in zip(again, self._read_all([items[i] for i in again], compounds,
+                                                        on_trace), strict=True):
+            found[index] = reading
+        return found
+
+    def _read_all(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
+                  on_trace: Callable[[], None] | None = None) -> list[Reading]:
+        """``read_files`` of files whose bytes all differ."""
         here = None if self.settings is None else functools.partial(_here, self.settings)
         pool = self._executor() if len(items) >= SHARED_FROM else None
         if pool is None:
