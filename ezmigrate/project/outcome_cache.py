@@ -22,6 +22,7 @@ import dataclasses
 import functools
 import hashlib
 import json
+import os
 import sys
 from collections.abc import Iterable
 from pathlib import Path
@@ -81,6 +82,14 @@ class OutcomeCache:
         except (OSError, ValueError, TypeError, KeyError):
             return None
         return dict(data)
+
+    def keeps_any(self) -> bool:
+        """Whether any run is kept here (a run's outcome may then be one of them)."""
+        try:
+            with os.scandir(self.folder / OUTCOMES) as entries:
+                return any(entry.name.endswith(".json") for entry in entries)
+        except OSError:
+            return False
 
     def put(self, key: str, files: int, skills: int, notes: list[str],
             diagnostics: list[Diagnostic]) -> None:

@@ -21,6 +21,11 @@ if TYPE_CHECKING:
     from ezskiros_runtime.compound.model import CompoundModel
     from ezskiros_runtime.compound.trace import Unanalysable
 
+QUIT = '{"quit": true}'
+"""The pool's last line to a worker: serve no more. Said, not left to the end of stdin: a
+process forked from the pool's (a reading worker) holds a copy of the pipe, and stdin ends
+only when every copy is closed."""
+
 Status = Literal["ok", "import-error", "syntax", "timeout", "crashed", "exit", "memory"]
 
 

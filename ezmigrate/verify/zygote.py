@@ -32,7 +32,7 @@ import time
 from pathlib import Path
 
 from .child import run_child
-from .protocol import LoadJob, LoadOutcome
+from .protocol import QUIT, LoadJob, LoadOutcome
 
 
 class ParentGone(Exception):
@@ -259,14 +259,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--ontology", action="append", default=[])
     parser.add_argument("--timeout", type=float, default=20.0)
     parser.add_argument("--memory-mb", type=int, default=2048)
+    parser.add_argument("--ontology-later", action="store_true",
+                        help="read the ontology files as the first line of stdin, "
+                             "{\"ontology\": [...]}, once the imports are done")
     args = parser.parse_args(argv)
     for signum in (signal.SIGTERM, signal.SIGHUP, signal.SIGINT):
         signal.signal(signum, _stop)
     os.environ["EZSKIROS_BACKEND"] = "legacy"
-    from ezskiros_runtime.ontology.active import use_ontology
-    from ezskiros_runtime.ontology.load import load_index
-
-    use_ontology(load_index(args.ontology or None))
     # warm imports shared with every child; the runtime's public names are lazy, so the DSL
     # and its checks are named too, or every child that loads an EzSkiROS file imports (and
     # compiles) them again, ~70 ms per file
@@ -275,7 +274,16 @@ def main(argv: list[str] | None = None) -> int:
     import ezskiros_runtime.legacy.loader
     import ezskiros_runtime.ontology.namespaces
     import ezskiros_runtime.ontology.suggest  # noqa: F401
+    from ezskiros_runtime.ontology.active import use_ontology
+    from ezskiros_runtime.ontology.load import load_index
 
+    ontology = args.ontology
+    if args.ontology_later:  # started before the run knew its ontology (``Standby``)
+        line = sys.stdin.readline()
+        if line.strip() in ("", QUIT):
+            return 0
+        ontology = list(json.loads(line)["ontology"])
+    use_ontology(load_index(ontology or None))
     with contextlib.suppress(Exception):  # only a lost speed-up if it fails
         warm_up()
     gc.collect()
@@ -287,6 +295,8 @@ def main(argv: list[str] | None = None) -> int:
     for line in sys.stdin:
         if not line.strip():
             continue
+        if line.strip() == QUIT:
+            return 0
         job = LoadJob.from_json(json.loads(line))
         try:
             outcome = run_job(job, args.timeout, memory, watch=sys.stdin.fileno())
