@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Iterable, Iterator
 
 from ..ontology.individuals import NOT_CLASSES, add_individuals
 from ..ontology.naming import OWL, RDF_TYPE, WELL_KNOWN_PREFIXES
+from .terms import IRI, LITERAL, Triple, from_rdflib
 from .turtle_subset import read_triples
 
 if TYPE_CHECKING:
@@ -148,9 +149,9 @@ def known_scene(path: str | Path, text: str) -> Scene | None:
     return _KNOWN.get((str(path), text))
 
 
-def _triples(where: str, text: str) -> Iterable[tuple[object, object, object]]:
-    """The file's triples: read as SkiROS2 saves scenes (``turtle_subset``), else by
-    rdflib's parser, whose error says where the file is wrong."""
+def _triples(where: str, text: str) -> Iterable[Triple]:
+    """The file's triples (``terms``): read as SkiROS2 saves scenes (``turtle_subset``),
+    else by rdflib's parser, whose error says where the file is wrong."""
     with _quiet_rdflib():  # a value that does not fit its datatype is a finding
         plain = read_triples(text)
     if plain is not None:
@@ -169,50 +170,45 @@ def _triples(where: str, text: str) -> Iterable[tuple[object, object, object]]:
         raise SceneError(where, line + 1 if isinstance(line, int) else 0,
                          f"not valid Turtle: {message.strip() or type(error).__name__}"
                          ) from error
-    return graph.triples((None, None, None))
+    with _quiet_rdflib():
+        return [(from_rdflib(s), from_rdflib(p), from_rdflib(o)) for s, p, o in graph]
 
 
-def _order(triple: tuple[object, object, object]) -> tuple[str, ...]:
+def _order(triple: Triple) -> tuple[str, ...]:
     """Triples in the order of their text, a literal's datatype and language last: the
     same order whichever reader read them."""
     s, p, o = triple
-    return (str(s), str(p), str(o), str(getattr(o, "datatype", None) or ""),
-            str(getattr(o, "language", None) or ""))
+    return s.text, p.text, o.text, o.datatype or "", o.language or ""
 
 
 def _parsed(where: str, text: str) -> Scene:
-    from rdflib import BNode, Literal, URIRef
-
     scene = Scene(where, prefixes=_prefixes(text))
     blocks = _Blocks(text, scene.prefixes)
     triples = sorted(_triples(where, text), key=_order)
-    schema = {str(s) for s, p, o in triples if str(p) == RDF_TYPE
-              and str(o).startswith(SCHEMA) and str(o) not in NOT_CLASSES}
-    with _quiet_rdflib():  # a value that does not fit its datatype is a finding
-        for s, p, o in triples:
-            if isinstance(s, BNode) or not isinstance(s, URIRef) or str(s) in schema:
-                continue
-            subject = str(s)
-            element = scene.elements.get(subject)
-            if element is None:
-                element = scene.elements[subject] = SceneElement(subject, blocks.start(subject))
-            prop = str(p)
-            if prop == RDF_TYPE and isinstance(o, URIRef):
-                if str(o) not in NOT_CLASSES and str(o) not in element.types:
-                    element.types.append(str(o))
-            elif prop == RDFS_LABEL:
-                element.label = str(o)
-            elif prop.startswith(SCHEMA):
-                continue
-            elif isinstance(o, URIRef):
-                scene.relations.append(Relation(subject, prop, str(o),
-                                                blocks.line(subject, str(o), prop)))
-            elif isinstance(o, Literal):
-                datatype = str(o.datatype) if o.datatype is not None else None
-                line = blocks.line(subject, None, prop)
-                value = _python(o)
-                scene.values.append(Value(subject, prop, blocks.written(line, str(o)), datatype,
-                                          value, line))
+    schema = {s.text for s, p, o in triples if p.text == RDF_TYPE
+              and o.text.startswith(SCHEMA) and o.text not in NOT_CLASSES}
+    for s, p, o in triples:
+        if s.kind != IRI or s.text in schema:
+            continue
+        subject = s.text
+        element = scene.elements.get(subject)
+        if element is None:
+            element = scene.elements[subject] = SceneElement(subject, blocks.start(subject))
+        prop = p.text
+        if prop == RDF_TYPE and o.kind == IRI:
+            if o.text not in NOT_CLASSES and o.text not in element.types:
+                element.types.append(o.text)
+        elif prop == RDFS_LABEL:
+            element.label = o.text
+        elif prop.startswith(SCHEMA):
+            continue
+        elif o.kind == IRI:
+            scene.relations.append(Relation(subject, prop, o.text,
+                                            blocks.line(subject, o.text, prop)))
+        elif o.kind == LITERAL:
+            line = blocks.line(subject, None, prop)
+            scene.values.append(Value(subject, prop, blocks.written(line, o.text), o.datatype,
+                                      o.value, line))
     return scene
 
 
@@ -229,16 +225,6 @@ def _quiet_rdflib() -> Iterator[None]:
             yield
     finally:
         logger.setLevel(level)
-
-
-def _python(literal: object) -> object:
-    """rdflib's Python value, or None when the lexical form does not fit its datatype
-    (rdflib then hands back the Literal itself, or the lexical string)."""
-    from rdflib import Literal
-
-    assert isinstance(literal, Literal)
-    value = literal.toPython()
-    return None if isinstance(value, Literal) else value
 
 
 def _prefixes(text: str) -> dict[str, str]:

@@ -8,12 +8,12 @@ object`` with ``;`` and ``,`` lists, whose terms are absolute IRIs, prefixed nam
 ``a``, simple quoted strings (with a language tag or a datatype), integers and booleans.
 
 The subset is accepted only when it is certain to mean what rdflib reads: each term is
-built with rdflib's own constructors (``URIRef``, ``Literal``), as its parser builds them,
-and anything outside the subset (blank nodes, collections, escapes, long strings,
-decimals and doubles, ``@base`` and relative IRIs but an unused prefix's ``<>``, a name
-that continues past where the subset stops reading it, an unknown prefix, any syntax
-error) gives ``None`` and the file goes to rdflib, which reads it or says where it is
-wrong. A test holds the two readings equal on every scene this project has, under each
+what rdflib's parser would build (``terms``: a literal of the kinds every rdflib reads
+alike is made there, any other by rdflib's ``Literal``), and anything outside the subset
+(blank nodes, collections, escapes, long strings, decimals and doubles, ``@base`` and
+relative IRIs but an unused prefix's ``<>``, a name that continues past where the subset
+stops reading it, an unknown prefix, any syntax error) gives ``None`` and the file goes to
+rdflib, which reads it or says where it is wrong. A test holds the two readings equal on every scene this project has, under each
 robot's rdflib.
 
 Runs on the robot's Python 3.8 with rdflib 4.2.2 as well as on rdflib 7.
@@ -25,6 +25,7 @@ import re
 from typing import Tuple
 
 from ..ontology.naming import RDF_TYPE, XSD
+from .terms import Term, Triple, iri, plain_literal, rdflib_literal
 
 _TOKEN = re.compile(r"""
   (?P<space>(?:[ \t\r\n]|\#[^\r\n]*)+)
@@ -50,8 +51,6 @@ _ENDS = frozenset(" \t\r\n,;")
 with an empty local part)."""
 
 Token = Tuple[str, str]
-Term = object
-Triple = Tuple[Term, Term, Term]
 
 
 def _tokens(text: str) -> list[Token] | None:
@@ -85,30 +84,28 @@ def _tokens(text: str) -> list[Token] | None:
 
 
 def read_triples(text: str) -> set[Triple] | None:
-    """The set of triples rdflib would read from ``text`` (as ``URIRef`` and ``Literal``),
-    or None when ``text`` is not in the subset (see the module doc)."""
+    """The set of triples rdflib would read from ``text`` (as ``terms.Term``), or None
+    when ``text`` is not in the subset (see the module doc)."""
     tokens = _tokens(text)
     if tokens is None:
         return None
-    from rdflib import Literal, URIRef
-
     prefixes: dict[str, str | None] = {}
     triples: set[Triple] = set()
-    iris: dict[str, object] = {}  # one term per text: a scene repeats few of them often
-    literals: dict[tuple[str, str, str], object] = {}
+    iris: dict[str, Term] = {}  # one term per text: a scene repeats few of them often
+    literals: dict[tuple[str, str, str], Term] = {}
 
-    def uri(iri: str) -> object:
-        node = iris.get(iri)
+    def uri(text: str) -> Term:
+        node = iris.get(text)
         if node is None:
-            node = iris[iri] = URIRef(iri)
+            node = iris[text] = iri(text)
         return node
 
-    def literal(lexical: str, lang: str = "", datatype: str = "") -> object:
+    def literal(lexical: str, lang: str = "", datatype: str = "") -> Term:
         key = (lexical, lang, datatype)
         node = literals.get(key)
         if node is None:
-            node = literals[key] = Literal(lexical, lang=lang or None,
-                                           datatype=URIRef(datatype) if datatype else None)
+            node = literals[key] = plain_literal(lexical, lang, datatype) \
+                or rdflib_literal(lexical, lang, datatype)
         return node
     count = len(tokens)
     i = 0
@@ -150,12 +147,12 @@ def read_triples(text: str) -> set[Triple] | None:
             i += 1
             while True:
                 kind, value = at(i)
-                node: object
+                node: Term
                 if kind in ("iri", "name"):
-                    iri = resource(at(i))
-                    if iri is None:
+                    named = resource(at(i))
+                    if named is None:
                         return None
-                    node = uri(iri)
+                    node = uri(named)
                     i += 1
                 elif kind == "string":
                     lexical = value[1:-1]

@@ -7,13 +7,17 @@ under each robot's Python and rdflib too (no ezmigrate import here)."""
 
 from __future__ import annotations
 
+import logging
 import random
+import warnings
 from pathlib import Path
 
 import pytest
 from rdflib import Graph, Literal, URIRef
 
+from ezskiros_runtime.ontology.naming import XSD
 from ezskiros_runtime.world.scene import Scene, read_scene
+from ezskiros_runtime.world.terms import Term, from_rdflib, plain_literal
 from ezskiros_runtime.world.turtle_subset import read_triples
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -23,17 +27,33 @@ HEAD = ("@prefix ex: <http://example.org/ex#> .\n"
 
 
 def _rdflib(text: str) -> set[object] | None:
+    """The triples rdflib reads, as ``terms`` (kind, text as rdflib keeps it, datatype,
+    language, and the Python value rdflib gives)."""
     graph = Graph()
     try:
         graph.parse(data=text, format="turtle")
     except Exception:  # any refusal: the subset must refuse too
         return None
-    return set(graph)
+    return {tuple(_term(t) for t in triple) for triple in graph}
+
+
+def _term(term: object) -> tuple[object, ...]:
+    """A term as all it says (equal terms with different values would pass ``==``), the
+    language's case aside, as rdflib compares it (rdflib 4.2.2's parser even hands back
+    the first spelling it met)."""
+    made = from_rdflib(term) if not isinstance(term, Term) else term
+    return (made.kind, made.text, made.datatype, (made.language or "").lower(),
+            repr(made.value))
+
+
+def _ours(text: str) -> set[object] | None:
+    found = read_triples(text)
+    return None if found is None else {tuple(_term(t) for t in triple) for triple in found}
 
 
 def _agrees(text: str) -> bool:
     """The subset reads nothing or exactly what rdflib reads."""
-    ours = read_triples(text)
+    ours = _ours(text)
     return ours is None or ours == _rdflib(text)
 
 
@@ -72,17 +92,54 @@ READ = {
 @pytest.mark.parametrize("body", READ.values(), ids=READ.keys())
 def test_each_construct_of_the_subset_reads_as_rdflib_reads_it(body: str):
     text = HEAD + body
-    ours = read_triples(text)
+    ours = _ours(text)
     assert ours is not None and ours == _rdflib(text)
 
 
-def test_terms_are_rdflibs_own():
+def test_terms_are_rdflibs_terms_as_data():
     ours = read_triples(HEAD + 'ex:s ex:n 7 ; ex:label "x"@en .')
     assert ours == {
-        (URIRef("http://example.org/ex#s"), URIRef("http://example.org/ex#n"),
-         Literal("7", datatype=URIRef("http://www.w3.org/2001/XMLSchema#integer"))),
-        (URIRef("http://example.org/ex#s"), URIRef("http://example.org/ex#label"),
-         Literal("x", lang="en"))}
+        tuple(from_rdflib(t) for t in triple) for triple in (
+            (URIRef("http://example.org/ex#s"), URIRef("http://example.org/ex#n"),
+             Literal("7", datatype=URIRef(XSD + "integer"))),
+            (URIRef("http://example.org/ex#s"), URIRef("http://example.org/ex#label"),
+             Literal("x", lang="en")))}
+    assert {o.value for _, _, o in ours} == {7, "x"}
+
+
+def _lexical(chance: random.Random) -> str:
+    """A literal's text near the edge of ``plain_literal``: numbers of every shape, words,
+    and now and then something else."""
+    digits = "".join(chance.choice("0123456789") for _ in range(chance.randint(1, 20)))
+    shapes = [digits, "-" + digits, "+" + digits, "0" + digits,
+              digits[:8] + "." + digits[8:], "." + digits, digits + ".", digits + "e3",
+              digits[:3] + "E-2", "true", "false", "TRUE", "1", "0", "yes", "", " 7", "7 ",
+              "1_000", "nan", "inf", "-0", "-0.0", "0,35", "x", "Ä"]
+    return chance.choice(shapes)
+
+
+def test_plain_literals_are_read_as_rdflib_reads_them():
+    """``plain_literal`` against rdflib's ``Literal`` (whichever rdflib runs the tests): the
+    same text kept, datatype, language and value, or None; made here for most of what
+    SkiROS2 saves."""
+    chance = random.Random(7)
+    datatypes = ["", *(XSD + t for t in ("string", "integer", "int", "float", "double",
+                                          "boolean", "decimal", "long"))]
+    made = 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        logging.getLogger("rdflib.term").setLevel(logging.CRITICAL)
+        for _ in range(6000):
+            lexical, datatype = _lexical(chance), chance.choice(datatypes)
+            language = chance.choice(["", "en", "sv", "EN"]) if not datatype else ""
+            ours = plain_literal(lexical, language, datatype)
+            if ours is None:
+                continue
+            made += 1
+            theirs = Literal(lexical, lang=language or None,
+                             datatype=URIRef(datatype) if datatype else None)
+            assert _term(ours) == _term(theirs), (lexical, language, datatype)
+    assert made > 1500
 
 
 LEFT_TO_RDFLIB = {
