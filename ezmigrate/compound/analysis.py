@@ -27,7 +27,7 @@ from ..files.discover import Candidate
 from ..files.package_xml import ros_flavour
 from ..report.once import once_per_cause
 from ..report.results import FileResult
-from ..verify.pool import PoolConfig, Standby, job_for, run_batched
+from ..verify.pool import PoolConfig, Standby
 from ..verify.protocol import LoadOutcome
 from .repository import READ_WHEN, Recovered, RepositoryScan, description_of
 from .static import (
@@ -38,6 +38,7 @@ from .static import (
     modified_params,
     read_compounds,
 )
+from .tracing import EarlyTraces, trace_job, traced
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -68,6 +69,8 @@ class Trees:
     modified: list[tuple[str, str, str | None, bool, str]] = field(default_factory=list)
     """Parameters implementations add in ``modifyDescription`` (``static.modified_params``)."""
     seen: set[str] = field(default_factory=set)
+    early: EarlyTraces | None = None
+    """The traces the run started when its reading ended (``tracing.EarlyTraces``)."""
     on_first_trace: Callable[[], None] | None = None
     """Called when the first tree to trace turns up (``check`` starts a worker then; more,
     if the trees to trace turn out to need them: ``trace_workers``)."""
@@ -150,6 +153,10 @@ class TreeFacts:
     syntax: tuple[tuple[str, tuple[tuple[str, int, str], ...]], ...] = ()
     found: tuple[CompoundModel | Unanalysable | NeedsTrace, ...] = ()
 
+    def to_trace(self) -> list[NeedsTrace]:
+        """The classes of the file whose trees only tracing reads."""
+        return [found for found in self.found if isinstance(found, NeedsTrace)]
+
 
 def tree_facts(tree: ast.Module, path: str) -> TreeFacts:
     """``TreeFacts`` of the module at ``path``."""
@@ -166,31 +173,10 @@ def _read(items: Iterable[tuple[Candidate, bytes]], trees: Trees | None = None) 
     return trees
 
 
-TRACE_BATCH = 32
-"""Files traced by one child at most: a hang costs one batch's timeout, then each of its
-files is traced alone."""
-
-TRACED_PER_WORKER = 64
-"""Files one tracing worker takes before a second is worth starting. A worker's start costs
-about 0.1 s of a core, a file's trace about 4 ms in a warm worker; when the tracing starts,
-the run is still busy on every core (scenes, its own checks), so a second worker's start is
-time taken from the rest of the run. The 21 public repositories (41 files to trace) as one
-run: 1.14 s with one worker, 1.19 s with two (medians of ten)."""
-
-
-def trace_workers(count: int, pool: PoolConfig) -> int:
-    """The tracing workers for ``count`` files: one per ``TRACED_PER_WORKER``, at most the
-    pool's."""
-    return max(1, min(pool.workers, -(-count // TRACED_PER_WORKER)))
-
-
 def _trace(trees: Trees, pool: PoolConfig, standby: Standby | None = None) -> None:
-    """Trace every class the syntax could not read, in sandboxed children.
-
-    The files go in batches, one child each (a fork and a cold start per batch instead of
-    per file); a batch that did not finish (a file hung or crashed its child) is traced
-    again one file per child, so the verdict lands on the file that caused it.
-    """
+    """Trace every class the syntax could not read, in sandboxed children
+    (``tracing.trace_all``), but for the files the run traced as soon as it had read them
+    (``trees.early``)."""
     if not trees.traced:
         return
     if not trees.trace:
@@ -201,11 +187,8 @@ def _trace(trees: Trees, pool: PoolConfig, standby: Standby | None = None) -> No
                     "from being imported to trace it", unread.line)))
         return
     order = list(trees.traced.values())
-    jobs = [replace(job_for(c.path, None, c.root, tuple(n.implementation for n in pending)),
-                    collect=False) for c, pending in order]
-    workers = trace_workers(len(jobs), pool)
-    size = min(TRACE_BATCH, max(1, -(-len(jobs) // workers)))
-    outcomes = run_batched(jobs, replace(pool, workers=workers), size, standby=standby)
+    outcomes = traced([trace_job(c, pending) for c, pending in order], pool, standby,
+                      trees.early)
     for (candidate, pending), found in zip(order, outcomes, strict=True):
         _record(trees, str(candidate.path), pending, found)
 

@@ -48,6 +48,7 @@ if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
     from ..compound.analysis import CompoundRun, Trees
+    from ..compound.tracing import EarlyTraces
     from ..verify.protocol import LoadOutcome
     from .file_facts import FileFacts
     from .implementation_code import ModuleFacts
@@ -109,7 +110,8 @@ def _legacy(path: str, result: FileResult, positions: Positions,
 def read_statically(candidates: list[Candidate], workers: int, index: OntologyIndex | None,
                     on_facts: Callable[[Candidate, bytes, FileFacts], None] | None = None,
                     cache: FactsCache | None = None, reader: ReadingPool | None = None,
-                    on_trace: Callable[[], None] | None = None
+                    on_trace: Callable[[], None] | None = None,
+                    on_read: Callable[[list[tuple[Candidate, FileFacts]]], None] | None = None
                     ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
     """What every legacy description declares, without importing user code.
 
@@ -121,8 +123,9 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     pass and the implementation checks read of each parsed file (``file_facts``); ``cache``
     keeps those readings, and the codemod's, by content (``facts_cache``); ``reader``
     parses the files the cache lacks in its workers (``reading_pool``), and calls
-    ``on_trace`` as soon as one of them holds a tree to trace. Files come out in the order
-    given, the codemod's last.
+    ``on_trace`` as soon as one of them holds a tree to trace; ``on_read`` is told the
+    facts of every file parsed once all are read. Files come out in the order given, the
+    codemod's last.
     """
     from ..compound.repository import SCAN_WHEN
     from ..lint.plain_reader import Declined
@@ -162,6 +165,8 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
             alone[str(candidate.path)] = (data, taken)
         if cache is not None and key is not None:
             cache.put(key, found)
+    if on_read is not None:
+        on_read([(c, facts[c.path]) for c, _ in read if c.path in facts])
     plain: list[tuple[Candidate, bytes, FileResult]] = []
     declined: list[tuple[Candidate, bytes | None]] = []
     whole_package: set[Path] = set()
@@ -348,11 +353,14 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
             if trace and not standby:
                 standby.append(Standby(pool, 1))
 
+    early = None
     if compounds:
         from ..compound.analysis import Trees
+        from ..compound.tracing import EarlyTraces
 
+        early = EarlyTraces(pool) if trace else None
         listed = launch.listed("skill_list") if launch is not None else None
-        trees = Trees(on_first_trace=start_tracing,
+        trees = Trees(on_first_trace=start_tracing, early=early,
                       named=tuple(paths), exclude=exclude,
                       launched=frozenset(listed) if listed is not None else None,
                       libraries=frozenset(launch.listed("libraries_list") or ())
@@ -368,7 +376,9 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         with frozen_heap():
             outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
                            standby, world, cache_dir, trace, facts, reader,
-                           start_tracing if trees is not None else None)
+                           start_tracing if trees is not None else None,
+                           None if early is None else _traces_now(early, start_tracing,
+                                                                  standby))
             outcome.files += len(world.scenes)
             from ..lint.robot_vocabulary import (
                 as_the_robot_resolves,
@@ -388,6 +398,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
             return outcome
     finally:
         reader.close()
+        if early is not None:
+            early.close()
         for workers in standby:
             workers.close()
 
@@ -431,10 +443,13 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
          cache_dir: Path | None = None, trace: bool = True,
          facts_cache: FactsCache | None = None,
          reader: ReadingPool | None = None,
-         start_tracing: Callable[[], None] | None = None) -> CheckOutcome:
+         start_tracing: Callable[[], None] | None = None,
+         traces_now: Callable[[list[tuple[Candidate, FileFacts]]], None] | None = None
+         ) -> CheckOutcome:
     """``run_check`` once its compound pass (``trees``) is set up, with the heap it started
     with frozen (``frozen_heap``); ``start_tracing``: what the reading calls when it meets
-    a tree to trace."""
+    a tree to trace; ``traces_now``: what it calls with every file's facts once all are
+    read (``_traces_now``)."""
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
     results: list[tuple[Candidate, FileResult]] = []
@@ -465,7 +480,7 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     with line:  # erased before the next message
         for candidate, data, result in read_statically(
                 candidates, pool.workers, index, at_hand if trees is not None else None,
-                facts_cache, reader, start_tracing):
+                facts_cache, reader, start_tracing, traces_now):
             path = str(candidate.path)
             read.append((candidate, data))
             results.append((candidate, result))
@@ -551,6 +566,19 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     if facts_cache is not None:
         keep_scenes(facts_cache, world.scenes)
     return outcome
+
+
+def _traces_now(early: EarlyTraces, start_tracing: Callable[[], None],
+                standby: list[Standby]) -> Callable[[list[tuple[Candidate, FileFacts]]], None]:
+    """What the reading calls once every file is read: the trees only tracing reads are
+    traced from then on (``EarlyTraces``), while the run goes on with its static pass."""
+    def start(files: list[tuple[Candidate, FileFacts]]) -> None:
+        pending = [(c, f.trees.to_trace()) for c, f in files if f.trees is not None]
+        if any(classes for _, classes in pending):
+            start_tracing()
+            if standby:
+                early.start(pending, standby[0])
+    return start
 
 
 @dataclass

@@ -1,20 +1,27 @@
-"""How many sandboxed workers trace a run's compound skills (``analysis.trace_workers``):
+"""How many sandboxed workers trace a run's compound skills (``tracing.trace_workers``):
 one until the trees to trace are many, since each worker's start costs a core about a
 tenth of a second while the run is still busy on every core. Real files and real workers:
 the test counts the workers the run spawned, and checks that every tree was traced."""
 
 from __future__ import annotations
 
+import os
 import textwrap
+import threading
+import time
 from pathlib import Path
 
 import pytest
 
-from ezmigrate.compound.analysis import TRACED_PER_WORKER, trace_workers
+from ezmigrate.compound import tracing
+from ezmigrate.compound.static import NeedsTrace
+from ezmigrate.compound.tracing import TRACED_PER_WORKER, trace_workers
+from ezmigrate.files.discover import Candidate
 from ezmigrate.project.check import run_check, tracing_ahead
 from ezmigrate.project.outcome_cache import OutcomeCache
 from ezmigrate.verify import pool as pool_module
-from ezmigrate.verify.pool import PoolConfig
+from ezmigrate.verify.pool import PoolConfig, Standby
+from ezmigrate.verify.protocol import LoadJob
 
 TASK = '''\
 from skiros2_common.core.abstract_skill import SkillDescription
@@ -102,3 +109,72 @@ def test_a_worker_is_started_ahead_only_where_it_can_pay_off(tmp_path: Path):
         assert started is not None
         started.close()
         assert all(p.poll() is not None for p in started.crew.processes)
+
+
+def test_the_trees_to_trace_are_traced_once_the_reading_ends(tmp_path: Path, monkeypatch):
+    """``EarlyTraces``: every file to trace goes to the sandbox in one go when the reading
+    ends, before the compound pass asks; the pass traces nothing more, and finds the
+    mistakes in each tree as before."""
+    _three_trees(tmp_path)
+    asked: list[list[str]] = []
+    real = tracing.trace_all
+
+    def noted(jobs: list[LoadJob], *rest: object, **named: object) -> object:
+        asked.append(sorted(Path(job.path).name for job in jobs))
+        return real(jobs, *rest, **named)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(tracing, "trace_all", noted)
+    outcome = run_check([tmp_path], None, PoolConfig(workers=2))
+    assert asked == [["task0.py", "task1.py", "task2.py"]]
+    traced = sorted(Path(d.path).name for d in outcome.diagnostics if d.code == "EZ309")
+    assert traced == ["task0.py", "task1.py", "task2.py"]
+
+
+HANGS = '''\
+from skiros2_skill.core.skill import SkillBase
+
+open({fifo!r}).read()  # blocks until someone writes: no one will
+
+
+class hangs(SkillBase):
+    def expand(self, skill):
+        for key in ("Duration",):
+            skill(self.skill("Wait", "", specify={{key: 1.0}}))
+'''
+
+
+def test_traces_still_running_are_stopped_with_their_worker(tmp_path: Path):
+    """A run that ends before its compound pass (an interrupt, an error) stops the traces
+    it started: the worker and the child importing a module that blocks on a FIFO nobody
+    opens for writing."""
+    fifo = tmp_path / "never"
+    os.mkfifo(fifo)
+    (tmp_path / "hangs.py").write_text(HANGS.format(fifo=str(fifo)), encoding="utf-8")
+    standby = Standby(PoolConfig(workers=1), 1)
+    early = tracing.EarlyTraces(PoolConfig(workers=1))
+    pending = [NeedsTrace("hangs", 6, "a loop")]
+    early.start([(Candidate(tmp_path / "hangs.py", tmp_path), pending)], standby)
+    writer = _open_when_read(fifo)  # the module is being imported: its child reads, blocked
+
+    def stop() -> None:
+        early.close()
+        standby.close()
+
+    stopping = threading.Thread(target=stop)
+    stopping.start()
+    stopping.join(timeout=120)
+    os.close(writer)
+    assert not stopping.is_alive()
+    assert standby.crew.processes and all(p.poll() is not None
+                                           for p in standby.crew.processes)
+
+
+def _open_when_read(fifo: Path) -> int:
+    """The FIFO's writing end, once a reader waits on it (until then opening it without
+    blocking fails): nothing is ever written, so the reader stays blocked."""
+    for _ in range(12000):
+        try:
+            return os.open(fifo, os.O_WRONLY | os.O_NONBLOCK)
+        except OSError:
+            time.sleep(0.01)
+    raise AssertionError("the module was never imported")
