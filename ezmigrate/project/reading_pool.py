@@ -153,11 +153,17 @@ def _traced(done: Future[tuple[list[Reading], list[tuple[str, FileResult]]]],
 class ReadingPool:
     """Forked readers for one run: ``workers`` processes read, the main one among them
     (so one fewer is forked; ``workers`` under two: none, the main reads alone). ``settings``:
-    what the codemod reads declined files with (None: they are left to ``settle``)."""
+    what the codemod reads declined files with (None: they are left to ``settle``).
+    ``idle``: work for the main process while it waits for the workers' last chunks (the
+    pool hands a worker its next chunk before it is done with the one it reads, so the main
+    process, which takes chunks from the end, stops a chunk or two short of it); done once,
+    and only when there is a wait."""
 
-    def __init__(self, workers: int, settings: Settings | None = None) -> None:
+    def __init__(self, workers: int, settings: Settings | None = None,
+                 idle: Callable[[], None] | None = None) -> None:
         self.workers = workers
         self.settings = settings
+        self.idle = idle
         self._pool: ProcessPoolExecutor | None = None
         self._scenes: list[tuple[Path, Future[tuple[str, Scene] | None]]] = []
         self._waiting: list[Path] = []
@@ -257,6 +263,10 @@ class ReadingPool:
             mine[start] = _read_files(items[start:start + size], compounds, here)
             if on_trace is not None and _to_trace(mine[start]):
                 on_trace()
+        if self.idle is not None and not all(futures[start].done() for start in starts
+                                             if start not in mine):
+            idle, self.idle = self.idle, None
+            idle()
         theirs: dict[int, list[Reading]] = {}
         caught_up: dict[str, FileResult] = {}
         for start in starts:
