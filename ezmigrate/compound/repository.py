@@ -19,8 +19,9 @@ from __future__ import annotations
 import ast
 import io
 import os
+import sys
 import tokenize
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -188,24 +189,88 @@ def recover_classes(data: bytes) -> Recovered:
     current: _Recovered | None = None
     previous: list[str] = ["", ""]
     try:
-        for token in tokenize.tokenize(io.BytesIO(data).readline):
-            if token.type == tokenize.NAME and previous[-1] == TOP_CLASS:
-                current = _Recovered(token.string, token.start[0])
+        for string, kind, line, column in _tokens(data):
+            if kind == tokenize.NAME and previous[-1] == TOP_CLASS:
+                current = _Recovered(string, line)
                 classes.append(current)
-            elif token.type == tokenize.NAME and token.start[1] == 0:
+            elif kind == tokenize.NAME and column == 0:
                 current = None  # a top-level statement ends the class before it
-            elif current is not None and token.type == tokenize.NAME:
-                if token.string == "createDescription":
+            elif current is not None and kind == tokenize.NAME:
+                if string == "createDescription":
                     current.creates = True
                 elif previous == ["setDescription", "("] and current.described is None:
-                    current.described = token.string
-            if token.type not in _LAYOUT:
-                top = token.string == "class" and token.start[1] == 0
-                previous = [previous[-1], TOP_CLASS if top else token.string]
+                    current.described = string
+            if kind not in _LAYOUT:
+                top = string == "class" and column == 0
+                previous = [previous[-1], TOP_CLASS if top else string]
     except (tokenize.TokenError, SyntaxError, UnicodeError, LookupError):
         if not classes:
             return None
     return [(c.name, c.line, c.described) for c in classes if c.described or c.creates]
+
+
+_OPENING = frozenset("([{")
+_CLOSING = frozenset(")]}")
+Token = tuple[str, int, int, int]
+"""``(string, type, line, column)`` of one token."""
+
+
+def _tokens(data: bytes) -> Iterable[Token]:
+    """The module's tokens as ``tokenize`` gives them, but for its layout (newlines and
+    comments, which ``recover_classes`` passes over) and its first, the encoding.
+
+    Python 3.11's ``tokenize`` is written in Python: the Python 2 files of the 21 public
+    repositories take it 45 ms. Its C tokenizer (what ``tokenize`` itself runs on from
+    3.12) gives the same names, strings and operators in 6 ms (``c_tokens``); where it
+    refuses what ``tokenize`` reads on (``0777``, ``10L``), reads what ``tokenize``
+    refuses (a bracket still open at the end) or stops short (a dedent to no level), the
+    tokens are ``tokenize``'s (``python_tokens``). A test holds both to the same classes
+    on every module of the project."""
+    found = c_tokens(data) if sys.version_info[:2] == (3, 11) else None
+    return found if found is not None else python_tokens(data)
+
+
+def c_tokens(data: bytes) -> list[Token] | None:
+    """``_tokens`` by Python 3.11's C tokenizer; None where it cannot stand in for
+    ``tokenize`` (see ``_tokens``), or under another Python."""
+    try:
+        encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
+        from _tokenize import TokenizerIter
+
+        text = data.decode(encoding)
+        raw = list(TokenizerIter(text))
+    except (SyntaxError, UnicodeError, LookupError, ValueError, ImportError, TypeError):
+        return None
+    opened = sum(1 for token in raw if token[0] in _OPENING)
+    if opened != sum(1 for token in raw if token[0] in _CLOSING) or not _whole(raw, text):
+        return None
+    return [(string, kind, line, column) for string, kind, line, _, column, _, _ in raw]
+
+
+def _whole(raw: list[tuple[str, int, int, int, int, int, str]], text: str) -> bool:
+    """Whether the C tokenizer read ``text`` to its end: 3.11's stops without a word at
+    some errors (a dedent to no level ``tokenize`` refuses), so its last token must be
+    followed by nothing but spaces and comments."""
+    last = next((t for t in reversed(raw) if t[0]), None)
+    if last is None:
+        return not any(_code(line) for line in text.splitlines())
+    _, _, _, end_line, _, end_column, line = last
+    rest = line.encode("utf-8")[end_column:].decode("utf-8", "replace")
+    return not _code(rest) and not any(_code(after)
+                                       for after in text.splitlines()[end_line:])
+
+
+def _code(line: str) -> bool:
+    """Whether a line (or its end) holds more than spaces and a comment."""
+    stripped = line.strip()
+    return bool(stripped) and not stripped.startswith("#")
+
+
+def python_tokens(data: bytes) -> Iterator[Token]:
+    """``_tokens`` by ``tokenize``: it raises where the module cannot be read on, after
+    the tokens before."""
+    return ((t.string, t.type, t.start[0], t.start[1])
+            for t in tokenize.tokenize(io.BytesIO(data).readline))
 
 
 @dataclass
