@@ -315,7 +315,7 @@ def _cache_dir(paths: Sequence[Path], options: Options) -> Path:
     else the git checkout or ROS package of the first path, else the working directory."""
     from ezskiros_runtime.ontology.discovery import enclosing_project
 
-    from ..project.load_cache import FOLDER
+    from ..project.cache_folder import FOLDER
 
     base = options.project or enclosing_project(paths[0]) or Path.cwd()
     return base / FOLDER

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, TypeVar
 from .config import ConfigError, ProjectConfig
 
 if TYPE_CHECKING:
-    from ..verify.pool import PoolConfig
+    from ..verify.pool_config import PoolConfig
 
 DEFAULT_TIMEOUT = 20.0
 """Seconds a file may take to load when verifying, when nobody says otherwise."""
@@ -92,7 +92,7 @@ class Options:
     def pool(self, ontology: tuple[str, ...], workers: int | None = None) -> PoolConfig:
         """The sandbox's settings for these options, loading ``ontology`` (resolved files;
         empty: the bundled default) with ``workers`` workers (default: ``jobs``)."""
-        from ..verify.pool import PoolConfig
+        from ..verify.pool_config import PoolConfig
 
         return PoolConfig(workers=self.jobs if workers is None else workers,
                           timeout=self.timeout, ontology=ontology, python=self.python,

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ezskiros_runtime.ontology.discovery import enclosing_project
+from ezskiros_runtime.ontology.listing import remember
 from ezskiros_runtime.ontology.vendored import rule_for, upstream_package
 
 from .git_ignored import IgnoredQuery
@@ -264,10 +265,12 @@ def _walk(top: Path, roots: list[str], notes: list[str],
         seen.add(real)
         try:
             with os.scandir(folder) as listing:
-                entries = sorted(listing, key=lambda e: e.name)
+                entries = list(listing)
         except OSError as error:
             notes.append(f"{folder}: cannot list ({error.strerror})")
             continue
+        remember(folder, entries)  # the searches after this one list it no more
+        entries.sort(key=lambda e: e.name)
         for entry in entries:
             if entry.name in ALWAYS_EXCLUDED:
                 continue

@@ -23,12 +23,12 @@ file's own line ending. ``--no-package-xml`` turns this off.
 
 from __future__ import annotations
 
-import os
 import re
 from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 from ezskiros_runtime.ontology.discovery import NOT_SEARCHED, PACKAGE_XML, package_root
+from ezskiros_runtime.ontology.listing import walk
 
 RUNTIME_PACKAGE = "ezskiros_runtime"
 """The runtime's ROS package (``ros/ezskiros_runtime/package.xml``), the dependency that
@@ -112,7 +112,7 @@ def _without_comments(data: bytes) -> bytes:
 def manifests_below(folder: Path) -> Iterator[Path]:
     """Every ``package.xml`` under ``folder``, sorted, not in hidden folders nor in what
     discovery never searches (build, devel and install spaces hold copies of them)."""
-    for here, dirs, names in os.walk(folder):
+    for here, dirs, names in walk(folder):
         dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in NOT_SEARCHED)
         if PACKAGE_XML in names:
             yield Path(here) / PACKAGE_XML

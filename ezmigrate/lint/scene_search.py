@@ -4,11 +4,11 @@ checks (``world_model`` has them)."""
 
 from __future__ import annotations
 
-import os
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from ezskiros_runtime.ontology.listing import walk
 from ezskiros_runtime.ontology.vendored import vendored_skip
 
 from ..files.discover import ALWAYS_EXCLUDED, excluded_under
@@ -31,7 +31,7 @@ def scene_files(paths: Sequence[Path], exclude: Sequence[str] = ()) -> list[Path
             continue
         skip = excluded_under(given, exclude)
         vendored = vendored_skip(given)
-        for folder, dirs, names in os.walk(given):
+        for folder, dirs, names in walk(given):
             here = Path(folder)
             dirs[:] = sorted(d for d in dirs if d not in ALWAYS_EXCLUDED
                              and not d.startswith(".") and not skip(here / d)

@@ -18,27 +18,15 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ezskiros_runtime.codes import code_for
-from ezskiros_runtime.model import SkillModel
 
-from ..codemod.settings import Settings
 from ..files.discover import Candidate, Discovery, library_candidates, start_discovery
-from ..files.prefilter import by_text
 from ..lint.diagnostic import Diagnostic, Positions, diagnostic
 from ..lint.scene_search import SCENE_SUFFIX, WorldRun, scene_files
-from ..report.once import once_per_cause
 from ..report.results import FileResult
-from ..verify.pool import BATCH, PoolConfig, Standby, job_for, run_batched
 from . import holdpoint
-from .cross_file import RUNTIME_MARKER, module_name
-from .facts_cache import FactsCache, keep_scenes, seed_scenes
-from .frozen_heap import frozen_heap
 from .implementation_code import IMPLEMENTATION
-from .import_scan import import_words
 from .launch import Launch, with_init_scene
-from .load_cache import LoadCache, cached_loads
 from .outcome_cache import OutcomeCache, read_all, run_key
-from .progress import Progress
-from .runner import Migrated
 from .uninferable import UNINFERABLE, UNKNOWN
 
 if TYPE_CHECKING:
@@ -49,7 +37,10 @@ if TYPE_CHECKING:
 
     from ..compound.analysis import CompoundRun, Trees
     from ..compound.tracing import EarlyTraces
+    from ..verify.pool import Standby
+    from ..verify.pool_config import PoolConfig
     from ..verify.protocol import LoadOutcome
+    from .facts_cache import FactsCache
     from .file_facts import FileFacts
     from .implementation_code import ModuleFacts
     from .reading_pool import ReadingPool
@@ -128,6 +119,7 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     codemod's last.
     """
     from ..compound.repository import SCAN_WHEN
+    from ..files.prefilter import by_text
     from ..lint.plain_reader import Declined
     from .file_facts import FileFacts, file_facts
 
@@ -215,6 +207,8 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     ``alone``: files already read alone as the codemod reads them, by the reading pool
     (``runner.own_reading``) or from their syntax (``ezskiros_reader``).
     """
+    from .import_scan import import_words
+    from .runner import Migrated
     from .settle import settle  # the codemod's readings: not in a run whose outcome is kept
 
     fingerprint = index.fingerprint if index is not None else ""
@@ -267,6 +261,8 @@ class _Definers:
     it). Indexed once by module name, asked once per declined file."""
 
     def __init__(self, paths: Iterable[str]) -> None:
+        from .cross_file import module_name
+
         self.packages: set[str] = set()
         self.by_module: dict[bytes, set[str]] = {}
         for path in paths:
@@ -312,6 +308,8 @@ def tracing_ahead(paths: list[Path], pool: PoolConfig, tracing: bool,
     if not tracing or pool.workers < 2 or not paths or not all(p.is_dir() for p in paths) \
             or (cache_dir is not None and OutcomeCache(cache_dir).keeps_any()):
         return None
+    from ..verify.pool import Standby
+
     return Standby(pool, 1, ahead=True)
 
 
@@ -342,6 +340,11 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
         return kept[1]
     if progress is not None:
         progress(f"checking {len(candidates)} files")
+    from ..codemod.settings import Settings
+    from ..verify.pool import Standby
+    from .facts_cache import FactsCache
+    from .frozen_heap import frozen_heap
+
     trees = None
     standby: list[Standby] = [tracing] if tracing is not None and trace else []
     starting = threading.Lock()
@@ -457,6 +460,14 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     with frozen (``frozen_heap``); ``start_tracing``: what the reading calls when it meets
     a tree to trace; ``traces_now``: what it calls with every file's facts once all are
     read (``_traces_now``)."""
+    from ezskiros_runtime.model import SkillModel
+
+    from ..verify.pool import BATCH, job_for, run_batched
+    from .cross_file import RUNTIME_MARKER
+    from .facts_cache import keep_scenes, seed_scenes
+    from .load_cache import LoadCache, cached_loads
+    from .progress import Progress
+
     loadable: list[Candidate] = []
     read: list[tuple[Candidate, bytes]] = []
     results: list[tuple[Candidate, FileResult]] = []
@@ -633,6 +644,7 @@ def _implementations(implementing: list[tuple[Candidate, ModuleFacts]], skills: 
 
     from ..lint.robot_vocabulary import scene_classes
     from ..lint.world_model import readable_scenes
+    from ..report.once import once_per_cause
     from .implementation_code import implementation_findings
 
     typed = scene_classes(world.scenes)

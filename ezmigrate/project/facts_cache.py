@@ -31,7 +31,7 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
-from .load_cache import write_entry
+from .cache_folder import write_entry
 from .outcome_cache import code_digest
 
 PACK = "facts.pickle"

@@ -16,13 +16,13 @@ and checks that depend on it say so rather than guess.
 from __future__ import annotations
 
 import ast
-import os
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from xml.etree import ElementTree
 
+from ezskiros_runtime.ontology.listing import walk
 from ezskiros_runtime.ontology.vendored import package_name, vendored_skip
 
 from ..files.discover import ALWAYS_EXCLUDED
@@ -113,7 +113,7 @@ def _walk(root: Path) -> Iterator[Path]:
         yield root
         return
     vendored = vendored_skip(root)
-    for folder, dirs, names in os.walk(root):
+    for folder, dirs, names in walk(root):
         here = Path(folder)
         dirs[:] = [d for d in dirs if d not in ALWAYS_EXCLUDED and not d.startswith(".")
                    and not vendored(here / d)]

@@ -18,16 +18,15 @@ import hashlib
 import json
 import os
 import sys
-import tempfile
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 
 from .. import __version__
 from ..verify.protocol import LoadJob, LoadOutcome
+from .cache_folder import write_entry
 from .cross_file import module_name
 from .import_scan import import_words
 
-FOLDER = ".ezmigrate_cache"
 CACHED = frozenset({"ok", "import-error", "syntax", "exit"})
 """Statuses that depend on the file alone: cached. Timeouts, crashes and memory are not."""
 
@@ -119,23 +118,6 @@ def _packages_around(path: str) -> list[str]:
         if parent == folder:
             return found
         folder = parent
-
-
-def write_entry(cache: Path, folder: str, name: str, text: str | bytes) -> None:
-    """``cache/folder/name`` holding ``text``, written whole (a temporary file renamed into
-    place); the cache folder gets its ``.gitignore`` when it is made. A read-only checkout
-    keeps nothing: same results, no cache."""
-    try:
-        if not cache.exists():
-            cache.mkdir(parents=True)
-            (cache / ".gitignore").write_text("# made by ezmigrate check\n*\n")
-        (cache / folder).mkdir(exist_ok=True)
-        handle, temporary = tempfile.mkstemp(dir=cache / folder, suffix=".tmp")
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(text.encode("utf-8") if isinstance(text, str) else text)
-        os.replace(temporary, cache / folder / name)
-    except OSError:
-        return
 
 
 def cached_loads(jobs: Sequence[LoadJob], sources: Sequence[bytes],

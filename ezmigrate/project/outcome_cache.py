@@ -30,7 +30,7 @@ from typing import Any
 
 from .. import __version__
 from ..lint.diagnostic import Diagnostic
-from .load_cache import write_entry
+from .cache_folder import write_entry
 
 OUTCOMES = "outcomes"
 """The sub-folder of ``.ezmigrate_cache`` the runs are kept in."""

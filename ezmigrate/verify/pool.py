@@ -16,7 +16,7 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from pathlib import Path
 
 from .interpreters import (
@@ -26,23 +26,8 @@ from .interpreters import (
     oldest_that_compiles,
     worker_command,
 )
+from .pool_config import PoolConfig
 from .protocol import QUIT, LoadJob, LoadOutcome
-
-
-@dataclass(frozen=True)
-class PoolConfig:
-    """How verification workers run: count, per-file timeout, memory cap, ontology."""
-
-    workers: int = 2
-    timeout: float = 20.0
-    memory_mb: int = 2048
-    ontology: tuple[str, ...] = ()
-    python: str | None = None
-    """The interpreter to load files with (``--python``, or the robot's); None: ours."""
-    python_given: bool = False
-    """``python`` is the user's choice (``--python``, ``[tool.ezmigrate] python``): kept
-    for every file. Otherwise a file with syntax newer than it is loaded again under the
-    oldest ``python3.X`` that compiles it (``interpreters.oldest_that_compiles``)."""
 
 
 class _Stopped(Exception):

@@ -22,6 +22,7 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from .listing import walk
 from .vendored import NOT_SEARCHED, PACKAGE_XML, git_top, vendored_skip
 
 OWL_FOLDER = "owl"
@@ -90,7 +91,7 @@ def _owl_files(root: Path, skip: Callable[[Path], bool]) -> Iterable[tuple[Path,
     package (``vendored.VendoredRule``, with ``root`` as the repository outside git)."""
     is_vendored = vendored_skip(root)
     upstream: set[str] = set()  # the folders of vendored packages met so far
-    for folder, dirs, names in os.walk(root):
+    for folder, dirs, names in walk(root):
         here = Path(folder)
         inside = folder in upstream
         dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in NOT_SEARCHED

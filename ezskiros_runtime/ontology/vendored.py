@@ -24,6 +24,8 @@ from pathlib import Path
 from typing import Callable, Iterator
 from xml.etree import ElementTree
 
+from .listing import shared_listings
+
 PACKAGE_XML = "package.xml"
 
 UPSTREAM_PACKAGES = frozenset({
@@ -122,14 +124,16 @@ _shared: dict[Path, VendoredRule] | None = None
 
 @contextlib.contextmanager
 def shared_rules() -> Iterator[None]:
-    """Within it, the walks under the same folder share one ``VendoredRule``: a command
-    that searches one repository for its ontology, launch files, scenes and Python files
-    asks about each folder once, not four times. Outside it (a robot's runtime, a test
-    that changes a repository between two walks) every walk decides afresh."""
+    """Within it, the walks under the same folder share one ``VendoredRule``, and every
+    folder is listed once (``listing.shared_listings``): a command that searches one
+    repository for its ontology, launch files, scenes and Python files asks about each
+    folder once, not four times. Outside it (a robot's runtime, a test that changes a
+    repository between two walks) every walk decides afresh."""
     global _shared
     outer, _shared = _shared, {}
     try:
-        yield
+        with shared_listings():
+            yield
     finally:
         _shared = outer
 

@@ -13,8 +13,8 @@ alike is made there, any other by rdflib's ``Literal``), and anything outside th
 (blank nodes, collections, escapes, long strings, decimals and doubles, ``@base`` and
 relative IRIs but an unused prefix's ``<>``, a name that continues past where the subset
 stops reading it, an unknown prefix, any syntax error) gives ``None`` and the file goes to
-rdflib, which reads it or says where it is wrong. A test holds the two readings equal on every scene this project has, under each
-robot's rdflib.
+rdflib, which reads it or says where it is wrong. A test holds the two readings equal on
+every scene this project has, under each robot's rdflib.
 
 Runs on the robot's Python 3.8 with rdflib 4.2.2 as well as on rdflib 7.
 """

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from ezmigrate.project import check as check_module
 from ezmigrate.project.check import run_check
+from ezmigrate.verify import pool as pool_module
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.load import load_index
 
@@ -41,7 +41,7 @@ def test_batches_find_what_one_child_per_file_finds(repo: Path,
                                                     monkeypatch: pytest.MonkeyPatch) -> None:
     index = load_index()
     batched = run_check([repo], index, PoolConfig(workers=2), compounds=False)
-    monkeypatch.setattr(check_module, "BATCH", 1)  # every file in a child of its own
+    monkeypatch.setattr(pool_module, "BATCH", 1)  # every file in a child of its own
     alone = run_check([repo], index, PoolConfig(workers=2), compounds=False)
     assert batched.diagnostics == alone.diagnostics
     assert batched.skills == alone.skills

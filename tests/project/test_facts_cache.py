@@ -18,9 +18,9 @@ import pytest
 from ezmigrate.lint.diagnostic import Diagnostic
 from ezmigrate.project import facts_cache, reading_pool
 from ezmigrate.project import settle as settle_module
+from ezmigrate.project.cache_folder import FOLDER
 from ezmigrate.project.check import run_check
 from ezmigrate.project.facts_cache import KEY_DIR, PACK, FactsCache
-from ezmigrate.project.load_cache import FOLDER
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.index import bundled_ontology_path
 from ezskiros_runtime.ontology.load import load_index

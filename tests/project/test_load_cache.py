@@ -9,7 +9,8 @@ from pathlib import Path
 
 from cache_support import check_json
 
-from ezmigrate.project.load_cache import FOLDER, LoadCache, cached_loads
+from ezmigrate.project.cache_folder import FOLDER
+from ezmigrate.project.load_cache import LoadCache, cached_loads
 from ezmigrate.verify.protocol import LoadJob, LoadOutcome
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"

@@ -14,7 +14,7 @@ from pathlib import Path
 
 from cache_support import check_json
 
-from ezmigrate.project.load_cache import FOLDER
+from ezmigrate.project.cache_folder import FOLDER
 from ezmigrate.project.outcome_cache import OUTCOMES
 
 TRACED = '''\
