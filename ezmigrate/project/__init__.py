@@ -10,7 +10,7 @@ under `interrupt`'s deferral) and `earlier` adds what an earlier run migrated to
 forked workers, with the scenes, from the heap `frozen_heap` keeps out of the collector's
 reach, as `runner`'s workers do), with `load_cache`,
 `facts_cache` and `outcome_cache` for its next run (each load, each file's and scene's
-reading by content, the whole run),
+reading by content, the whole run; `cache_folder` is where they write),
 `launch` for the launch files it reads, `uninferable` judging EZ105 and EZ209 by what the
 trees pass and the scenes hold, and `implementation_code` for the checks inside
 implementation classes; `target` says which robot's Python the code is for; `progress`

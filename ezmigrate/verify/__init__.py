@@ -1,6 +1,7 @@
 """Verification: load the legacy and the migrated version in isolated children, compare.
 
-`pool` keeps the worker processes and `zygote` is one of them: it imports the runtime and
+`pool` keeps the worker processes (`pool_config` says how they run) and `zygote` is one
+of them: it imports the runtime and
 loads the ontology once, then forks a child per file; `child`, `overlay` and `protocol` run
 in those children, possibly under the robot's Python, so they are written for Python 3.8;
 `interpreters` finds that Python; `verdicts` judges a migrated file from the two models;
