@@ -52,6 +52,15 @@ def test_one_worker_per_so_many_files_at_most_the_pools(count, workers, expected
 
 def test_a_few_trees_are_traced_by_one_worker(tmp_path: Path, monkeypatch):
     _three_trees(tmp_path)
+    spawned = _spawns_noted(monkeypatch)
+    outcome = run_check([tmp_path], None, PoolConfig(workers=2))
+    traced = sorted(Path(d.path).name for d in outcome.diagnostics if d.code == "EZ309")
+    assert traced == ["task0.py", "task1.py", "task2.py"]  # each tree traced, mistake found
+    assert len(spawned) == 1
+
+
+def _spawns_noted(monkeypatch: pytest.MonkeyPatch) -> list[list[str]]:
+    """The command line of every worker the pool spawns from now on (real workers)."""
     spawned: list[list[str]] = []
     real = pool_module._Crew.spawn
 
@@ -60,10 +69,7 @@ def test_a_few_trees_are_traced_by_one_worker(tmp_path: Path, monkeypatch):
         return real(self, args, *rest)  # type: ignore[arg-type]
 
     monkeypatch.setattr(pool_module._Crew, "spawn", noted)
-    outcome = run_check([tmp_path], None, PoolConfig(workers=2))
-    traced = sorted(Path(d.path).name for d in outcome.diagnostics if d.code == "EZ309")
-    assert traced == ["task0.py", "task1.py", "task2.py"]  # each tree traced, mistake found
-    assert len(spawned) == 1
+    return spawned
 
 
 def _three_trees(root: Path) -> None:
@@ -75,14 +81,7 @@ def test_a_worker_started_ahead_traces_the_run(tmp_path: Path, monkeypatch):
     """``tracing_ahead`` starts the worker before the run knows its ontology; the run
     traces with it and starts no other."""
     _three_trees(tmp_path)
-    spawned: list[list[str]] = []
-    real = pool_module._Crew.spawn
-
-    def noted(self: pool_module._Crew, args: list[str], *rest: object) -> object:
-        spawned.append(args)
-        return real(self, args, *rest)  # type: ignore[arg-type]
-
-    monkeypatch.setattr(pool_module._Crew, "spawn", noted)
+    spawned = _spawns_noted(monkeypatch)
     tracing = tracing_ahead([tmp_path], PoolConfig(workers=2), True, None)
     assert tracing is not None and len(spawned) == 1 and "--ontology-later" in spawned[0]
     try:

@@ -60,7 +60,8 @@ def test_a_folder_that_cannot_be_listed_is_passed_over(tree: Path) -> None:
         locked.chmod(0o755)
 
 
-def test_each_folder_is_listed_once(tree: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def _listings_noted(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    """Every folder ``os.scandir`` lists from now on, by its absolute path."""
     listed: list[str] = []
     real = os.scandir
 
@@ -69,6 +70,11 @@ def test_each_folder_is_listed_once(tree: Path, monkeypatch: pytest.MonkeyPatch)
         return real(path)
 
     monkeypatch.setattr(listing.os, "scandir", noted)
+    return listed
+
+
+def test_each_folder_is_listed_once(tree: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    listed = _listings_noted(monkeypatch)
     with shared_listings():
         first = _walked(tree, walk)
         count = len(listed)
@@ -83,13 +89,6 @@ def test_a_listing_made_by_another_search_is_taken(tree: Path,
     with shared_listings():
         with os.scandir(tree) as entries:
             remember(tree, list(entries))
-        calls: list[str] = []
-        real = os.scandir
-
-        def noted(path: str | os.PathLike[str]) -> object:
-            calls.append(os.path.abspath(path))
-            return real(path)
-
-        monkeypatch.setattr(listing.os, "scandir", noted)
+        listed = _listings_noted(monkeypatch)
         assert _walked(tree, walk) == expected
-        assert str(tree) not in calls and calls  # the root from ``remember``, the rest listed
+        assert str(tree) not in listed and listed  # the root from ``remember``, the rest listed
