@@ -6,7 +6,9 @@ the tree is read here with ``ast``, without importing anything; a body that comp
 tree (a loop, a branch, a helper call, ``specify`` values other than literals and
 ``self.params["X"].value``) is handed to the tracer (``ezskiros_runtime.compound.trace``),
 which runs it in a child process. Both give the same ``CompoundModel``; a property test
-holds them to it on generated trees.
+holds them to it on generated trees. ``self.setProcessor(...)`` sets the skill instance's
+processor, not the tree's (SkiROS2 copied it to the tree's node before ``expand``; the
+tracer ignores it too): read past.
 """
 
 from __future__ import annotations
@@ -210,6 +212,10 @@ class _Reader:
             if isinstance(func, ast.Attribute) and func.attr == "setProcessor" \
                     and self._is_root(func.value) and len(call.args) == 1:
                 processor = self._processor(call.args[0])
+            elif isinstance(func, ast.Attribute) and func.attr == "setProcessor" \
+                    and self._is_self(func.value) and len(call.args) == 1:
+                self._processor(call.args[0])  # the instance's, not the tree's: SkiROS2
+                # copied it to the node before ``expand`` (``SkillWrapper.setInstance``)
             elif self._is_root(func):
                 children += [self._node(a) for a in call.args]
             else:
@@ -218,6 +224,9 @@ class _Reader:
 
     def _is_root(self, node: ast.expr) -> bool:
         return isinstance(node, ast.Name) and node.id == self.root
+
+    def _is_self(self, node: ast.expr) -> bool:
+        return isinstance(node, ast.Name) and node.id == self.self_name
 
     def _is_skill_call(self, node: ast.expr) -> bool:
         return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \

@@ -1,8 +1,9 @@
 """Static reading and tracing give the same model of any tree (hypothesis).
 
 Random trees (skill nodes with labels, remaps and specifies, literal or read from
-``self.params``; processor nodes, wrapped ones; nodes called with children) are written
-as the ``expand`` of a real legacy module. The static reader (``ezmigrate.compound.static``)
+``self.params``; processor nodes, wrapped ones; nodes called with children; now and then a
+``self.setProcessor`` line, which sets the instance's processor and not the tree's) are
+written as the ``expand`` of a real legacy module. The static reader (``ezmigrate.compound.static``)
 reads the syntax; the tracer runs the same module through the real legacy loader with
 ``trace=`` (as the sandbox child does). Both must equal the generated model, and each
 other. A second spelling builds the same tree through a local list, which only tracing can
@@ -102,13 +103,19 @@ def _node(node: Any) -> str:
     return head
 
 
-def source_of(model: CompoundModel, through_a_list: bool = False) -> str:
+def source_of(model: CompoundModel, through_a_list: bool = False,
+              instance: tuple[int, str] | None = None) -> str:
+    """``expand`` building ``model``; ``instance``: where a ``self.setProcessor`` line goes
+    and what it sets (the skill instance's processor, which the tree does not take)."""
     lines = [f"skill.setProcessor({_processor(model.processor)})"]
     children = [_node(c) for c in model.children]
     if through_a_list:  # static reading gives up on this; only tracing reads it
         lines += ["nodes = []"] + [f"nodes.append({c})" for c in children] + ["skill(*nodes)"]
     else:
         lines += [f"skill({c})" for c in children]
+    if instance is not None:
+        at, processor = instance
+        lines.insert(min(at, len(lines)), f"self.setProcessor({_processor(processor)})")
     return HEADER + "".join(f"        {line}\n" for line in lines)
 
 
@@ -122,10 +129,11 @@ def _traced(source: str, folder: Path) -> CompoundModel:
 
 @settings(max_examples=150, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
-@given(model=models)
-def test_static_and_traced_models_are_the_generated_one(model: CompoundModel,
-                                                        tmp_path: Path) -> None:
-    source = source_of(model)
+@given(model=models, instance=st.one_of(st.none(), st.tuples(st.integers(0, 5),
+                                                           st.sampled_from(PROCESSORS))))
+def test_static_and_traced_models_are_the_generated_one(
+        model: CompoundModel, instance: tuple[int, str] | None, tmp_path: Path) -> None:
+    source = source_of(model, instance=instance)
     [static] = read_compounds(ast.parse(source), "tree.py")
     assert isinstance(static, CompoundModel), static
     traced = _traced(source, tmp_path)
