@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import ast
 import re
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -71,9 +71,6 @@ class Trees:
     seen: set[str] = field(default_factory=set)
     early: EarlyTraces | None = None
     """The traces the run started when its reading ended (``tracing.EarlyTraces``)."""
-    on_first_trace: Callable[[], None] | None = None
-    """Called when the first tree to trace turns up (``check`` starts a worker then; more,
-    if the trees to trace turn out to need them: ``trace_workers``)."""
     syntax: dict[tuple[str, str], list[tuple[str, int, str]]] = field(default_factory=dict)
     """``(path, class)`` -> mistakes its ``self.skill`` calls show in the syntax alone
     (``static.expand_findings``): reported when the tree can be neither read nor traced."""
@@ -128,15 +125,10 @@ class Trees:
         self.modified += facts.modified
         for cls, mistakes in facts.syntax:
             self.syntax[(path, cls)] = list(mistakes)
-        pending = []
-        for found in facts.found:
-            if isinstance(found, NeedsTrace):
-                pending.append(found)
-            else:
-                self.models.append((path, found))
+        self.models += [(path, found) for found in facts.found
+                        if not isinstance(found, NeedsTrace)]
+        pending = facts.to_trace()
         if pending:
-            if not self.traced and self.on_first_trace is not None:
-                self.on_first_trace()
             self.traced[path] = (candidate, pending)
 
 

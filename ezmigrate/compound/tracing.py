@@ -8,7 +8,7 @@ Which files need it is known as soon as the files are read (``TreeFacts.to_trace
 compound pass, which used to start the tracing, comes after the codemod's readings and the
 legacy checks, while the tracing worker sat ready and idle. ``EarlyTraces`` starts them in
 one go when the reading ends, in a thread of its own, and the pass takes their outcomes
-(``outcome``). One go, not file by file as they are read: each go costs a child's start,
+(``outcomes``). One go, not file by file as they are read: each go costs a child's start,
 and while the files are read both cores are busy already. Every load restores
 ``sys.modules``, so an outcome does not depend on the files that shared its batch: the
 run reports the same bytes.
@@ -65,7 +65,7 @@ def _key(job: LoadJob) -> tuple[str, tuple[str, ...]]:
 
 class EarlyTraces:
     """The traces a run started when its reading ended (``start``), for the compound pass
-    to take (``outcome``). ``close`` stops them when the run ends before the pass (an
+    to take (``outcomes``). ``close`` stops them when the run ends before the pass (an
     interrupt, an error)."""
 
     def __init__(self, pool: PoolConfig) -> None:
@@ -88,7 +88,7 @@ class EarlyTraces:
                 for job, outcome in zip(jobs, trace_all(jobs, self.pool, standby),
                                         strict=True):
                     self._done[_key(job)] = outcome
-            except BaseException as error:  # said in the main thread, by ``outcome``
+            except BaseException as error:  # said in the main thread, by ``outcomes``
                 self._failed = error
 
         self._thread = threading.Thread(target=run, daemon=True)

@@ -351,7 +351,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 
     def start_tracing() -> None:
         """Start the tracing worker once: as soon as the reading meets a tree to trace (in
-        the reading pool's thread when a worker read it), or the compound pass does."""
+        the reading pool's thread when a worker read it), or at the reading's end
+        (``_traces_now``)."""
         with starting:
             if trace and not standby:
                 standby.append(Standby(pool, 1))
@@ -363,7 +364,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
 
         early = EarlyTraces(pool) if trace else None
         listed = launch.listed("skill_list") if launch is not None else None
-        trees = Trees(on_first_trace=start_tracing, early=early,
+        trees = Trees(early=early,
                       named=tuple(paths), exclude=exclude,
                       launched=frozenset(listed) if listed is not None else None,
                       libraries=frozenset(launch.listed("libraries_list") or ())

@@ -30,7 +30,6 @@ from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..compound.static import NeedsTrace
 from ..lint.plain_reader import Declined
 from ..report.results import FileResult
 from .file_facts import FileFacts, file_facts
@@ -138,8 +137,7 @@ def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds
 
 def _to_trace(readings: list[Reading]) -> bool:
     """Whether a file read holds a compound tree its syntax does not give."""
-    return any(facts.trees is not None and any(isinstance(f, NeedsTrace) for f in
-                                               facts.trees.found) for facts, _ in readings)
+    return any(facts.trees is not None and facts.trees.to_trace() for facts, _ in readings)
 
 
 def _traced(done: Future[tuple[list[Reading], list[tuple[str, FileResult]]]],

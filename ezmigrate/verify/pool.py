@@ -127,7 +127,8 @@ class _Worker:
         return LoadOutcome.from_json(json.loads(line))
 
     def close(self) -> None:
-        """Tell the worker to quit (``zygote.QUIT``), and wait for it."""
+        """Tell the worker to quit (``protocol.QUIT``), and wait for it (at most five seconds,
+        then ``kill``)."""
         try:
             if self.process.stdin:
                 with contextlib.suppress(OSError):
@@ -139,7 +140,8 @@ class _Worker:
             self.kill()
 
     def kill(self) -> None:
-        """End a worker that never served (it runs no child): no need to wait for it."""
+        """End the worker now: one that never served (it runs no child), or one that did not
+        quit when told."""
         with contextlib.suppress(OSError):
             self.process.kill()
         self.process.wait()
