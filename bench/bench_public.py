@@ -25,10 +25,12 @@ from __future__ import annotations
 import argparse
 import ast
 import contextlib
+import os
 import shutil
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -36,27 +38,39 @@ from ezmigrate.files.discover import discover
 
 
 def floor(checkout: Path) -> float:
-    """Seconds to read every file of the run and parse the skill files."""
+    """Seconds to read every ``.py`` file under ``checkout`` with a plain ``os.walk`` and
+    ``ast.parse`` those naming ``createDescription`` (issue 40: the physical floor, not the
+    tool's own walk), in this running interpreter."""
     started = time.perf_counter()
-    found, _ = discover([checkout])
-    for candidate in found:
-        data = candidate.path.read_bytes()
-        if b"createDescription" in data:
-            with contextlib.suppress(SyntaxError, ValueError):
-                ast.parse(data)
+    for folder, _, names in os.walk(checkout):
+        for name in names:
+            if name.endswith(".py"):
+                try:
+                    data = Path(folder, name).read_bytes()
+                except OSError:
+                    continue
+                if b"createDescription" in data:
+                    with contextlib.suppress(SyntaxError, ValueError):
+                        ast.parse(data)
     return time.perf_counter() - started
+
+
+CACHE = Path(tempfile.gettempdir()) / "ezmigrate-bench-cache"
+"""The benchmark's own cache folder (``--cache-dir``), emptied where a run must start cold."""
 
 
 def command(checkout: Path, *extra: str) -> float:
     started = time.perf_counter()
     subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero", "--jobs", "2",
-                    *extra, "."], cwd=checkout, capture_output=True, check=False, timeout=1800)
+                    "--cache-dir", str(CACHE), *extra, "."], cwd=checkout, capture_output=True,
+                   check=False, timeout=1800)
     return time.perf_counter() - started
 
 
 def _output(checkout: Path, *extra: str) -> str:
     return subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero",
-                           "--jobs", "2", "--output-format", "json", *extra, "."],
+                           "--jobs", "2", "--cache-dir", str(CACHE), "--output-format",
+                           "json", *extra, "."],
                           cwd=checkout, capture_output=True, check=False, timeout=1800,
                           text=True).stdout
 
@@ -65,7 +79,7 @@ def whole(tree: Path, runs: int) -> int:
     """The ``--whole`` measurement (see the module doc)."""
     low = min(floor(tree) for _ in range(runs))
     first = min(command(tree, "--no-cache") for _ in range(runs))
-    shutil.rmtree(tree / ".ezmigrate_cache", ignore_errors=True)
+    shutil.rmtree(CACHE, ignore_errors=True)
     command(tree)
     second = min(command(tree) for _ in range(runs))
     found, _ = discover([tree])
@@ -80,7 +94,7 @@ def whole(tree: Path, runs: int) -> int:
         same = _output(tree) == _output(tree, "--no-cache")
     finally:
         edited.write_bytes(original)
-        shutil.rmtree(tree / ".ezmigrate_cache", ignore_errors=True)
+        shutil.rmtree(CACHE, ignore_errors=True)
     print("| tree | floor (s) | check --no-cache (s) | ratio | second check (s) | "
           "after one file changed (s) |")
     print("|---|---:|---:|---:|---:|---:|")
@@ -128,10 +142,10 @@ def main(argv: list[str] | None = None) -> int:
     for checkout in sorted(p for p in args.checkouts.iterdir() if p.is_dir()):
         low = min(floor(checkout) for _ in range(args.runs))
         first = min(command(checkout, "--no-cache") for _ in range(args.runs))
-        shutil.rmtree(checkout / ".ezmigrate_cache", ignore_errors=True)
+        shutil.rmtree(CACHE, ignore_errors=True)
         command(checkout)
         second = min(command(checkout) for _ in range(args.runs))
-        shutil.rmtree(checkout / ".ezmigrate_cache", ignore_errors=True)
+        shutil.rmtree(CACHE, ignore_errors=True)
         totals = [totals[0] + low, totals[1] + first, totals[2] + second]
         print(f"| {checkout.name} | {low:.3f} | {first:.2f} | {first / low:.0f}x | "
               f"{second:.2f} |")

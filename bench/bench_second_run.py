@@ -63,19 +63,21 @@ def main() -> None:
         for _ in range(options.runs):
             rows.setdefault("rewrite --no-verify again (no-op)", []).append(
                 _timed(["rewrite", "--no-verify", "."], repo))
-            shutil.rmtree(repo / ".ezmigrate_cache", ignore_errors=True)
+            shutil.rmtree(Path(folder) / "cache", ignore_errors=True)
             rows.setdefault("check, empty cache", []).append(
-                _timed(["check", "--exit-zero", "--output-format", "json", "."], repo))
+                _timed(["check", "--exit-zero", "--cache-dir", str(Path(folder) / "cache"),
+                        "--output-format", "json", "."], repo))
             rows.setdefault("check again, cache of the first", []).append(
-                _timed(["check", "--exit-zero", "--output-format", "json", "."], repo))
+                _timed(["check", "--exit-zero", "--cache-dir", str(Path(folder) / "cache"),
+                        "--output-format", "json", "."], repo))
             rows.setdefault("check --no-cache", []).append(
                 _timed(["check", "--exit-zero", "--no-cache", "--output-format", "json", "."],
                        repo))
             edited = _a_skill_file(repo)
             edited.write_bytes(edited.read_bytes() + b"# edited\n")
             rows.setdefault("check after one file changed, cache of the run before", []).append(
-                _timed(["check", "--exit-zero", "--output-format", "json", "."], repo,
-                       "changed"))
+                _timed(["check", "--exit-zero", "--cache-dir", str(Path(folder) / "cache"),
+                        "--output-format", "json", "."], repo, "changed"))
             _timed(["check", "--exit-zero", "--no-cache", "--output-format", "json", "."], repo,
                    "changed")
             edited.write_bytes(edited.read_bytes()[:-len(b"# edited\n")])

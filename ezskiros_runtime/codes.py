@@ -445,6 +445,14 @@ RULES: tuple[Rule, ...] = (
          "or move the line named out of the way and run again.",
          ("lossy-rewrite",),
          skiros2="none: ezmigrate refused to write the file, which stays as it was"),
+    Rule("EZ907", "not-read-statically", "info",
+         "An EzSkiROS description whose signature or body uses a construct `check` does not "
+         "evaluate without running the module (a loop, a helper call, a base class of "
+         "another module): `check` runs no repository code, so the description is not "
+         "checked, not clean. Info: it says nothing of the robot.",
+         "Write the description in the forms of docs/dsl.md, or run `check --trace` (which "
+         "loads the module in the sandbox) on code you trust.",
+         ("not-read-statically",)),
 )
 
 BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}

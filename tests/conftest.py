@@ -8,7 +8,9 @@ that a run never reads or writes the user's real ``~/.cache/ezskiros`` or
 from __future__ import annotations
 
 import ast
+import atexit
 import os
+import shutil
 import sys
 import tempfile
 from collections.abc import Callable
@@ -19,9 +21,12 @@ import pytest
 
 _CACHE = tempfile.mkdtemp(prefix="ezskiros-test-cache-")
 os.environ.setdefault("EZSKIROS_CACHE_DIR", _CACHE)
-# the signing key of ``check``'s facts cache, made by every run with a cache: here, not in
-# the user's ``~/.cache/ezmigrate`` (children inherit it; pip's cache stays where it is)
-os.environ.setdefault("EZMIGRATE_KEY_DIR", tempfile.mkdtemp(prefix="ezmigrate-test-key-"))
+# ``check``'s cache and its signing key, made by every run with a cache: here, not in the
+# user's ``~/.cache/ezmigrate`` (children inherit it; pip's cache stays where it is)
+_CHECK_CACHE = tempfile.mkdtemp(prefix="ezmigrate-test-cache-")
+os.environ.setdefault("EZMIGRATE_CACHE_DIR", _CHECK_CACHE)
+for _folder in (_CACHE, _CHECK_CACHE):  # nothing of the session is left in /tmp
+    atexit.register(shutil.rmtree, _folder, True)
 
 
 _SUMMARY = pytest.StashKey[List[str]]()

@@ -48,3 +48,42 @@ FLAT = f"""\
 </rdf:RDF>
 """
 """A lab ontology with a DTD as OWL tools write it (flat abbreviations): it must load."""
+
+CHAIN = "http://example.org/chain#"
+
+
+def chain_turtle(length: int, *, properties: bool = False) -> str:
+    """A Turtle file of ``length`` ``rdfs:subClassOf`` triples in one chain (issue 41:
+    10,000 of them took 3 GB when every class kept its ancestors), ``C1`` at the bottom;
+    with ``properties``, the same chain of ``rdfs:subPropertyOf`` under a property with a
+    domain, which every one of them inherits."""
+    lines = [f"@prefix ex: <{CHAIN}> .",
+             "@prefix rdfs: <http://www.w3.org/2000/01/rdf-schema#> .",
+             "@prefix owl: <http://www.w3.org/2002/07/owl#> .",
+             f"ex:C{length} a owl:Class ."]
+    lines += [f"ex:C{n} rdfs:subClassOf ex:C{n + 1} ." for n in range(1, length)]
+    if properties:
+        lines.append(f"ex:p{length} a owl:ObjectProperty ; rdfs:domain ex:C{length} .")
+        lines += [f"ex:p{n} a owl:ObjectProperty ; rdfs:subPropertyOf ex:p{n + 1} ."
+                  for n in range(1, length)]
+    return "\n".join(lines) + "\n"
+
+
+def entity_owl(uses: int, length: int = 256) -> str:
+    """RDF/XML with one flat entity of ``length`` characters used ``uses`` times in one
+    literal: what the DTD guard let through before (issue 41: 80,000 uses in 240 KB kept
+    rdflib busy for minutes, building the literal by quadratic concatenation)."""
+    return f"""\
+<?xml version="1.0"?>
+<!DOCTYPE rdf:RDF [
+  <!ENTITY owl "http://www.w3.org/2002/07/owl#">
+  <!ENTITY big "{'x' * length}">
+]>
+<rdf:RDF xmlns:rdf="http://www.w3.org/1999/02/22-rdf-syntax-ns#"
+         xmlns:rdfs="http://www.w3.org/2000/01/rdf-schema#">
+  <rdf:Description rdf:about="http://example.org/x">
+    <rdf:type rdf:resource="&owl;Class"/>
+    <rdfs:comment>{'&big;' * uses}</rdfs:comment>
+  </rdf:Description>
+</rdf:RDF>
+"""

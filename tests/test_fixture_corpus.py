@@ -9,6 +9,7 @@ import io
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tokenize
@@ -187,11 +188,12 @@ def test_isolation_file_parses_and_has_a_description(path: Path) -> None:
 
 
 def test_marker_file_is_created_first_thing_at_import(tmp_path: Path) -> None:
-    marker = tmp_path / "marker"
-    env = {**os.environ, "EZMIGRATE_TEST_MARKER": str(marker)}
+    shutil.copy(ISOLATION / "creates_marker.py", tmp_path / "creates_marker.py")
+    (tmp_path / ".markers").mkdir()
+    marker = tmp_path / ".markers" / "imported"
     # no stand-ins: the import of rospy fails, but only after the marker is written
-    proc = subprocess.run([sys.executable, str(ISOLATION / "creates_marker.py")],
-                          env=env, capture_output=True, text=True, timeout=60)
+    proc = subprocess.run([sys.executable, str(tmp_path / "creates_marker.py")],
+                          capture_output=True, text=True, timeout=60)
     assert proc.returncode != 0
     assert marker.read_text().startswith("imported")
 

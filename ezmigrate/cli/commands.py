@@ -27,7 +27,7 @@ from ..files.paths import from_repository, in_report, scrub
 from ..files.paths import shown as shown_path
 from ..project import interrupt
 from ..project.target import robot_python, target_for, verified_with
-from ..report.diffs import colour, unified_diff
+from ..report.diffs import unified_diff
 from ..report.reports import (
     MarkdownOptions,
     Summary,
@@ -39,21 +39,29 @@ from ..report.reports import (
 )
 from ..report.results import FileResult
 from ..report.written_lines import as_written, written_diff
-from ..verify.interpreters import version_of
+from ..verify.interpreters import never_search, version_of
 from .config import ConfigError, load_project_config
 from .options import CommandLine, Options
+from .output_formats import printable
+from .terminal import coloured_text, echo_diff, wants_colour
 
 EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
 EXIT_BROKEN_PIPE = 128 + 13  # as a shell reports a process ended by SIGPIPE
 
 
 def _fail(message: str, debug: bool) -> NoReturn:
-    click.echo(f"ezmigrate: error: {message}", err=True)
+    click.echo(f"ezmigrate: error: {printable(message)}", err=True)
     if debug:
         traceback.print_exc()
     else:
         click.echo("ezmigrate: rerun with --debug for details", err=True)
     sys.exit(EXIT_ERROR)
+
+
+def _said(message: str, debug: bool) -> str:
+    """``_short``, printable (``output_formats.printable``): a path inside the message
+    starts no line. ``--debug`` prints a traceback whole, as Python wrote it."""
+    return _short(message, debug) if debug else printable(_short(message, debug))
 
 
 def _short(message: str, debug: bool) -> str:
@@ -79,13 +87,13 @@ class _Main(click.Group):
             interrupt.ignore_further()
             with contextlib.suppress(OSError):  # the terminal may be gone (SIGHUP)
                 for line in stop.report():
-                    click.echo(f"ezmigrate: {line}", err=True)
+                    click.echo(f"ezmigrate: {printable(line)}", err=True)
             sys.exit(stop.exit_code)
         except (click.exceptions.ClickException, click.exceptions.Exit,
                 click.exceptions.Abort):
             raise
         except ConfigError as error:
-            click.echo(f"ezmigrate: error: {error}", err=True)
+            click.echo(f"ezmigrate: error: {printable(str(error))}", err=True)
             sys.exit(EXIT_ERROR)
         except BrokenPipeError:  # `ezmigrate rewrite --dry-run . | head`: the reader left
             _quiet_stdout()
@@ -114,9 +122,15 @@ def _thread_failed(args: Any, debug: bool) -> None:
         click.echo("ezmigrate: rerun with --debug for details", err=True)
 
 
-def _options(start: Path, cli: CommandLine) -> Options:
-    """The settings a command runs with: ``cli`` over the project ``start`` belongs to."""
-    return Options.resolve(cli, load_project_config(start))
+def _options(start: Path, cli: CommandLine, checked: Sequence[Path] = ()) -> Options:
+    """The settings a command runs with: ``cli`` over the project ``start`` belongs to.
+    ``start`` and ``checked`` (the paths given) are the repository at work: no interpreter
+    is looked for there, ``--python`` named on the command line included."""
+    never_search([start, *checked])
+    project = load_project_config(start)
+    for warning in project.warnings:  # once per run: a typo'd key otherwise does nothing
+        click.echo(f"ezmigrate: {printable(warning)}", err=True)
+    return Options.resolve(cli, project)
 
 
 def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
@@ -136,12 +150,12 @@ def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
                                         skip=skip)
         index, source = load_source(source)
         for warning in source.warnings():
-            click.echo(f"ezmigrate: {warning}", err=True)
+            click.echo(f"ezmigrate: {printable(warning)}", err=True)
         described = scrub(source.describe(), report=False)  # paths as other lines give them
-        click.echo(f"ezmigrate: {described}", err=True)
+        click.echo(f"ezmigrate: {printable(described)}", err=True)
         return index, tuple(str(p) for p in source.paths), described
     except OntologyError as error:
-        click.echo(f"ezmigrate: error: {error}", err=True)
+        click.echo(f"ezmigrate: error: {printable(str(error))}", err=True)
         sys.exit(EXIT_ERROR)
 
 
@@ -167,7 +181,7 @@ def _write_report(path: Path, results: list[FileResult], options: MarkdownOption
     try:
         path.write_text(text, encoding="utf-8")
     except OSError as error:
-        click.echo(f"ezmigrate: error: cannot write the report {path}: "
+        click.echo(f"ezmigrate: error: cannot write the report {printable(str(path))}: "
                    f"{error.strerror or error}", err=True)
         sys.exit(EXIT_ERROR)
 
@@ -202,7 +216,9 @@ def main() -> None:
 @click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file when verifying.")
 @click.option("--python", "python", metavar="PATH",
               help="Load files with this interpreter when verifying (default: this one, and "
-                   "for syntax newer than it the newest python3.X on PATH that compiles it).")
+                   "for syntax newer than it the oldest newer python3.X that compiles it, "
+                   "from PATH's absolute entries outside the checked paths, else from "
+                   "pyenv's versions).")
 @click.option("--ignore-order", is_flag=True, help="Verification ignores declaration order.")
 @click.option("--ignore-labels", is_flag=True, help="Verification ignores condition labels.")
 @click.option("--color/--no-color", default=None, help="Colour diffs (default: on a terminal).")
@@ -230,7 +246,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     reads_stdin = [str(p) for p in paths] == ["-"]
     start = (stdin_filename or Path.cwd()) if reads_stdin else paths[0]
     options = _options(start, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
-                                          python=python))
+                                          python=python), paths)
     if reads_stdin:
         from ..project.stdin import rewrite_stdin, stdin_roots
 
@@ -256,7 +272,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     python = robot_python(robot, options.python, verify)
     verifier = verified_with(python, robot) if verify else ""
     if verifier:
-        click.echo(f"ezmigrate: {verifier}", err=True)
+        click.echo(f"ezmigrate: {printable(verifier)}", err=True)
     pool = replace(options.pool(ontology_files), python=python)  # verification and tracing
     request = RewriteOptions(
         paths=list(paths), dry_run=dry_run, check=check, exclude=options.exclude,
@@ -267,7 +283,7 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
 
     outcome = run_rewrite(request, index)
     for note in outcome.notes:
-        click.echo(f"ezmigrate: {note}", err=True)
+        click.echo(f"ezmigrate: {printable(note)}", err=True)
     # earlier runs' descriptions count too: stderr and the report say one count of the tree
     results = _as_written(outcome.migrated, whole_tree(outcome.migrated))
     for item, result in zip(outcome.migrated, results, strict=True):  # unchanged: bytes stay
@@ -278,11 +294,11 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
                           item.original if result.changed else b"", result, dry_run, check,
                           color, debug)
     for refused in outcome.refused:
-        click.echo(f"ezmigrate: {refused}", err=True)
+        click.echo(f"ezmigrate: {printable(refused)}", err=True)
     declared = _show_manifests(outcome, request, color)
     newer = newer_python_lines(results, python, version_of(python)) if verify else []
     for line in newer:
-        click.echo(f"ezmigrate: {line}", err=True)
+        click.echo(f"ezmigrate: {printable(line)}", err=True)
     compounds: list[str] = []
     scenes: list[str] = []
     if report is not None and report.suffix.lower() == ".md":
@@ -310,15 +326,18 @@ def _as_written(migrated: Sequence[Any],
             for m, r in zip(migrated, results or [m.result for m in migrated], strict=True)]
 
 
-def _cache_dir(paths: Sequence[Path], options: Options) -> Path:
-    """Where ``check`` keeps its cache: in the project (the ``pyproject.toml`` folder),
-    else the git checkout or ROS package of the first path, else the working directory."""
+def _cache_dir(paths: Sequence[Path], options: Options, named: Path | None) -> Path:
+    """The folder of this project's entries in the user's cache (``cache_folder``): the
+    project is the ``pyproject.toml`` folder, else the git checkout or ROS package of the
+    first path, else the working directory."""
     from ezskiros_runtime.ontology.discovery import enclosing_project
 
-    from ..project.cache_folder import FOLDER
+    from ..project.cache_folder import ENVIRONMENT, cache_root, project_folder
 
+    if named is not None:  # the sandbox hides it from loaded code (``hidden_folders``)
+        os.environ[ENVIRONMENT] = str(named.resolve())
     base = options.project or enclosing_project(paths[0]) or Path.cwd()
-    return base / FOLDER
+    return project_folder(cache_root(named), base)
 
 
 def _show_manifests(outcome: Any, request: Any, color: bool | None) -> list[str]:
@@ -332,15 +351,14 @@ def _show_manifests(outcome: Any, request: Any, color: bool | None) -> list[str]
         shown = shown_path(manifest.path)
         element = runtime_depend(manifest.old)
         if request.dry_run:  # applies from the repository root, as the files' diffs do
-            diff = unified_diff(from_repository(manifest.path, shown), manifest.old,
-                                manifest.new)
-            use_colour = sys.stdout.isatty() if color is None else color
-            click.echo(colour(diff) if use_colour else diff, nl=False)
+            diff = unified_diff(printable(from_repository(manifest.path, shown)),
+                                manifest.old, manifest.new)
+            echo_diff(diff, color)
         elif request.check:
-            click.echo(f"would rewrite {shown}")
+            click.echo(f"would rewrite {printable(shown)}")
         lines.append(f"`{shown}`: declares the runtime, `{element}`"
                      + ("" if request.writes else " (would)"))
-        click.echo(f"ezmigrate: {shown}: {element} "
+        click.echo(f"ezmigrate: {printable(shown)}: {element} "
                    + ("added" if request.writes else "would be added"), err=True)
     return lines
 
@@ -349,19 +367,19 @@ def _print_result(shown: str, relative: str, original: bytes, result: FileResult
                   dry_run: bool, check: bool, color: bool | None, debug: bool) -> None:
     """One file's problems on stderr; its diff (``--dry-run``) or name (``--check``)."""
     if result.error:
-        click.echo(f"{shown}: {_short(result.error, debug)}", err=True)
+        click.echo(f"{printable(shown, path=True)}: {_said(result.error, debug)}", err=True)
     for skill in result.skills:
         if skill.status in ("skipped", "failed"):
-            click.echo(f"{shown}:{skill.line}: {skill.name}: {skill.status}: "
-                       f"{(skill.reason or '').splitlines()[0] if skill.reason else ''}",
-                       err=True)
+            reason = (skill.reason or "").splitlines()[0] if skill.reason else ""
+            click.echo(f"{printable(shown, path=True)}:{skill.line}: {printable(skill.name)}: "
+                       f"{skill.status}: {printable(reason)}", err=True)
     if result.changed and dry_run:
         assert isinstance(result.new_source, bytes)
-        diff = unified_diff(relative, original, result.new_source, written_diff(result))
-        use_colour = sys.stdout.isatty() if color is None else color
-        click.echo(colour(diff) if use_colour else diff, nl=False)
+        diff = unified_diff(printable(relative), original, result.new_source,
+                            written_diff(result))
+        echo_diff(diff, color)
     elif result.changed and check:
-        click.echo(f"would rewrite {shown}")
+        click.echo(f"would rewrite {printable(shown)}")
 
 
 def _finish(results: list[FileResult], report: Path | None, writes: bool, check: bool,
@@ -390,7 +408,9 @@ def _finish(results: list[FileResult], report: Path | None, writes: bool, check:
 @click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
 @click.option("--python", "python", metavar="PATH",
               help="Load files with this interpreter when verifying (default: this one, and "
-                   "for syntax newer than it the newest python3.X on PATH that compiles it).")
+                   "for syntax newer than it the oldest newer python3.X that compiles it, "
+                   "from PATH's absolute entries outside the checked paths, else from "
+                   "pyenv's versions).")
 @click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
 @click.option("--ignore-order", is_flag=True, help="Declaration order does not matter.")
 @click.option("--ignore-labels", is_flag=True, help="Condition labels do not matter.")
@@ -403,12 +423,12 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
     from ..verify.command import PathsMismatch, VerifyOptions, run_verify
 
     options = _options(before, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
-                                           python=python))
+                                           python=python), (after,))
     _, ontology_files, used = _load_index(ontology, before, [before], options)
     robot = target_for([after], options.target_version, f"{options.source}: target-version")
     python = robot_python(robot, options.python, True)
     verifier = verified_with(python, robot)
-    click.echo(f"ezmigrate: {verifier}", err=True)
+    click.echo(f"ezmigrate: {printable(verifier)}", err=True)
     pool = replace(options.pool(ontology_files), python=python)
     try:
         results, unloadable = run_verify(VerifyOptions(
@@ -417,13 +437,15 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
         raise click.UsageError(str(error)) from None
     for result in results:
         if result.error:
-            click.echo(f"{result.path}: {_short(result.error, debug)}", err=True)
+            click.echo(f"{printable(result.path, path=True)}: {_said(result.error, debug)}",
+                       err=True)
         for note in result.notes:  # an unchanged file that cannot load; captured output
-            click.echo(f"{result.path}: {_short(note, debug)}", err=True)
+            click.echo(f"{printable(result.path, path=True)}: {_said(note, debug)}", err=True)
         for skill in result.skills:
             if skill.status == "failed":
-                click.echo(f"{result.path}:{skill.line}: {skill.name}: "
-                           f"{_short(skill.reason or '', debug)}", err=True)
+                click.echo(f"{printable(result.path, path=True)}:{skill.line}: "
+                           f"{printable(skill.name)}: {_said(skill.reason or '', debug)}",
+                           err=True)
                 for d in skill.diff or ():
                     click.echo(f"    {d['where']}: {d['message']}", err=True)
                     if d.get("before") is not None:
@@ -469,17 +491,24 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 @click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
 @click.option("--python", "python", metavar="PATH",
               help="Load files with this interpreter when verifying (default: this one, and "
-                   "for syntax newer than it the newest python3.X on PATH that compiles it).")
+                   "for syntax newer than it the oldest newer python3.X that compiles it, "
+                   "from PATH's absolute entries outside the checked paths, else from "
+                   "pyenv's versions).")
 @click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
 @click.option("--include-vendored", is_flag=True,
               help="Also go into vendored copies of SkiROS2's own packages (skiros2_common, "
                    "skiros2_std_skills, ...), which are skipped with a note by default.")
-@click.option("--no-trace", is_flag=True,
-              help="Never import user code: EzSkiROS files are not loaded and compound "
-                   "skills whose tree the syntax cannot give are not traced (said as info).")
+@click.option("--trace/--no-trace", "trace", default=False,
+              help="Run repository code, for repositories you trust: load EzSkiROS files "
+                   "whose descriptions the syntax cannot give, and trace compound skills "
+                   "whose tree it cannot give, in the sandbox. By default check runs no "
+                   "code of the repository and says what it could not read (info).")
 @click.option("--no-cache", is_flag=True,
-              help="Load every EzSkiROS file again instead of reusing what an earlier run "
-                   "of an unchanged repository loaded (kept in .ezmigrate_cache).")
+              help="Read every file again instead of reusing what an earlier run kept in "
+                   "the cache.")
+@click.option("--cache-dir", "cache_folder", type=click.Path(path_type=Path, file_okay=False),
+              help="The cache folder (default: $EZMIGRATE_CACHE_DIR, else "
+                   "$XDG_CACHE_HOME/ezmigrate or ~/.cache/ezmigrate).")
 @click.option("--quiet", "-q", is_flag=True, help="Only errors; no summary.")
 @click.option("--scene", type=click.Path(path_type=Path, exists=True, dir_okay=False),
               help="A world-model scene (*.turtle): say which skills cannot start from it "
@@ -494,7 +523,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
           ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
           statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
           python: str | None, exclude: tuple[str, ...], include_vendored: bool, quiet: bool,
-          scene: Path | None, debug: bool, no_cache: bool = False, no_trace: bool = False,
+          scene: Path | None, debug: bool, no_cache: bool = False, trace: bool = False,
+          cache_folder: Path | None = None,
           stdin_filename: Path | None = None, fix: bool = False,
           show_diff: bool = False, launch_file: Path | None = None) -> None:
     """Lint SkiROS2 and EzSkiROS descriptions under PATHS, the working directory when none
@@ -507,7 +537,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
 
     from ..lint.select import Selection, SelectorError, apply, parse_selectors
     from ..project.check import checked_files, needs_trees, run_check, tracing_ahead
-    from .output_formats import FORMATS, STATISTICS
+    from .output_formats import STATISTICS
 
     if statistics and output_format not in STATISTICS:
         raise click.UsageError(f"--statistics has no {output_format} form (it has "
@@ -526,7 +556,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
         paths, roots, anchor = (copy,), stdin_roots(stdin_filename), stdin_filename or Path.cwd()
     options = _options(anchor, CommandLine(
         exclude=exclude, jobs=jobs, timeout=timeout, python=python, select=select or None,
-        ignore=ignore, extend_select=extend_select))
+        ignore=ignore, extend_select=extend_select), roots)
     try:
         selection = Selection(
             select=None if options.select is None else parse_selectors(options.select,
@@ -536,8 +566,8 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     except SelectorError as error:
         raise click.UsageError(str(error)) from None
     compounds = needs_trees(selection.codes())
-    cache_dir = None if no_cache else _cache_dir(paths, options)
-    tracing = tracing_ahead(list(paths), options.pool(()), compounds and not no_trace,
+    cache_dir = None if no_cache else _cache_dir(paths, options, cache_folder)
+    tracing = tracing_ahead(list(paths), options.pool(()), compounds and trace,
                             cache_dir)
     try:
         with shared_rules():  # the four searches of the repository share their answers
@@ -546,20 +576,20 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
             pool = options.pool(ontology_files)
             if tracing is not None:
                 tracing.use_ontology(pool.ontology)
-            progress = (lambda line: click.echo(f"ezmigrate: {line}", err=True)) \
+            progress = (lambda line: click.echo(f"ezmigrate: {printable(line)}", err=True)) \
                 if sys.stderr.isatty() and not quiet else None
             outcome = run_check(list(paths), index, pool, options.exclude, progress,
                                 options.skill_libraries, compounds=compounds,
                                 world=_world_run(paths, options, scene),
                                 include_vendored=include_vendored,
                                 cache_dir=cache_dir,
-                                launch=_launch(anchor, launch_file, quiet), trace=not no_trace,
+                                launch=_launch(anchor, launch_file, quiet), trace=trace,
                                 discovered=discovered, tracing=tracing)
     finally:
         if tracing is not None:
             tracing.close()
     for note in outcome.notes:
-        click.echo(f"ezmigrate: {note}", err=True)
+        click.echo(f"ezmigrate: {printable(note)}", err=True)
     found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it
              for d in apply(outcome.diagnostics, outcome.sources, selection)]
     if fix or show_diff:
@@ -568,9 +598,9 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
         writes = fix and not show_diff
         fixes = apply_fixes(found, paths, write=writes)
         for diff in fixes.diffs:
-            click.echo(colour(diff) if sys.stdout.isatty() else diff, nl=False)
+            echo_diff(diff)
         for refused in fixes.refused:
-            click.echo(f"ezmigrate: {refused}", err=True)
+            click.echo(f"ezmigrate: {printable(refused)}", err=True)
         if fixes.fixed or writes:
             click.echo(f"ezmigrate: {'fixed' if writes else 'would fix'} "
                        f"{counted(fixes.fixed, 'finding')} in {counted(fixes.files, 'file')}",
@@ -579,13 +609,24 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
         if show_diff:
             sys.exit(EXIT_ATTENTION if fixes.fixed else EXIT_OK)
     shown = [d for d in found if d.severity == "error"] if quiet else found
-    click.echo((STATISTICS if statistics else FORMATS)[output_format](shown), nl=False)
+    _echo_findings(shown, output_format, statistics)
     errors = sum(1 for d in found if d.severity == "error")
     if not quiet:
         click.echo(f"ezmigrate: {counted(outcome.files, 'file')} checked, "
                    f"{counted(outcome.skills, 'skill')}, {counted(errors, 'error')}, "
                    f"{counted(len(found) - errors, 'other finding')}", err=True)
     sys.exit(EXIT_OK if exit_zero or not errors else EXIT_ATTENTION)
+
+
+def _echo_findings(found: list[Any], output_format: str, statistics: bool) -> None:
+    """``check``'s findings on stdout in ``output_format``; the text format coloured by
+    severity on a terminal (``terminal.wants_colour``), every machine format never."""
+    from .output_formats import FORMATS, STATISTICS
+
+    if output_format == "text" and not statistics and wants_colour(sys.stdout):
+        click.echo(coloured_text(found), nl=False, color=True)
+    else:
+        click.echo((STATISTICS if statistics else FORMATS)[output_format](found), nl=False)
 
 
 def _launch(anchor: Path, chosen: Path | None, quiet: bool) -> Any:
@@ -595,13 +636,17 @@ def _launch(anchor: Path, chosen: Path | None, quiet: bool) -> Any:
 
     from ..project.launch import project_launch
 
-    root = anchor if anchor.is_dir() else enclosing_project(anchor) or anchor.parent
-    launch, note = project_launch(root, chosen)
+    root = anchor if anchor.is_dir() else enclosing_project(anchor)
+    if root is None:  # a file alone: no launch file around it is its robot's, unless named
+        launch, note = project_launch(anchor, chosen) if chosen else (None, None)
+    else:
+        launch, note = project_launch(root, chosen)
     if not quiet and note is not None:
-        click.echo(f"ezmigrate: {note}", err=True)
+        click.echo(f"ezmigrate: {printable(note)}", err=True)
     if not quiet and launch is not None and launch.values:
         said = ", ".join(f"{k}={v}" for k, v in sorted(launch.values.items()))
-        click.echo(f"ezmigrate: launch: {shown_path(str(launch.path))} ({said})", err=True)
+        click.echo(f"ezmigrate: launch: {printable(shown_path(str(launch.path)))} "
+                   f"({printable(said)})", err=True)
         scene = launch.values.get("init_scene", "").strip()
         if scene and launch.scene() is None:
             click.echo(f"ezmigrate: init_scene {scene!r} is neither beside the launch file "

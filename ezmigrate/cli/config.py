@@ -5,7 +5,8 @@ interpreter that loads files when verifying, relative to the project when it is 
 ``select``, ``ignore`` and ``extend-select`` (finding codes for ``check``),
 ``skill-libraries`` (folders of skill libraries a compound skill may use, relative to the
 project), ``single-valued`` (the relations EZ401 keeps to one parent or one place), and
-``ontology`` (read by ``ezskiros_runtime.ontology.config``). Command-line
+``ontology`` (read by ``ezskiros_runtime.ontology.config``). Any other key is a warning on
+stderr with the key it most resembles (``exlude``: did you mean ``exclude``?). Command-line
 options win over these (``ezmigrate.cli.options`` merges them).
 
 The file is found and read by ``ezskiros_runtime.pyproject``, the one reader the runtime's
@@ -17,15 +18,22 @@ TOML, unreadable, ``[tool.ezmigrate]`` not a table) is a ``ConfigError``, never 
 
 from __future__ import annotations
 
+import difflib
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 from ezskiros_runtime.pyproject import PyprojectError, find_pyproject, find_tool_table
 
+from ..files.paths import shown
 from ..project.target import parse_target
 
-__all__ = ["ConfigError", "ProjectConfig", "find_pyproject", "load_project_config"]
+__all__ = ["KEYS", "ConfigError", "ProjectConfig", "find_pyproject", "load_project_config"]
+
+KEYS = ("exclude", "extend-select", "ignore", "jobs", "ontology", "python", "select",
+        "single-valued", "skill-libraries", "target-version", "timeout")
+"""Every key ``[tool.ezmigrate]`` may hold (``ontology`` is the runtime's): any other is a
+typo the run would otherwise pass over in silence (``exlude`` would exclude nothing)."""
 
 
 @dataclass(frozen=True)
@@ -45,6 +53,8 @@ class ProjectConfig:
     skill_libraries: tuple[Path, ...] = ()
     target_version: tuple[int, int] | None = None
     """``target-version = "py38"``: the Python migrated code must run on (``target``)."""
+    warnings: tuple[str, ...] = ()
+    """One line per key of the table that is none of ``KEYS``, for stderr."""
 
 
 def load_project_config(start: Path) -> ProjectConfig:
@@ -60,7 +70,21 @@ def load_project_config(start: Path) -> ProjectConfig:
         return ProjectConfig()
     path, section = found
     return replace(_project_config(path, section),
-                   single_valued=_single_valued(section, path))
+                   single_valued=_single_valued(section, path),
+                   warnings=unknown_keys(path, section))
+
+
+def unknown_keys(path: Path, section: dict[str, Any]) -> tuple[str, ...]:
+    """A warning naming ``path`` for each key of ``section`` that is not one of ``KEYS``,
+    with the known key it most resembles, as ruff says of its own table. A warning, not an
+    error: a newer ezmigrate's key in a shared ``pyproject.toml`` must not stop an older one."""
+    found = []
+    for key in sorted(k for k in section if k not in KEYS):
+        close = difflib.get_close_matches(key.replace("_", "-").lower(), KEYS, n=1)
+        hint = f"; did you mean '{close[0]}'?" if close else ""
+        found.append(f"warning: {shown(path)}: unknown key '{key}' in [tool.ezmigrate], "
+                     f"ignored{hint}")
+    return tuple(found)
 
 
 def _single_valued(section: dict[str, Any], path: Path) -> tuple[str, ...] | None:

@@ -22,11 +22,11 @@ the project, then discovery) is the runtime's, which robots use without this com
 
 from __future__ import annotations
 
-import shutil
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, TypeVar
 
+from ..verify.interpreters import resolve
 from .config import ConfigError, ProjectConfig
 
 if TYPE_CHECKING:
@@ -138,7 +138,7 @@ def _interpreter(given: str | None, pyproject: ProjectConfig) -> str | None:
     value = _first(None, given, pyproject.python)
     if value is None:
         return None
-    found = shutil.which(value)
+    found = resolve(value)  # absolute; never from a relative PATH entry
     if found is None:
         where = "--python" if given is not None else (
             f"{pyproject.source or 'pyproject.toml'}: [tool.ezmigrate] python")

@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import json
 import os
+import re
 from collections import Counter
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 from pathlib import Path
 from urllib.parse import quote
 from xml.etree import ElementTree
@@ -24,10 +26,47 @@ _SARIF_LEVEL = {"error": "error", "warning": "warning", "info": "note"}
 _GITHUB_LEVEL = {"error": "error", "warning": "warning", "info": "notice"}
 
 
+_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+"""C0 and C1 controls (line breaks, ESC, ...), DEL, and Unicode's line and paragraph
+separators: what a terminal or a CI runner may act on instead of showing."""
+_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+_PLAIN_START = re.compile(r"[\w./~]")
+
+
+def printable(text: str, path: bool = False) -> str:
+    """``text`` with every control character written as an escape (``\\n``, ``\\r``,
+    ``\\t``, ``\\x1b``, ``\\x85``), for text output. A file name may hold any of them, and
+    printed raw a line break in one starts a line of its own: GitHub's runner reads a line
+    starting with ``::`` as a workflow command (``::error file=README.md,...``), a terminal
+    acts on ESC. ``path``: ``text`` is a path at the start of a printed line, so a relative
+    one not starting with a letter, digit, ``_``, ``.``, ``/`` or ``~`` is written
+    ``./NAME`` (the same file) and no line starts with what a file name chose (``-``,
+    standard input, stays as it is). The github
+    and SARIF formats escape as their readers require instead."""
+    escaped = _CONTROL.sub(_control_escape, text)
+    if path and escaped and escaped != "-" and not _PLAIN_START.match(escaped):
+        return "./" + escaped
+    return escaped
+
+
+def _control_escape(match: re.Match[str]) -> str:
+    """One control character as Python writes it in a string literal."""
+    character = match.group()
+    code = ord(character)
+    return _ESCAPES.get(character) or (f"\\x{code:02x}" if code <= 0xFF else f"\\u{code:04x}")
+
+
 def text(diagnostics: Sequence[Diagnostic]) -> str:
     """``path:line:col: CODE [severity] message``, one per line (what editors and
-    terminals parse)."""
-    return "".join(f"{d}\n" for d in diagnostics)
+    terminals parse); path and message through ``printable``, so that each finding is one
+    line and none starts with what a file name says."""
+    return "".join(f"{_printable_finding(d)}\n" for d in diagnostics)
+
+
+def _printable_finding(d: Diagnostic) -> Diagnostic:
+    """``d`` with what a file or its code chose (path, skill, message) made printable."""
+    return replace(d, path=printable(d.path, path=True), skill=printable(d.skill),
+                   message=printable(d.message))
 
 
 def as_json(diagnostics: Sequence[Diagnostic]) -> str:

@@ -56,7 +56,7 @@ LAB_REPOSITORY: tuple[Row, ...] = (
     Row("EZ309", 1, 1),
     Row("EZ310", 1, 1),
     Row("EZ311", 1, 1),
-    Row("EZ313", 1, 1),
+    Row("EZ313", 2, 2),
     Row("EZ314", 1, 1),
     Row("EZ315", 1, 1),
     Row("EZ407", 1, 1),

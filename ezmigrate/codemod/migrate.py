@@ -42,6 +42,7 @@ from .core.imports import (
     RUNTIME,
     imported_names,
     module_bindings,
+    name_counts,
     update_imports,
     used_names,
 )
@@ -279,8 +280,9 @@ def _used_after(facts: SyntaxFacts, converted: list[_Plan]) -> set[str]:
     for plan in converted:
         if plan.new_function is not None and plan.create is not None:
             removed += plan.create.names
-        if plan.cls.base is None:
-            removed.update((dotted_name(plan.cls.base_arg.value) or "").split("."))
+        if plan.cls.base is None:  # the legacy base is replaced: ``abstract_skill`` of
+            # ``abstract_skill.SkillDescription`` is a reference, ``SkillDescription`` is not
+            removed += name_counts(plan.cls.base_arg.value)
     used = set(facts.names - removed)
     for plan in converted:
         if plan.new_function is not None:

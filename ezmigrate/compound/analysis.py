@@ -82,8 +82,8 @@ class Trees:
     """The paths the run was given: the repository around them joins the skill index."""
     exclude: tuple[str, ...] = ()
     trace: bool = True
-    """False (``check --no-trace``): no user code is imported, so a tree the syntax cannot
-    read stays unread, and says why."""
+    """False (``check`` without ``--trace``): no user code is imported, so a tree the syntax
+    cannot read stays unread, and says why."""
     prepared: dict[str, TreeFacts] = field(default_factory=dict)
     """Facts of files with no description, read with the run's files (``file_facts``):
     ``add`` takes them in its own order instead of parsing the file."""
@@ -174,9 +174,9 @@ def _trace(trees: Trees, pool: PoolConfig, standby: Standby | None = None) -> No
     if not trees.trace:
         for candidate, pending in trees.traced.values():
             for unread in pending:
-                trees.models.append((str(candidate.path), Unanalysable(
-                    unread.implementation, f"{unread.reason}, and --no-trace keeps its module "
-                    "from being imported to trace it", unread.line)))
+                trees.models.append((str(candidate.path), unread.partial or Unanalysable(
+                    unread.implementation, f"{unread.reason}, and check runs no repository "
+                    "code to trace it (check --trace does, in the sandbox)", unread.line)))
         return
     order = list(trees.traced.values())
     outcomes = traced([trace_job(c, pending) for c, pending in order], pool, standby,
@@ -191,7 +191,7 @@ def _record(trees: Trees, path: str, pending: list[NeedsTrace],
     needs = {n.implementation: n for n in pending}
     if not outcome.loaded:
         for unread in pending:
-            trees.models.append((path, Unanalysable(
+            trees.models.append((path, unread.partial or Unanalysable(
                 unread.implementation, f"{unread.reason}, and the module could not be "
                 f"loaded to trace it ({outcome.status}: {outcome.message})", unread.line)))
         return
@@ -199,7 +199,11 @@ def _record(trees: Trees, path: str, pending: list[NeedsTrace],
         need = needs.get(found.implementation)
         if need is None:
             continue
-        if isinstance(found, Unanalysable):
+        if isinstance(found, Unanalysable) and need.partial is not None:
+            (line, why), *rest = need.partial.gaps  # what the syntax gives all the same
+            trees.models.append((path, replace(need.partial, gaps=(
+                (line, f"{why} ({found.reason})"), *rest))))
+        elif isinstance(found, Unanalysable):
             trees.models.append((path, replace(found, line=found.line or need.line)))
         else:
             trees.models.append((path, replace(found, path=path, line=need.line,

@@ -100,8 +100,8 @@ def scan_repository(named: Sequence[Path], exclude: Sequence[str] = (),
         elif path not in skipped and any(m in data for m in SCAN_WHEN):
             _scan_file(candidate, data, scan, unparsable_only=True)
     items: list[tuple[Candidate, bytes]] = []
-    roots = sorted({repository_root(p).resolve() for p in named
-                    if p.exists() and not p.is_dir()})
+    roots = sorted({root.resolve() for p in named if p.exists() and not p.is_dir()
+                    for root in [repository_root(p)] if root is not None})
     roots = [r for r in roots if not any(o != r and o in r.parents for o in roots)]
     if roots:
         known = {os.path.realpath(c.path) for c, _ in read}
@@ -198,8 +198,8 @@ def recover_classes(data: bytes) -> Recovered:
             elif current is not None and kind == tokenize.NAME:
                 if string == "createDescription":
                     current.creates = True
-                elif previous == ["setDescription", "("] and current.described is None:
-                    current.described = string
+                elif current.described is None:
+                    _described_by(current, previous, string)
             if kind not in _LAYOUT:
                 top = string == "class" and column == 0
                 previous = [previous[-1], TOP_CLASS if top else string]
@@ -207,6 +207,24 @@ def recover_classes(data: bytes) -> Recovered:
         if not classes:
             return None
     return [(c.name, c.line, c.described) for c in classes if c.described or c.creates]
+
+
+_KEYWORDS = ("description", "label")
+"""The names of ``setDescription``'s parameters, which a call may pass by keyword."""
+
+
+def _described_by(current: _Recovered, previous: list[str], string: str) -> None:
+    """Note the type a class's ``setDescription`` call passes, from the name token
+    ``string`` after the two ``previous`` tokens, whether it is passed by position
+    (``setDescription(Pick(), ...)``) or by keyword (``setDescription(label="p",
+    description=Pick())``), as the ``ast`` reading of ``compound.static`` takes both."""
+    if previous == ["setDescription", "("]:
+        if string in _KEYWORDS:
+            current.keyword = True
+        else:
+            current.described = string
+    elif current.keyword and previous == ["description", "="]:
+        current.described = string
 
 
 _OPENING = frozenset("([{")
@@ -281,3 +299,5 @@ class _Recovered:
     line: int
     creates: bool = False
     described: str | None = None
+    keyword: bool = False
+    """Its ``setDescription`` call passes its arguments by keyword."""

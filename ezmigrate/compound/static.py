@@ -33,6 +33,7 @@ from ezskiros_runtime.compound.trace import (
 )
 
 from ..codemod.core.ast_names import ast_dotted_name
+from ..lint.ezskiros_static import shape_of
 
 
 class _Computed(Exception):
@@ -52,6 +53,10 @@ class NeedsTrace:
     reason: str
     description: str | None = None
     label: str = ""
+    partial: CompoundModel | None = None
+    """What the syntax gives of the tree all the same: the nodes of every statement but
+    the ones it cannot read (``CompoundModel.gaps``); ``check`` checks them when it runs
+    no code, and when tracing cannot read the tree either."""
 
 
 def compound_classes(tree: ast.Module) -> list[ast.ClassDef]:
@@ -68,12 +73,14 @@ def read_compounds(tree: ast.Module, path: str) -> list[CompoundModel | NeedsTra
                   and m.name == "expand"][-1]
         description, label = _described(cls)
         try:
-            processor, children = _Reader(expand).read()
+            processor, children, gaps = _Reader(expand).read()
         except _Computed as computed:
             found.append(NeedsTrace(cls.name, cls.lineno, str(computed), description, label))
             continue
-        found.append(CompoundModel(cls.name, description, label, processor, children, path,
-                                   cls.lineno, expand.lineno, "static"))
+        model = CompoundModel(cls.name, description, label, processor, children, path,
+                              cls.lineno, expand.lineno, "static", gaps)
+        found.append(model if not gaps else NeedsTrace(
+            cls.name, cls.lineno, gaps[0][1], description, label, model))
     return found
 
 
@@ -174,12 +181,21 @@ def _described(cls: ast.ClassDef) -> tuple[str | None, str]:
 
 
 def _set_description(node: ast.expr, name: str) -> tuple[str | None, str] | None:
+    """``(description, label)`` of a ``setDescription`` call, None for any other node.
+
+    Its arguments are read as Python binds them to ``setDescription(description,
+    label="")``: by position or by keyword (``description=Problem1(), label="x"``), so
+    that a class written either way implements the same description. A label that is not
+    a literal string (``self.__class__.__name__``) is the class's name."""
     if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
-            and node.func.attr == "setDescription" and node.args):
+            and node.func.attr == "setDescription"):
         return None
-    first = node.args[0]
+    keywords = {k.arg: k.value for k in node.keywords if k.arg is not None}
+    first = node.args[0] if node.args else keywords.get("description")
+    if first is None:
+        return None
+    label = node.args[1] if len(node.args) > 1 else keywords.get("label")
     kind = ast_dotted_name(first.func if isinstance(first, ast.Call) else first)
-    label = node.args[1] if len(node.args) > 1 else None
     described = kind and kind.rpartition(".")[2]
     if isinstance(label, ast.Constant) and isinstance(label.value, str):
         return described, label.value
@@ -196,31 +212,43 @@ class _Reader:
         self.self_name, self.root = args[0].arg, args[1].arg
         self.body = expand.body
 
-    def read(self) -> tuple[str, tuple[Node | CallProblem, ...]]:
+    def read(self) -> tuple[str, tuple[Node | CallProblem, ...], tuple[tuple[int, str], ...]]:
+        """The tree's processor and children, and the statements it could not read (line,
+        why): each statement is read on its own, so one that computes its part of the
+        tree (a loop, a branch, a world-model query) leaves the others' nodes read."""
         processor = "Sequential"
         children: list[Node | CallProblem] = []
+        gaps: list[tuple[int, str]] = []
         for index, stmt in enumerate(self.body):
             if index == 0 and isinstance(stmt, ast.Expr) \
                     and isinstance(stmt.value, ast.Constant):
                 continue  # docstring
             if isinstance(stmt, ast.Pass):
                 continue
-            call = stmt.value if isinstance(stmt, ast.Expr) else None
-            if not isinstance(call, ast.Call) or call.keywords:
-                raise _Computed(f"line {stmt.lineno} is not a literal tree statement")
-            func = call.func
-            if isinstance(func, ast.Attribute) and func.attr == "setProcessor" \
-                    and self._is_root(func.value) and len(call.args) == 1:
-                processor = self._processor(call.args[0])
-            elif isinstance(func, ast.Attribute) and func.attr == "setProcessor" \
-                    and self._is_self(func.value) and len(call.args) == 1:
-                self._processor(call.args[0])  # the instance's, not the tree's: SkiROS2
-                # copied it to the node before ``expand`` (``SkillWrapper.setInstance``)
-            elif self._is_root(func):
-                children += [self._node(a) for a in call.args]
-            else:
-                raise _Computed(f"line {stmt.lineno} is not a literal tree statement")
-        return processor, tuple(children)
+            try:
+                processor, children = self._statement(stmt, processor, children)
+            except _Computed as computed:
+                gaps.append((stmt.lineno, str(computed)))
+        return processor, tuple(children), tuple(gaps)
+
+    def _statement(self, stmt: ast.stmt, processor: str, children: list[Node | CallProblem]
+                   ) -> tuple[str, list[Node | CallProblem]]:
+        """The processor and children after one statement (``_Computed``: not literal)."""
+        call = stmt.value if isinstance(stmt, ast.Expr) else None
+        if not isinstance(call, ast.Call) or call.keywords:
+            raise _Computed(f"line {stmt.lineno} is {shape_of(stmt)}")
+        func = call.func
+        if isinstance(func, ast.Attribute) and func.attr == "setProcessor" \
+                and self._is_root(func.value) and len(call.args) == 1:
+            return self._processor(call.args[0]), children
+        if isinstance(func, ast.Attribute) and func.attr == "setProcessor" \
+                and self._is_self(func.value) and len(call.args) == 1:
+            self._processor(call.args[0])  # the instance's, not the tree's: SkiROS2
+            # copied it to the node before ``expand`` (``SkillWrapper.setInstance``)
+            return processor, children
+        if self._is_root(func):
+            return processor, [*children, *(self._node(a) for a in call.args)]
+        raise _Computed(f"line {stmt.lineno} is not a literal tree statement")
 
     def _is_root(self, node: ast.expr) -> bool:
         return isinstance(node, ast.Name) and node.id == self.root

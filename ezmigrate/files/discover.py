@@ -118,13 +118,14 @@ def _inside(real: str, roots: Iterable[str]) -> bool:
     return any(real == r or real.startswith(os.path.join(r, "")) for r in roots)
 
 
-def repository_root(path: Path) -> Path:
-    """The scope of a named path: a directory itself; for a file, its git top level, else
-    its ROS package (``enclosing_project``, as ontology discovery finds it), else its
-    folder."""
+def repository_root(path: Path) -> Path | None:
+    """The scope of a named path: a directory itself; for a file, its project (its git
+    top level, else its nearest ``package.xml`` or ``pyproject.toml``: ``enclosing_project``,
+    as ontology discovery finds it), else None: a file alone is checked alone, and the
+    folder around it may be anyone's (a home folder, a shared checkout of several labs)."""
     if path.is_dir():
         return path
-    return enclosing_project(path) or path.resolve().parent
+    return enclosing_project(path)
 
 
 def discover(paths: Sequence[Path], exclude: Sequence[str] = (),

@@ -46,8 +46,8 @@ def typing_scenes(paths: Sequence[Path], scenes: Sequence[Path],
     """The scenes whose types count as known: the run's, and those of the repository
     around each named file, so that pre-commit (staged files only) judges a class as a
     run on the repository does."""
-    roots = sorted({repository_root(p).resolve() for p in paths
-                    if p.is_file() and p.suffix == ".py"})
+    roots = sorted({root.resolve() for p in paths if p.is_file() and p.suffix == ".py"
+                    for root in [repository_root(p)] if root is not None})
     return [*scenes, *scene_files(roots, exclude)] if roots else list(scenes)
 
 

@@ -62,6 +62,9 @@ class CheckOutcome:
     notes: list[str] = field(default_factory=list)
     """What discovery passed over and why (vendored SkiROS2 code, symlink loops), for
     stderr."""
+    read: list[str] = field(default_factory=list)
+    """Files the loads of ``--trace`` opened besides the run's own (``LoadOutcome.read``):
+    a kept run depends on their bytes too."""
 
 
 def _text(data: bytes) -> str:
@@ -320,14 +323,16 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               world: WorldRun | None = None,
               include_vendored: bool = False,
               cache_dir: Path | None = None, launch: Launch | None = None,
-              trace: bool = True, discovered: Discovery | None = None,
+              trace: bool = False, discovered: Discovery | None = None,
               tracing: Standby | None = None) -> CheckOutcome:
     """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
     the compound skills' trees against every description found (unless ``compounds`` is
     False: no EZ3 code is selected, so their reading and tracing would be thrown away),
     then the world model (EZ4xx: ``world``, or the defaults and the scenes under ``paths``;
     scenes named in ``paths`` are scenes, not Python files). ``trace`` False
-    (``--no-trace``): no user code is imported, neither EzSkiROS files nor compound skills.
+    (the default): no user code is imported, EzSkiROS files are read from their syntax
+    (``lint/ezskiros_static``) and compound skills are not traced; True (``--trace``) loads
+    and traces them in the sandbox.
     ``discovered``: the files of ``paths``, already being discovered (``checked_files``);
     ``tracing``: the tracing worker, already starting (``tracing_ahead``)."""
     world = world or WorldRun(scenes=tuple(scene_files(paths, exclude)))
@@ -396,7 +401,8 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
                 index.prefixes if index is not None else ())
             if kept is not None:
                 OutcomeCache(kept[0][0]).put(kept[0][1], outcome.files, outcome.skills,
-                                             outcome.notes, outcome.diagnostics)
+                                             outcome.notes, outcome.diagnostics,
+                                             outcome.read)
             if facts is not None:
                 facts.save()
             return outcome
@@ -451,7 +457,7 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
          pool: PoolConfig, progress: Callable[[str], None] | None,
          skill_libraries: tuple[Path, ...], trees: Trees | None,
          standby: list[Standby], world: WorldRun,
-         cache_dir: Path | None = None, trace: bool = True,
+         cache_dir: Path | None = None, trace: bool = False,
          facts_cache: FactsCache | None = None,
          reader: ReadingPool | None = None,
          start_tracing: Callable[[], None] | None = None,
@@ -514,22 +520,21 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
                                                Positions(outcome.sources[path]), index)
             if RUNTIME_MARKER in data:
                 loadable.append(candidate)
-    if loadable and not trace:
-        outcome.notes.append(f"{len(loadable)} EzSkiROS file(s) not loaded (--no-trace): "
-                             "their descriptions are checked when they are imported, which "
-                             "--no-trace forbids")
-        loadable = []
-    if loadable and progress is not None:
-        progress(f"loading {len(loadable)} EzSkiROS files")
-    cache = None if cache_dir is None else LoadCache.for_run(
-        cache_dir, [(str(c.path), data) for c, data in read],
-        index.fingerprint if index is not None else "", pool.python)
     data_of = {c.path: data for c, data in read}
-    outcomes = cached_loads([job_for(c.path, None, c.root) for c in loadable],
-                            [data_of[c.path] for c in loadable],
-                            lambda jobs: run_batched(jobs, pool, BATCH,
-                                                     alone=lambda found: not found.loaded),
-                            cache)
+    if not trace:
+        outcomes = [_read_ezskiros(c.path, data_of[c.path], index) for c in loadable]
+    else:
+        if loadable and progress is not None:
+            progress(f"loading {len(loadable)} EzSkiROS files")
+        cache = None if cache_dir is None else LoadCache.for_run(
+            cache_dir, [(str(c.path), data) for c, data in read],
+            index.fingerprint if index is not None else "", pool.python)
+        outcomes = cached_loads([job_for(c.path, None, c.root) for c in loadable],
+                                [data_of[c.path] for c in loadable],
+                                lambda jobs: run_batched(jobs, pool, BATCH,
+                                                         alone=lambda found: not found.loaded),
+                                cache)
+    outcome.read = sorted({path for loaded in outcomes for path in loaded.read})
     compound = _Compound()
     if trees is not None:
         compound = _compound(read, results, list(zip(loadable, outcomes, strict=True)),
@@ -550,6 +555,11 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
                     loaded.status)))
             continue
         outcome.skills += len(loaded.models)
+        outcome.diagnostics += [
+            diagnostic(path, where, "not-read-statically", line,
+                       f"description not read without running the module: {shape}; it is "
+                       "not checked (check --trace loads it in the sandbox)", name)
+            for name, line, shape in loaded.unread if shape]
         for error in loaded.errors:
             if (path, error.name) not in kept:
                 outcome.diagnostics.append(_class_error(path, where, error))
@@ -585,6 +595,28 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     if facts_cache is not None:
         keep_scenes(facts_cache, world.scenes)
     return outcome
+
+
+def _read_ezskiros(path: Path, data: bytes, index: OntologyIndex | None) -> LoadOutcome:
+    """What loading an EzSkiROS file would give, read from its syntax
+    (``lint/ezskiros_static``): ``check`` runs no code of the repository unless told
+    (``--trace``)."""
+    from ezskiros_runtime.ontology import use_ontology
+
+    from ..lint.ezskiros_static import read_ezskiros_statically
+    from ..lint.newer_fstrings import older_spelling
+    from ..verify.protocol import LoadOutcome
+    from .file_facts import parse
+
+    if index is not None:
+        use_ontology(index)
+    tree = parse(data)
+    if tree is None:  # Python 3.12's f-strings, respelt for this Python's ast
+        older = older_spelling(data)
+        tree = parse(older) if older is not None else None
+    if tree is None:  # the static pass has reported why (EZ905)
+        return LoadOutcome("ok")
+    return read_ezskiros_statically(tree, str(path)).outcome()
 
 
 def _traces_now(early: EarlyTraces, start_tracing: Callable[[], None],

@@ -10,80 +10,36 @@ that join files together (the cross-file bases, the compound trees against the s
 index, the world model) run again on what is kept, which is cheap; the parses and the
 readings are what a run saves.
 
-The entries are Python objects, kept in one pickle (``facts.pickle``, read once, written
-whole with the entries the run used, so it never grows with old ones). A pickle runs code
-when it is read, and ``.ezmigrate_cache`` sits in the checkout, where anybody who can push
-a file could put one: the file is signed with a key that never leaves this user's cache
-folder (``~/.cache/ezmigrate/key``, made on first use; ``EZMIGRATE_KEY_DIR`` names another
-folder), and a file whose signature does not
-match is not unpickled, only ignored. No key (a read-only home): no cache, same results.
+The entries are kept in one JSON file (``facts.json``, read once, written whole with the
+entries the run used, so it never grows with old ones), in this user's cache folder and
+signed (``cache_folder``); the objects are rebuilt by ``facts_codec``, which makes only this
+project's own classes and runs no code named by the data. A pack that is missing, foreign,
+forged or damaged is a miss: the files are read again.
 """
 
 from __future__ import annotations
 
 import hashlib
-import hmac
-import os
-import pickle
-import secrets
+import json
 import sys
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
-from .cache_folder import write_entry
+from .cache_folder import Store
+from .facts_codec import CodecError, decode, encode
 from .outcome_cache import code_digest
 
-PACK = "facts.pickle"
-"""The file in ``.ezmigrate_cache`` the entries are kept in."""
-
-
-KEY_DIR = "EZMIGRATE_KEY_DIR"
-"""The variable naming the folder of the signing key instead of this user's cache folder
-(the tests keep theirs in a temporary folder)."""
-
-
-def _key_folder() -> Path:
-    """``$EZMIGRATE_KEY_DIR``, else ``$XDG_CACHE_HOME/ezmigrate``, else
-    ``~/.cache/ezmigrate``."""
-    named = os.environ.get(KEY_DIR)
-    if named:
-        return Path(named)
-    return Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "ezmigrate"
-
-
-def _user_key() -> bytes | None:
-    """This user's signing key, made on first use; None when it can be neither read nor
-    made."""
-    home = _key_folder()
-    path = home / "key"
-    try:
-        return bytes.fromhex(path.read_text(encoding="ascii").strip())
-    except (OSError, ValueError):
-        pass
-    try:
-        home.mkdir(parents=True, exist_ok=True)
-        key = secrets.token_hex(32)
-        handle = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
-        with os.fdopen(handle, "w", encoding="ascii") as stream:
-            stream.write(key)
-        return bytes.fromhex(key)
-    except FileExistsError:  # another run made it meanwhile
-        try:
-            return bytes.fromhex(path.read_text(encoding="ascii").strip())
-        except (OSError, ValueError):
-            return None
-    except OSError:
-        return None
+PACK = "facts.json"
+"""The entry of a project's cache folder the readings are kept in."""
 
 
 class FactsCache:
-    """The entries of one ``.ezmigrate_cache`` folder: ``get`` and ``put`` by key during a
+    """The readings of one project's cache folder: ``get`` and ``put`` by key during a
     run, ``save`` once at its end."""
 
-    def __init__(self, folder: Path, key: bytes) -> None:
-        self.folder = folder
-        self._key = key
+    def __init__(self, store: Store) -> None:
+        self._store = store
         self._old: dict[str, Any] = self._load()
         self._used: dict[str, Any] = {}
         self._added = False
@@ -91,8 +47,8 @@ class FactsCache:
     @classmethod
     def open(cls, folder: Path) -> FactsCache | None:
         """The cache of ``folder``, or None without a signing key."""
-        key = _user_key()
-        return None if key is None else cls(folder, key)
+        store = Store.open(folder)
+        return None if store is None else cls(store)
 
     @staticmethod
     def key(*parts: bytes | str) -> str:
@@ -116,32 +72,28 @@ class FactsCache:
         self._added = True
 
     def save(self) -> None:
-        """Write the entries this run used (unchanged ones included), signed; a cache
-        that cannot be written keeps nothing."""
+        """Write the entries this run used (unchanged ones included); an entry that holds
+        something not of ours (``CodecError``) is not kept."""
         if not self._added and self._used.keys() == self._old.keys():
             return  # nothing new: the file on disk says it already
-        try:
-            data = pickle.dumps(self._used, protocol=pickle.HIGHEST_PROTOCOL)
-        except (pickle.PicklingError, TypeError, AttributeError, RecursionError):
-            return
-        write_entry(self.folder, ".", PACK, self._sign(data) + data)
-
-    def _sign(self, data: bytes) -> bytes:
-        return hmac.new(self._key, data, hashlib.sha256).digest()
+        kept = {}
+        for key, value in self._used.items():
+            try:
+                kept[key] = encode(value)
+            except (CodecError, RecursionError):
+                continue
+        self._store.write(PACK, json.dumps(kept).encode("utf-8"))
 
     def _load(self) -> dict[str, Any]:
-        try:
-            raw = (self.folder / PACK).read_bytes()
-        except OSError:
+        payload = self._store.read(PACK)
+        if payload is None:
             return {}
-        signature, data = raw[:32], raw[32:]
-        if len(raw) < 32 or not hmac.compare_digest(signature, self._sign(data)):
-            return {}  # not made by this user's runs: never unpickled
         try:
-            found = pickle.loads(data)  # signed by this user's key: checked above
-        except Exception:  # a damaged or outdated entry is a miss, whatever it raises
-            return {}
-        return found if isinstance(found, dict) else {}
+            data = json.loads(payload)
+            return {str(k): decode(v) for k, v in data.items()} \
+                if isinstance(data, dict) else {}
+        except (ValueError, TypeError, RecursionError, AttributeError):
+            return {}  # CodecError is a ValueError
 
 
 def seed_scenes(cache: FactsCache, paths: Iterable[Path]) -> set[Path]:

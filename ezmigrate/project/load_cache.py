@@ -21,11 +21,11 @@ import sys
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 
-from .. import __version__
 from ..verify.protocol import LoadJob, LoadOutcome
-from .cache_folder import write_entry
+from .cache_folder import Store, digests_of, unchanged
 from .cross_file import module_name
 from .import_scan import import_words
+from .outcome_cache import code_digest
 
 CACHED = frozenset({"ok", "import-error", "syntax", "exit"})
 """Statuses that depend on the file alone: cached. Timeouts, crashes and memory are not."""
@@ -39,6 +39,7 @@ class LoadCache:
         self.folder = folder
         self.salt = salt
         self.hits = 0
+        self._store = Store.open(folder)
         self._imports = _Imports(sources)
 
     @classmethod
@@ -46,7 +47,7 @@ class LoadCache:
                 python: str | None) -> LoadCache:
         """A cache whose keys change with the ontology, the interpreter (``python``: None
         is this one) and, for each file, with the Python files of the run it may import."""
-        salt = "\0".join([__version__, sys.version, python or sys.executable, ontology])
+        salt = "\0".join([code_digest(), sys.version, python or sys.executable, ontology])
         return cls(folder, salt, sources)
 
     def key(self, job: LoadJob, data: bytes) -> str:
@@ -57,18 +58,28 @@ class LoadCache:
         return digest.hexdigest()
 
     def get(self, key: str) -> LoadOutcome | None:
+        payload = self._store.read(f"loads/{key[:2]}/{key}.json") if self._store else None
+        if payload is None:
+            return None
         try:
-            data = json.loads((self.folder / key[:2] / f"{key}.json").read_text("utf-8"))
-            outcome = LoadOutcome.from_json(data)
-        except (OSError, ValueError, TypeError, KeyError):
+            data = json.loads(payload)
+            outcome = LoadOutcome.from_json(data["outcome"])
+            read = data["read"]
+        except (ValueError, TypeError, KeyError):
+            return None
+        if not unchanged(read):
             return None
         self.hits += 1
         return outcome
 
     def put(self, key: str, outcome: LoadOutcome) -> None:
-        if outcome.status not in CACHED:
+        if outcome.status not in CACHED or self._store is None:
             return
-        write_entry(self.folder, key[:2], f"{key}.json", json.dumps(outcome.to_json()))
+        read = digests_of(outcome.read)
+        if read is None:
+            return
+        self._store.write(f"loads/{key[:2]}/{key}.json", json.dumps(
+            {"outcome": outcome.to_json(), "read": read}).encode("utf-8"))
 
 
 class _Imports:

@@ -22,7 +22,6 @@ import dataclasses
 import functools
 import hashlib
 import json
-import os
 import sys
 from collections.abc import Iterable
 from pathlib import Path
@@ -30,10 +29,10 @@ from typing import Any
 
 from .. import __version__
 from ..lint.diagnostic import Diagnostic
-from .cache_folder import write_entry
+from .cache_folder import Store, digests_of, unchanged
 
 OUTCOMES = "outcomes"
-"""The sub-folder of ``.ezmigrate_cache`` the runs are kept in."""
+"""The sub-folder of a project's cache folder (``cache_folder``) the runs are kept in."""
 
 
 @functools.lru_cache(maxsize=1)
@@ -69,31 +68,40 @@ def read_all(paths: Iterable[Path]) -> list[tuple[str, bytes]] | None:
 
 
 class OutcomeCache:
-    """Whole runs of ``check`` by key, in ``folder/outcomes``."""
+    """Whole runs of ``check`` by key, in ``folder/outcomes`` (signed: ``cache_folder``)."""
 
     def __init__(self, folder: Path) -> None:
         self.folder = folder
+        self._store = Store.open(folder)
 
     def get(self, key: str) -> dict[str, Any] | None:
         """The stored run (``diagnostics`` as ``Diagnostic`` objects), or None."""
+        payload = self._store.read(f"{OUTCOMES}/{key}.json") if self._store else None
+        if payload is None:
+            return None
         try:
-            data = json.loads((self.folder / OUTCOMES / f"{key}.json").read_text("utf-8"))
+            data = json.loads(payload)
             data["diagnostics"] = [Diagnostic(**d) for d in data["diagnostics"]]
-        except (OSError, ValueError, TypeError, KeyError):
+            if not isinstance(data["files"], int) or not isinstance(data["skills"], int):
+                return None
+            if not unchanged(data.get("read", {})):
+                return None  # a file a load of ``--trace`` read has changed
+        except (ValueError, TypeError, KeyError, AttributeError):
             return None
         return dict(data)
 
     def keeps_any(self) -> bool:
         """Whether any run is kept here (a run's outcome may then be one of them)."""
-        try:
-            with os.scandir(self.folder / OUTCOMES) as entries:
-                return any(entry.name.endswith(".json") for entry in entries)
-        except OSError:
-            return False
+        return self._store is not None and self._store.has_any(OUTCOMES)
 
     def put(self, key: str, files: int, skills: int, notes: list[str],
-            diagnostics: list[Diagnostic]) -> None:
-        """Keep a run (written whole; a read-only checkout keeps nothing)."""
-        payload = {"files": files, "skills": skills, "notes": notes,
+            diagnostics: list[Diagnostic], read: Iterable[str] = ()) -> None:
+        """Keep a run (written whole; a read-only cache folder keeps nothing); ``read``:
+        the files its loads opened, whose bytes it depends on too."""
+        digests = digests_of(read)
+        if self._store is None or digests is None:
+            return
+        payload = {"files": files, "skills": skills, "notes": notes, "read": digests,
                    "diagnostics": [dataclasses.asdict(d) for d in diagnostics]}
-        write_entry(self.folder, OUTCOMES, f"{key}.json", json.dumps(payload))
+        self._store.write(f"{OUTCOMES}/{key}.json", json.dumps(payload).encode("utf-8"))
+        self._store.prune()

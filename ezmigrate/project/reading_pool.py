@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import functools
 import multiprocessing
+import os
 from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
@@ -33,6 +34,7 @@ from typing import TYPE_CHECKING
 from ..lint.plain_reader import Declined
 from ..report.results import FileResult
 from .file_facts import FileFacts, file_facts
+from .lifetime import exit_with_parent
 from .runner import own_reading
 
 if TYPE_CHECKING:
@@ -75,9 +77,11 @@ _CAUGHT_UP: list[tuple[str, FileResult]] = []  # their readings, once it read th
 _READS = False  # this worker reads declined files itself now
 
 
-def _init_worker(settings: Settings | None) -> None:
-    """A worker's start: the codemod's settings, inherited (the index is never pickled)."""
+def _init_worker(settings: Settings | None, parent: int | None = None) -> None:
+    """A worker's start: the codemod's settings, inherited (the index is never pickled),
+    and its end with the run's (``lifetime.exit_with_parent``)."""
     global _SETTINGS
+    exit_with_parent(parent)
     _SETTINGS = settings
 
 
@@ -173,7 +177,7 @@ class ReadingPool:
             self._pool = ProcessPoolExecutor(max_workers=max(1, self.workers - 1),
                                              mp_context=multiprocessing.get_context("fork"),
                                              initializer=_init_worker,
-                                             initargs=(self.settings,))
+                                             initargs=(self.settings, os.getpid()))
         return self._pool
 
     def parse_scenes(self, paths: Sequence[Path]) -> None:

@@ -32,6 +32,7 @@ from ..report.results import FileResult
 from . import holdpoint
 from .frozen_heap import frozen_heap
 from .import_scan import import_words
+from .lifetime import exit_with_parent
 from .progress import Progress
 
 if TYPE_CHECKING:
@@ -106,8 +107,12 @@ class Migrated:
         return f"Migrated({self.candidate.relative!r}, changed={self.result.changed})"
 
 
-def _init_worker(settings: Settings, extras: Extras = NO_EXTRAS) -> None:
+def _init_worker(settings: Settings, extras: Extras = NO_EXTRAS,
+                 parent: int | None = None) -> None:
+    """A worker's start: its settings, and its end with the run's (``lifetime.exit_with_parent``:
+    a SIGKILL of ``rewrite`` leaves no worker behind)."""
     global _SETTINGS, _EXTRAS
+    exit_with_parent(parent)
     _SETTINGS = settings
     _EXTRAS = extras
 
@@ -225,7 +230,7 @@ class _Workers:
             "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
         return ProcessPoolExecutor(max_workers=self.jobs, mp_context=context,
                                    initializer=_init_worker,
-                                   initargs=(self.settings, self.extras))
+                                   initargs=(self.settings, self.extras, os.getpid()))
 
     def _submit(self, item: Migrated, data: bytes, ambiguous: bool) -> None:
         assert self.pool is not None

@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..files.discover import Candidate, discover
-from ..files.package_xml import packages_of, with_runtime_depend
+from ..files.package_xml import ManifestRefused, packages_of, with_runtime_depend
 from ..files.writing import WriteRefused, atomic_write, digest, remove_stale_temporary
 from ..report.reports import Summary
 from ..verify.verdicts import Comparison
@@ -154,8 +154,9 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
 
 def _manifests(outcome: RewriteOutcome, options: RewriteOptions) -> list[Manifest]:
     """The package.xml of each ROS package whose files were written (or, without writing,
-    would be) that does not declare the runtime yet, with the line added. Not for
-    ``--output-dir``, whose copies belong to no package."""
+    would be) that does not declare the runtime yet, with the line added; one with no safe
+    place for the line is named in ``outcome.refused``. Not for ``--output-dir``, whose
+    copies belong to no package."""
     if not options.package_xml or options.output_dir is not None:
         return []
     written = set(outcome.written)
@@ -164,7 +165,12 @@ def _manifests(outcome: RewriteOutcome, options: RewriteOptions) -> list[Manifes
     found = []
     for path in packages_of(files):
         old = path.read_bytes()
-        new = with_runtime_depend(old)
+        try:
+            new = with_runtime_depend(old)
+        except ManifestRefused as error:  # said, and the file is left as it was
+            outcome.refused.append(f"{path}: the runtime's dependency not added, {error}; "
+                                   "left as it was")
+            continue
         if new is not None:
             found.append(Manifest(path, old, new))
     return found

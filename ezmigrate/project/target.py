@@ -86,8 +86,8 @@ def verified_with(python: str | None, target: Target) -> str:
     """One line for the summary and the report header: which Python verified (and which
     rdflib read the ontology), and, when it is not the robot's, which one the robot runs."""
     found = version_of(python)
-    shown = Path(python or sys.executable).name  # a report holds no path of this machine
-    line = f"verified under Python {found} ({shown}), ontology read with rdflib {rdflib_version()}"
+    used = python or sys.executable  # absolute: a report scrubs it as it scrubs every path
+    line = f"verified under Python {found} ({used}), ontology read with rdflib {rdflib_version()}"
     major_minor = tuple(int(part) for part in found.split(".")[:2] if part.isdigit())
     if target.flavour is None or major_minor == target.version:
         return line

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import json
+import os
 import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 from .results import FileResult, SkillResult
@@ -73,14 +73,14 @@ def newer_python_lines(results: Sequence[FileResult], run_python: str | None,
     oldest Python that can (``pool._retry_newer_syntax``); ``run_version`` names the run's
     Python (``3.11.7``). For the summary and the report:
     what was proven there is what that Python loads, not the robot's."""
-    run_name = Path(run_python or sys.executable).name
+    run_path = os.path.abspath(run_python or sys.executable)
     by_python: dict[str, list[str]] = {}
     for file in results:
         for note in file.notes:
             if note.startswith(VERIFIED_UNDER):
-                name = note[len(VERIFIED_UNDER):].split(" ", 1)[0]
-                if name != run_name:
-                    by_python.setdefault(name, []).append(file.path)
+                used = note[len(VERIFIED_UNDER):]  # its absolute path (``describe``)
+                if used != run_path:
+                    by_python.setdefault(used, []).append(file.path)
     return [f"{counted(len(files), 'file')} need{'s' if len(files) == 1 else ''} a newer "
             f"Python than {run_version}: verified under {name}, the oldest found that "
             f"reads {'it' if len(files) == 1 else 'them'} ({', '.join(files)})"

@@ -74,8 +74,47 @@ def load(job: LoadJob) -> LoadOutcome:
     return outcome
 
 
+_OPENED: list[list[str]] = []
+"""Where the audit hook (``_watch_opens``) notes the files the current load opens."""
+
+
+def _watch_opens() -> None:
+    """Note every file a load opens (Python's ``open`` audit event: imports through
+    ``importlib`` and data files alike), but the interpreter's and libraries' own: what a
+    kept load depends on besides the file (``load_cache``). Installed once per process."""
+    if _OPENED:
+        return
+    _OPENED.append([])
+    skipped = tuple(os.path.join(os.path.realpath(p), "") for p in
+                    {sys.prefix, sys.base_prefix, sys.exec_prefix}
+                    | {str(Path(__file__).resolve().parents[2])})
+
+    def hook(event: str, args: tuple) -> None:  # type: ignore[type-arg,unused-ignore]
+        if event == "open" and _OPENED and isinstance(args[0], (str, bytes, os.PathLike)) \
+                and (len(args) < 2 or args[1] is None or "r" in str(args[1])):
+            path = os.path.realpath(os.fsdecode(args[0]))
+            if not path.startswith(skipped) and os.path.isfile(path):
+                _OPENED[-1].append(path)
+
+    sys.addaudithook(hook)
+
+
+def reads(since: int) -> list[str]:
+    """The files opened since ``since`` (an index into the current list), in order."""
+    return list(dict.fromkeys(_OPENED[-1][since:])) if _OPENED else []
+
+
 def _load_one(job: LoadJob) -> LoadOutcome:
-    """``load`` for one file."""
+    """``load`` for one file, with the files it opened noted in the outcome (``read``)."""
+    _watch_opens()
+    start = len(_OPENED[-1])
+    outcome = _loaded(job)
+    outcome.read = [p for p in reads(start) if p != os.path.realpath(job.path)]
+    return outcome
+
+
+def _loaded(job: LoadJob) -> LoadOutcome:
+    """What loading the job's file gives."""
     from ezskiros_runtime.diagnostics import Finding
     from ezskiros_runtime.dsl.policy import collecting
     from ezskiros_runtime.legacy.errors import ModuleLoadError

@@ -3,13 +3,21 @@
 About 1% of real skill classes live in files with syntax newer than the Python running
 ezmigrate (3.12 f-strings such as ``f"{d["key"]}"``). libcst migrates them, but verifying
 needs an interpreter that can import them. ``--python PATH`` (or ``[tool.ezmigrate]
-python``) names one; otherwise, for the files that need it, the newest ``python3.X`` on
-``PATH`` newer than this one that compiles them is chosen, and the report says which.
+python``) names one; otherwise, for the files that need it, the oldest ``python3.X`` newer
+than this one that compiles them is chosen (on ``PATH``, else in pyenv's versions folder),
+and the summary and the report give its absolute path.
+
+Every interpreter is resolved to an absolute path before it runs, and the search never
+looks where the repository under check could have put one: a relative ``PATH`` entry (an
+empty one, ``.``, any other that is not absolute) names a folder of the working directory,
+which is usually the repository, and ``never_search`` keeps the paths the command was given,
+and their git top levels, out of the search too. A repository's own ``./python3.8`` is
+repository code, which ``rewrite --dry-run`` and ``check`` promise not to run.
 
 The other interpreter runs the verification worker from our own source folders (linked
 into a private folder put on its ``PYTHONPATH``), with ``-B`` so that it writes no bytecode
 beside them. It needs no third-party package: the ontology index comes from the cache the
-parent filled (a pickle of our own classes), and libcst is only asked for a second opinion
+parent filled (JSON, read by our own code), and libcst is only asked for a second opinion
 on syntax errors, which the worker skips when libcst is missing.
 """
 
@@ -18,13 +26,14 @@ from __future__ import annotations
 import atexit
 import functools
 import os
-import re
 import shutil
 import subprocess
 import sys
 import tempfile
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from pathlib import Path
+
+from ezskiros_runtime.ontology.vendored import git_top
 
 PACKAGES = ("ezskiros_runtime", "ezmigrate")
 _COMPILES = ("import sys\n"
@@ -32,11 +41,62 @@ _COMPILES = ("import sys\n"
              "    compile(open(path, 'rb').read(), path, 'exec', dont_inherit=True)\n")
 
 
+_UNSEARCHED: set[str] = set()
+"""The real paths of the folders no interpreter search of this process looks in
+(``never_search``)."""
+
+
+def never_search(paths: Iterable[Path]) -> None:
+    """Keep the repository the command works on out of every later interpreter search:
+    each of ``paths`` (a file's folder, for a file) and its git top level. Its own
+    ``bin/python3.8`` is its code, and a run must not start it to find out its version."""
+    for path in paths:
+        if str(path) == "-":  # stdin: the file it stands for is given as another path
+            continue
+        real = Path(os.path.realpath(path))
+        folder = real if real.is_dir() else real.parent
+        _UNSEARCHED.add(str(folder))
+        top = git_top(folder)
+        if top is not None:
+            _UNSEARCHED.add(os.path.realpath(top))
+
+
+def _searchable(folder: str) -> bool:
+    """Whether an interpreter may be looked for in ``folder``: an absolute path (a relative
+    one is read from the working directory, usually the repository) outside the folders
+    ``never_search`` was given."""
+    if not os.path.isabs(folder):
+        return False
+    real = os.path.realpath(folder)
+    return not any(real == root or real.startswith(root.rstrip(os.sep) + os.sep)
+                   for root in _UNSEARCHED)
+
+
+def on_path(name: str) -> str | None:
+    """The absolute path of the executable ``name`` in the first searchable ``PATH`` entry
+    that holds one (``_searchable``), or None."""
+    entries = [entry for entry in os.environ.get("PATH", "").split(os.pathsep)
+               if _searchable(entry)]
+    if not entries:
+        return None
+    return shutil.which(name, path=os.pathsep.join(entries))
+
+
+def resolve(python: str) -> str | None:
+    """``python`` (``--python``, ``[tool.ezmigrate] python``) as an absolute path to run:
+    a path (holding ``/``) made absolute, a bare name looked up by ``on_path``; None when
+    it names no executable file."""
+    if os.sep not in python and (os.altsep is None or os.altsep not in python):
+        return on_path(python)
+    path = os.path.abspath(python)
+    return path if os.path.isfile(path) and os.access(path, os.X_OK) else None
+
+
 def is_foreign(python: str | None) -> bool:
     """Whether ``python`` is another interpreter than the one running us."""
     if not python:
         return False
-    found = shutil.which(python) or python
+    found = resolve(python) or python
     return os.path.realpath(found) != os.path.realpath(sys.executable)
 
 
@@ -60,16 +120,19 @@ def worker_command(python: str, module: str) -> tuple[list[str], dict[str, str]]
 
 
 def find_python(version: str) -> str | None:
-    """``python3.X`` for ``version`` ("3.8"): on PATH first, else in pyenv's versions folder
-    (``$PYENV_ROOT``, default ``~/.pyenv``), newest patch release first; None when neither
-    has it. pyenv's shims are not used: they run whatever version the folder selects."""
+    """The absolute path of ``python3.X`` for ``version`` ("3.8"): on PATH first (its
+    absolute entries outside the checked repository, ``on_path``), else in pyenv's versions
+    folder (``$PYENV_ROOT``, default ``~/.pyenv``), newest patch release first; None when
+    neither has it. pyenv's shims are not used: they run whatever version the folder
+    selects."""
     name = f"python{version}"
-    found = shutil.which(name)
+    found = on_path(name)
     if found is not None and "shims" not in Path(found).parts:
         return found
     candidates = sorted(_pyenv_root().glob(f"versions/{version}.*/bin/{name}"),
                         key=lambda path: _patch(path.parts[-3]), reverse=True)
-    return next((str(path) for path in candidates if os.access(path, os.X_OK)), None)
+    return next((str(path) for path in candidates
+                 if _searchable(str(path.parent)) and os.access(path, os.X_OK)), None)
 
 
 def _pyenv_root() -> Path:
@@ -103,9 +166,9 @@ def rdflib_version() -> str:
 
 
 def describe(python: str) -> str:
-    """``python3.13 (/usr/bin/python3.13)`` for the report."""
-    name = Path(python).name
-    return f"{name} ({python})" if re.fullmatch(r"python3\.\d+", name) else python
+    """``/usr/bin/python3.13``, for the summary and the report: the absolute path of the
+    interpreter that ran, which a bare name (``python3.13``) would leave to guess."""
+    return os.path.abspath(python)
 
 
 def compiles(python: str, sources: Sequence[bytes]) -> bool:

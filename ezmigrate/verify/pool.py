@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import os
 import queue
 import signal
 import subprocess
@@ -28,6 +29,7 @@ from .interpreters import (
 )
 from .pool_config import PoolConfig
 from .protocol import QUIT, LoadJob, LoadOutcome
+from .sandbox import hidden_folders, private_home, say_if_not_held, worker_environment
 
 
 class _Stopped(Exception):
@@ -54,9 +56,10 @@ class _Crew:
         with self.lock:  # a worker is either recorded here or never started
             if self.stopping:
                 raise _Stopped
+            say_if_not_held()
             process = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                        stderr=subprocess.DEVNULL, text=True, bufsize=1,
-                                       env=env)
+                                       env=worker_environment(env or os.environ, private_home()))
             self.processes.append(process)
             return process
 
@@ -93,7 +96,8 @@ class _Worker:
             assert config.python is not None
             command, env = worker_command(config.python, ZYGOTE)
         args = [*command, "--timeout", str(config.timeout), "--memory-mb",
-                str(config.memory_mb)]
+                str(config.memory_mb),
+                *(f"--hide={folder}" for folder in hidden_folders(os.environ))]
         for path in () if ontology_later else config.ontology:
             args += ["--ontology", path]
         self.process = crew.spawn([*args, *(["--ontology-later"] if ontology_later else [])],

@@ -90,6 +90,13 @@ class LoadOutcome:
     """Traced compound skills (``LoadJob.trace``)."""
     more: list[LoadOutcome] = field(default_factory=list)
     """The outcomes of ``LoadJob.more``, in order; fewer when the child died on the way."""
+    read: list[str] = field(default_factory=list)
+    """Files of the repository the load opened (a module ``importlib`` loaded, a data file
+    read at import: ``child.reads``), whose bytes a kept load depends on."""
+    unread: list[tuple[str, int, str]] = field(default_factory=list)
+    """A file read from its syntax (``check`` without ``--trace``): the classes that are or
+    may be descriptions and were not read, each with the shape that stopped the reading
+    (empty for a class that merely derives from a class of another module)."""
 
     def to_json(self) -> dict[str, Any]:
         return {**{name: getattr(self, name) for name in self.__dataclass_fields__},

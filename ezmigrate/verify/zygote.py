@@ -33,6 +33,7 @@ from pathlib import Path
 
 from .child import run_child
 from .protocol import QUIT, LoadJob, LoadOutcome
+from .sandbox import contain
 
 
 class ParentGone(Exception):
@@ -122,12 +123,14 @@ _SCRATCH_BASE = _scratch_base()
 
 
 def run_job(job: LoadJob, timeout: float, memory_bytes: int | None,
-            watch: int | None = None) -> LoadOutcome:
+            watch: int | None = None, hidden: list[str] | None = None) -> LoadOutcome:
     """Fork a child for ``job``, wait for it, and read what it reported.
 
     The child and whatever it forked are killed when it times out, when it is done (a
     daemon its module started must not outlive the load), and when the worker stops (a
-    signal, ``ParentGone`` from ``watch``), so nothing of a job ever outlives it.
+    signal, ``ParentGone`` from ``watch``), so nothing of a job ever outlives it: the child
+    runs in namespaces of its own (``sandbox.contain``; ``hidden``: the folders it must not
+    see), so a process it started with ``setsid()`` dies with it too.
     """
     with tempfile.TemporaryDirectory(prefix="ezmigrate-", dir=_SCRATCH_BASE) as scratch:
         result = os.path.join(scratch, "result.json")
@@ -140,6 +143,7 @@ def run_job(job: LoadJob, timeout: float, memory_bytes: int | None,
         if pid == 0:  # the child never returns from here
             try:
                 _own_group()
+                contain(hidden or [])  # refused: the run said so when it began
             finally:
                 run_child(job, result, out, err, memory_bytes)
         with contextlib.suppress(OSError):  # here too: killpg must find it from now on
@@ -259,6 +263,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--ontology", action="append", default=[])
     parser.add_argument("--timeout", type=float, default=20.0)
     parser.add_argument("--memory-mb", type=int, default=2048)
+    parser.add_argument("--hide", action="append", default=[],
+                        help="a folder the loaded modules must not see (repeatable)")
     parser.add_argument("--ontology-later", action="store_true",
                         help="read the ontology files as the first line of stdin, "
                              "{\"ontology\": [...]}, once the imports are done")
@@ -299,7 +305,8 @@ def main(argv: list[str] | None = None) -> int:
             return 0
         job = LoadJob.from_json(json.loads(line))
         try:
-            outcome = run_job(job, args.timeout, memory, watch=sys.stdin.fileno())
+            outcome = run_job(job, args.timeout, memory, watch=sys.stdin.fileno(),
+                              hidden=args.hide)
         except ParentGone:
             return 0
         print(json.dumps(outcome.to_json()), file=protocol_out, flush=True)

@@ -67,7 +67,13 @@ def check_model(model: CompoundModel | Unanalysable, index: SkillIndex,
                                 f"the tree of {model.implementation} could not be read "
                                 f"statically nor traced ({model.reason}); it is not checked",
                                 model.implementation)]
-    return _Checker(model, index, ontology).run()
+    unread = [CompoundFinding("compound-unanalysable", model.gaps[0][0],
+                              f"part of the tree of {model.implementation} is not read: "
+                              f"{'; '.join(why for _, why in model.gaps)}, which only "
+                              "running expand gives (check --trace runs it in the sandbox); "
+                              "the other statements' nodes are checked",
+                              model.implementation)] if model.gaps else []
+    return unread + _Checker(model, index, ontology).run()
 
 
 T = TypeVar("T")
@@ -569,6 +575,7 @@ class _Checker:
                         shares[id(node)] = self._share(node)
                     places.append((node, *shares[id(node)]))
             self.writes = _Writes(places)
+            self.writes.unknown += len(self.model.gaps)  # what the unread statements add
         return self.writes
 
     def _share(self, node: SkillNode) -> tuple[frozenset[str], bool]:

@@ -106,6 +106,9 @@ class CompoundModel:
     line: int = field(default=0, compare=False)
     expand_line: int = field(default=0, compare=False)
     obtained: Obtained = field(default="static", compare=False)
+    gaps: tuple[tuple[int, str], ...] = field(default=(), compare=False)
+    """The statements of ``expand`` the syntax could not give (line, why), when the tree
+    was read in part: ``children`` are the nodes of the others, in order."""
 
     def to_json(self, positions: bool = True) -> dict[str, Any]:
         data: dict[str, Any] = {
@@ -115,6 +118,8 @@ class CompoundModel:
         if positions:
             data.update(path=self.path, line=self.line, expand_line=self.expand_line,
                         obtained=self.obtained)
+            if self.gaps:
+                data["gaps"] = [list(gap) for gap in self.gaps]
         return data
 
     def canonical_json(self) -> str:
@@ -159,4 +164,5 @@ def model_from_json(data: dict[str, Any]) -> CompoundModel:
         data.get("processor", "Sequential"),
         tuple(node_from_json(c) for c in data.get("children", ())),
         data.get("path", ""), data.get("line", 0), data.get("expand_line", 0),
-        data.get("obtained", "static"))
+        data.get("obtained", "static"),
+        tuple((int(line), str(why)) for line, why in data.get("gaps", ())))

@@ -10,7 +10,7 @@ from __future__ import annotations
 import ast
 import inspect
 import textwrap
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -33,9 +33,14 @@ class Trace:
     """A traced description: the function, its parameters and the recorded conditions."""
 
     skill: str
-    func: Callable[..., Any]
+    func: Callable[..., Any] | None
     specs: tuple[ParamSpec, ...]
     recorded: tuple[Recorded, ...]
+    locations: Mapping[str, tuple[str, int]] = field(default_factory=dict)
+    """File and line of each parameter, when the description was read from its syntax
+    (``ezmigrate check`` reads it without running it: ``func`` is then None)."""
+    defined_at: tuple[str | None, int | None] = (None, None)
+    """File and line of ``def description`` when ``func`` is None."""
 
 
 @dataclass
@@ -94,7 +99,12 @@ class CheckContext:
         """File and line of parameter ``name`` in the ``def description`` signature (looked up
         in the source only on this error path; the ``def`` line when the source is gone or
         cannot be read: a lookup must never make a valid class unloadable)."""
+        known = self.trace.locations.get(name)
+        if known is not None:
+            return known
         func = self.trace.func
+        if func is None:
+            return self.trace.defined_at
         code = getattr(func, "__code__", None)
         file = code.co_filename if code is not None else None
         first = code.co_firstlineno if code is not None else None

@@ -1,4 +1,4 @@
-"""Condition expressions: what ``A.contain(B)``, ``F.Open == False`` and ``c1 | c2`` build.
+"""Condition expressions: what ``A.contain(B)``, ``F.Open.eq(False)`` and ``c1 | c2`` build.
 
 A ``Cond`` is an immutable record of one future factory call (docs/dsl.md, "Conditions"):
 nothing reaches the backend until ``lowering.py`` turns it into ``getRelationCond(...)`` and

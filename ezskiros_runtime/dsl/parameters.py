@@ -93,6 +93,18 @@ def _spec(name: str, ann: ParamAnnotation, default: Any, keyword_only: bool) -> 
                      description=ann.description, mismatch=mismatch, keyword_only=keyword_only)
 
 
+def spec_of(name: str, annotation: Any, default: Any, keyword_only: bool) -> ParamSpec:
+    """One parameter from its evaluated annotation and default (``_EMPTY`` for none): what
+    ``evaluate_signature`` does per parameter, for a caller that evaluated them itself
+    (``ezmigrate check`` reads the signature from the syntax, without running the module)."""
+    return _spec(name, parse_annotation(annotation), _EMPTY if default is NO_DEFAULT else default,
+                 keyword_only)
+
+
+NO_DEFAULT = _EMPTY
+"""The default of a parameter that has none, for ``spec_of``."""
+
+
 def _value(name: str, ann: ParamAnnotation, default: Any
            ) -> tuple[str, Any, str | None, str | None]:
     """(value mode, value, element type string, default mismatch) of one parameter."""
@@ -177,4 +189,4 @@ def call_arguments(specs: tuple[ParamSpec, ...], symbols: dict[str, Any]
     return args, kwargs
 
 
-__all__ = ["ParamSpec", "call_arguments", "evaluate_signature"]
+__all__ = ["NO_DEFAULT", "ParamSpec", "call_arguments", "evaluate_signature", "spec_of"]

@@ -2,9 +2,9 @@
 
 ``A`` stands for the parameter key ``"A"``. Attribute access names an ontology property
 (``A.contain`` -> ``skiros:contain``) and gives a ``PropertyHandle``; calling the handle with
-another symbol builds a relation condition, comparing it with a literal builds a property
-condition. The other condition kinds are methods, whose names are therefore never properties
-(docs/dsl.md).
+another symbol builds a relation condition, comparing it with a literal (``F.Open.eq(False)``,
+or ``F.Open == False``) builds a property condition. The other condition kinds are methods,
+whose names are therefore never properties (docs/dsl.md).
 """
 
 from __future__ import annotations
@@ -120,12 +120,43 @@ class PropertyHandle:
         return Cond("property", self.subject, self.vocabulary, operator=operator, value=value,
                     note=self.note)
 
+    # The methods below are the form the migrator writes. ``F.Open == False`` reads well
+    # but every linter flags it (pycodestyle / ruff E712), and their fixes rewrite it to
+    # ``not F.Open`` or ``F.Open``, which asks for the truth of a handle and changes the
+    # condition. A method call is a form no linter flags and no fix rewrites. The
+    # comparison operators stay for code written by hand (docs/dsl.md).
+
+    def eq(self, value: Any) -> Cond:
+        """``F.Open.eq(False)``: the property equals ``value`` (SkiROS2's ``"="``)."""
+        return self._compare("=", value)
+
+    def gt(self, value: Any) -> Cond:
+        """``A.PositionX.gt(0.5)``: the property is greater than ``value``."""
+        return self._compare(">", value)
+
+    def lt(self, value: Any) -> Cond:
+        """``A.PositionX.lt(0.5)``: the property is less than ``value``."""
+        return self._compare("<", value)
+
+    def ge(self, value: Any) -> Cond:
+        """``A.PositionX.ge(0.5)``: the property is at least ``value``."""
+        return self._compare(">=", value)
+
+    def le(self, value: Any) -> Cond:
+        """``A.PositionX.le(0.5)``: the property is at most ``value``."""
+        return self._compare("<=", value)
+
+    def ne(self, value: Any) -> Cond:
+        """Exists so that ``A.prop.ne(v)`` explains itself instead of an AttributeError."""
+        raise DescriptionError(f"{self.subject}.{self.vocabulary}.ne(...) has no SkiROS2 "
+                               "operator: write ~ A.prop.eq(value)")
+
     def __eq__(self, value: object) -> Cond:  # type: ignore[override]
         return self._compare("=", value)
 
     def __ne__(self, value: object) -> Cond:  # type: ignore[override]
         raise DescriptionError(f"{self.subject}.{self.vocabulary} != ... has no SkiROS2 "
-                               "operator: write ~ (A.prop == value)")
+                               "operator: write ~ (A.prop == value) or ~ A.prop.eq(value)")
 
     def __gt__(self, value: Any) -> Cond:
         return self._compare(">", value)
@@ -143,7 +174,8 @@ class PropertyHandle:
 
     def __bool__(self) -> bool:
         raise DescriptionError(f"{self.subject}.{self.vocabulary} is not a condition yet: "
-                               "call it with a parameter or compare it with a value")
+                               "call it with a parameter or compare it with a value "
+                               "(.eq(v), .gt(v), ... or ==, >, ...)")
 
 
 __all__ = ["RESERVED", "PropertyHandle", "Symbol"]

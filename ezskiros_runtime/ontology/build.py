@@ -1,7 +1,10 @@
 """Turning parsed RDF into an `OntologyIndex` (the cache-miss path; imports rdflib).
 
 Everything rdflib-specific stays in this module: the result holds only strings and the
-dataclasses of `expressions`, so it can be pickled and queried without rdflib.
+dataclasses of `expressions`, so it can be cached (as JSON) and queried without rdflib.
+Nothing here computes a closure per class or property: the index keeps direct edges, and
+inherited domains and ranges are shared along single-parent chains (``_Inheritance``), so
+time and memory grow linearly with a chain of 10,000 ``subClassOf`` or ``subPropertyOf``.
 
 What counts, and why:
 - classes: URIRefs typed owl:Class or rdfs:Class, plus every URIRef on either side of
@@ -20,11 +23,11 @@ What counts, and why:
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
+from typing import Tuple
 
 from rdflib import BNode, Graph, Literal, URIRef
 from rdflib.namespace import OWL, RDF, RDFS, XSD
 
-from .closure import reflexive_transitive_closure
 from .expressions import ClassExpr, ComplementOf, IntersectionOf, Named, UnionOf, Unsupported
 from .index import OntologyIndex, PropertyInfo
 from .individuals import add_individuals
@@ -169,24 +172,87 @@ def _properties(
     for sub, sup in graph.subject_objects(RDFS.subPropertyOf):
         if isinstance(sub, URIRef) and isinstance(sup, URIRef) and sub != sup:
             parents.setdefault(str(sub), set()).add(str(sup))
-    own_domains = _own_expressions(graph, RDFS.domain, reader)
-    own_ranges = _own_expressions(graph, RDFS.range, reader)
-
-    ancestors = reflexive_transitive_closure(kinds, parents)
+    domains = _Inheritance(_own_expressions(graph, RDFS.domain, reader), parents)
+    ranges = _Inheritance(_own_expressions(graph, RDFS.range, reader), parents)
     properties: dict[str, PropertyInfo] = {}
     for iri, kind in sorted(kinds.items()):
-        domains, domain_sources = _effective(iri, own_domains, parents)
-        ranges, range_sources = _effective(iri, own_ranges, parents)
+        own_domains, domain_sources = domains.effective(iri)
+        own_ranges, range_sources = ranges.effective(iri)
         properties[iri] = PropertyInfo(
             iri=iri,
             kind=kind,
-            domains=domains,
-            ranges=ranges,
-            super_properties=ancestors.get(iri, frozenset()) - {iri},
+            domains=own_domains,
+            ranges=own_ranges,
+            parents=frozenset(parents.get(iri, ())),
             domain_sources=domain_sources,
             range_sources=range_sources,
         )
     return properties
+
+
+_Effective = Tuple[Tuple[ClassExpr, ...], Tuple[str, ...]]
+
+
+class _Inheritance:
+    """Each property's own expressions (domains, or ranges) plus its super-properties'.
+
+    A property without expressions of its own and with one parent has exactly its
+    parent's: the answer is shared, not copied, and found without walking up again, so a
+    chain costs linear time and memory. Other properties walk up (``_walk``)."""
+
+    def __init__(self, own: dict[str, tuple[ClassExpr, ...]],
+                 parents: dict[str, set[str]]) -> None:
+        self._own = own
+        self._parents = parents
+        self._known: dict[str, _Effective] = {}
+
+    def effective(self, iri: str) -> _Effective:
+        pending = [iri]
+        while pending:  # iterative: a chain is deeper than the recursion limit
+            node = pending[-1]
+            if node in self._known:
+                pending.pop()
+                continue
+            above = self._parents.get(node, set())
+            if node in self._own or len(above) != 1:
+                self._known[node] = self._walk(node)
+                pending.pop()
+                continue
+            parent = next(iter(above))
+            if parent in self._known:
+                self._known[node] = self._known[parent]
+                pending.pop()
+            elif parent in pending:  # a cycle of single parents: walk it once
+                self._known[node] = self._walk(node)
+                pending.pop()
+            else:
+                pending.append(parent)
+        return self._known[iri]
+
+    def _walk(self, iri: str) -> _Effective:
+        """Own expressions plus those of every super-property (in a stable order).
+
+        RDFS: ``x P y`` with ``P subPropertyOf Q`` entails ``x Q y``, so ``Q``'s domain and
+        range hold for ``P`` too (rdfs7 with rdfs2/rdfs3); like several ``rdfs:domain``,
+        all must hold.
+        """
+        own, parents = self._own, self._parents
+        collected: list[ClassExpr] = list(own.get(iri, ()))
+        sources: list[str] = [iri] if iri in own else []
+        seen = {iri}
+        frontier = sorted(parents.get(iri, ()))
+        while frontier:
+            upper: list[str] = []
+            for parent in frontier:
+                if parent in seen:
+                    continue
+                seen.add(parent)
+                if parent in own:
+                    collected.extend(own[parent])
+                    sources.append(parent)
+                upper.extend(sorted(parents.get(parent, ())))
+            frontier = upper
+        return _ordered_unique(collected), tuple(sources)
 
 
 def _own_expressions(
@@ -197,32 +263,6 @@ def _own_expressions(
         if isinstance(subject, URIRef):
             found.setdefault(str(subject), []).append(reader.read(value))
     return {iri: _ordered_unique(exprs) for iri, exprs in found.items()}
-
-
-def _effective(
-    iri: str, own: dict[str, tuple[ClassExpr, ...]], parents: dict[str, set[str]]
-) -> tuple[tuple[ClassExpr, ...], tuple[str, ...]]:
-    """Own expressions plus those of every super-property (in a stable order).
-
-    RDFS: ``x P y`` with ``P subPropertyOf Q`` entails ``x Q y``, so ``Q``'s domain and range
-    hold for ``P`` too (rdfs7 with rdfs2/rdfs3); like several ``rdfs:domain``, all must hold.
-    """
-    collected: list[ClassExpr] = list(own.get(iri, ()))
-    sources: list[str] = [iri] if iri in own else []
-    seen = {iri}
-    frontier = sorted(parents.get(iri, ()))
-    while frontier:
-        upper: list[str] = []
-        for parent in frontier:
-            if parent in seen:
-                continue
-            seen.add(parent)
-            if parent in own:
-                collected.extend(own[parent])
-                sources.append(parent)
-            upper.extend(sorted(parents.get(parent, ())))
-        frontier = upper
-    return _ordered_unique(collected), tuple(sources)
 
 
 def _ordered_unique(exprs: Iterable[ClassExpr]) -> tuple[ClassExpr, ...]:

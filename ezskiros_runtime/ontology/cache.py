@@ -1,4 +1,4 @@
-"""The persistent index cache: pickled indexes keyed by the content of the ontology files.
+"""The persistent index cache: indexes as JSON, keyed by the content of the ontology files.
 
 Parsing OWL with rdflib (and importing rdflib at all) dominates start-up, yet the files
 almost never change between launches. So the index is stored under a hash of everything
@@ -9,10 +9,15 @@ modules that build the index (so editing that code cannot serve a stale index).
 The cache is an optimisation only: an unreadable, corrupt or unwritable cache is ignored
 and the index is rebuilt. Writes are atomic (temporary file in the same folder, then
 os.replace), so a concurrent reader never sees half a file. Each write keeps only the
-most recently used indexes, since every edit of an ontology creates a new key.
+most recently used indexes, since every edit of an ontology creates a new key, and drops
+entries unused for ``MAX_AGE_DAYS``.
 
-The files are pickles, so the cache folder must be as trusted as the code itself: it is
-the user's own cache folder, never a shared or downloaded one.
+No pickle (issue 40): the file name depends only on content, and any process that ran
+once as the user could have written it, so an entry is data that cannot run code (JSON,
+``index_codec``) and is checked field by field when read; whatever does not check out is
+ignored and the index is rebuilt from the files. Pickles of earlier versions are never
+read, only deleted. The other readers of this cache (the verification worker under
+another Python, ``ezmigrate.verify.interpreters``) go through ``load_index`` as well.
 """
 
 from __future__ import annotations
@@ -22,7 +27,7 @@ import os
 import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, BinaryIO
+from typing import TYPE_CHECKING, Any
 
 from .errors import OntologyLoadError
 from .index import OntologyIndex
@@ -30,24 +35,36 @@ from .index import OntologyIndex
 if TYPE_CHECKING:
     from .parsing import OntologyFile
 
-CACHE_FORMAT_VERSION = "3"  # 2: sub-properties add their parents' domains and ranges;
-# 3: the index keeps the files' individuals
-"""Bump when the pickled shape of the index changes incompatibly."""
+CACHE_FORMAT_VERSION = "4"  # 2: sub-properties add their parents' domains and ranges;
+# 3: the index keeps the files' individuals; 4: JSON with direct edges only, no pickle
+"""Bump when the stored shape of the index changes incompatibly."""
 
 _INDEX_CODE = (
     "build.py",
+    "cache.py",
     "closure.py",
     "dtd_guard.py",
     "expressions.py",
     "index.py",
+    "index_codec.py",
     "individuals.py",
+    "limits.py",
+    "load.py",
     "naming.py",
     "parsing.py",
 )
-"""Modules whose code decides what the index contains (their source is part of the key)."""
+"""The runtime's modules whose code decides what the index contains or how it is stored:
+their source is part of the key, so a changed runtime never reads an entry of another."""
 
 KEEP_INDEXES = 16
 """How many cached indexes a write leaves in the folder (most recently used first)."""
+
+MAX_AGE_DAYS = 30
+"""Entries not used for this long are deleted at the next write."""
+
+INDEX_PATTERN = "ontology-index-*.json"
+LEGACY_PATTERN = "ontology-index-*.pickle"
+"""Entries of earlier versions: deleted, never read."""
 
 _code_digest_memo: str | None = None
 
@@ -84,15 +101,6 @@ def _sha256_factory() -> Callable[[], Any]:
         except ImportError:
             from hashlib import sha256
     return sha256
-
-
-def _unpickle(stream: BinaryIO) -> object:
-    """pickle.load via the C module: `import pickle` alone costs a few ms of set-up."""
-    try:
-        from _pickle import load
-    except ImportError:  # not CPython
-        from pickle import load
-    return load(stream)
 
 
 def default_cache_dir(environ: Mapping[str, str] | None = None) -> Path:
@@ -151,25 +159,30 @@ def fingerprint(files: Iterable[OntologyFile]) -> str:
 
 def cache_path(directory: Path, fingerprint: str) -> Path:
     """Where the index with this fingerprint is (or would be) stored."""
-    return directory / f"ontology-index-{fingerprint}.pickle"
+    return directory / f"ontology-index-{fingerprint}.json"
 
 
 def read_cached_index(directory: Path, fingerprint: str) -> OntologyIndex | None:
-    """The cached index for `fingerprint`, or None on a miss or any problem with the file."""
+    """The cached index for `fingerprint`, or None on a miss or any problem with the file:
+    unreadable, not JSON, truncated, of another shape or for other content (``decode``
+    checks every field). Nothing in the file can run code."""
+    import json
+
+    from .index_codec import decode
+
     path = cache_path(directory, fingerprint)
     try:
         with path.open("rb") as stream:
-            index = _unpickle(stream)
+            data = stream.read(_MAX_ENTRY_BYTES + 1)
+        if len(data) > _MAX_ENTRY_BYTES:
+            raise ValueError("larger than any index this code writes")
+        index = decode(json.loads(data), fingerprint, CACHE_FORMAT_VERSION)
     except FileNotFoundError:
         stats.misses += 1
         return None
-    except Exception as error:  # corrupt, truncated, from other code, unreadable: rebuild
+    except Exception as error:  # corrupt, truncated, forged, unreadable: rebuild
         stats.misses += 1
-        _ignored("cannot read ontology cache %s: %s", path, error)
-        return None
-    if not isinstance(index, OntologyIndex) or index.fingerprint != fingerprint:
-        stats.misses += 1
-        _ignored("ignoring ontology cache %s: not an index for this content", path)
+        _ignored("ignoring ontology cache %s: %s", path, error)
         return None
     stats.hits += 1
     with contextlib.suppress(OSError):  # recency for pruning; a read-only cache still works
@@ -177,13 +190,20 @@ def read_cached_index(directory: Path, fingerprint: str) -> OntologyIndex | None
     return index
 
 
+_MAX_ENTRY_BYTES = 512 * 1024 * 1024
+"""An entry larger than this is not read (the limits keep real ones far below)."""
+
+
 def write_cached_index(directory: Path, index: OntologyIndex) -> Path | None:
     """Store `index` atomically; returns the file, or None when the cache is unwritable."""
-    import pickle
+    import json
+
+    from .index_codec import encode
 
     target = cache_path(directory, index.fingerprint)
-    data = pickle.dumps(index, protocol=pickle.HIGHEST_PROTOCOL)
-    return target if _store(target, data, "ontology-index-*.pickle") else None
+    data = json.dumps(encode(index, CACHE_FORMAT_VERSION), separators=(",", ":"),
+                      ensure_ascii=False).encode("utf-8")
+    return target if _store(target, data, INDEX_PATTERN) else None
 
 
 def _store(target: Path, data: bytes, pattern: str) -> bool:
@@ -221,9 +241,12 @@ def refusal_path(directory: Path, fingerprint: str, sources: Sequence[str]) -> P
 
     Unlike an index, a refusal names a file: the paths count, and so does the rdflib that
     refused (its module file's place, size and time: another rdflib may word it apart, or
-    read the file)."""
+    read the file), and so do the limits in force (``limits.stamp``: a raised limit must
+    load the file again)."""
+    from .limits import stamp
+
     digest = _sha256_factory()()
-    for part in (fingerprint, *sources, _rdflib_stamp()):
+    for part in (fingerprint, *sources, _rdflib_stamp(), stamp()):
         digest.update(part.encode("utf-8", "surrogateescape") + b"\0")
     return directory / f"ontology-refusal-{digest.hexdigest()}.json"
 
@@ -249,7 +272,11 @@ def read_cached_refusal(directory: Path, fingerprint: str, sources: Sequence[str
     path = refusal_path(directory, fingerprint, sources)
     try:
         kept = json.loads(path.read_text(encoding="utf-8"))
-        error = OntologyLoadError(str(kept["message"]), path=kept["path"], line=kept["line"])
+        message, where, line = kept["message"], kept["path"], kept["line"]
+        if not (isinstance(message, str) and isinstance(where, (str, type(None)))
+                and (line is None or (isinstance(line, int) and not isinstance(line, bool)))):
+            raise ValueError("not a refusal this code wrote")
+        error = OntologyLoadError(message, path=where, line=line)
     except FileNotFoundError:
         return None
     except Exception as error:  # corrupt or foreign: load the files again
@@ -271,22 +298,28 @@ def write_cached_refusal(directory: Path, fingerprint: str, sources: Sequence[st
            "ontology-refusal-*.json")
 
 
-def _prune(directory: Path, keep: Path, pattern: str) -> None:
+def _prune(directory: Path, keep: Path, pattern: str, now: float | None = None) -> None:
     """Delete all but the `KEEP_INDEXES` most recently used entries of ``pattern`` (never
-    `keep`)."""
+    `keep`), the entries unused for `MAX_AGE_DAYS`, and the pickles of earlier versions."""
+    import time
+
+    oldest = (time.time() if now is None else now) - MAX_AGE_DAYS * 24 * 3600
     try:
         found = [
             (entry.stat().st_mtime, entry)
             for entry in directory.glob(pattern)
             if entry != keep
         ]
+        legacy = list(directory.glob(LEGACY_PATTERN))
     except OSError as error:
         _ignored("cannot list ontology cache %s: %s", directory, error)
         return
     found.sort(reverse=True)
-    for _mtime, stale in found[KEEP_INDEXES - 1 :]:
+    stale = [entry for mtime, entry in found[KEEP_INDEXES - 1 :]]
+    stale += [entry for mtime, entry in found[: KEEP_INDEXES - 1] if mtime < oldest]
+    for entry in [*stale, *legacy]:
         with contextlib.suppress(OSError):
-            stale.unlink()
+            entry.unlink()
 
 
 def _ignored(message: str, *args: object) -> None:

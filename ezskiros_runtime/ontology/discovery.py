@@ -12,7 +12,8 @@ is skipped: the bundled core states the same facts, and loading both would only 
 duplicates. So are the ``owl/`` folders of SkiROS2 packages vendored into a lab's
 repository (``vendored``): the lab's skill manager does not load them, and its code is not
 the lab's either. Build output, virtual environments, hidden folders and the project's excludes
-are not searched.
+are not searched, and a symbolic link that leads outside the repository is not loaded
+(``leads_outside``).
 """
 
 from __future__ import annotations
@@ -27,6 +28,8 @@ from .vendored import NOT_SEARCHED, PACKAGE_XML, git_top, vendored_skip
 
 OWL_FOLDER = "owl"
 SUFFIXES = (".owl", ".ttl", ".rdf")
+PROJECT_FILES = (PACKAGE_XML, "pyproject.toml")
+"""The files that make a folder a project outside git: a ROS package, a Python project."""
 CORE_FILE_NAMES = frozenset({"skiros.owl", "skirosextra.owl", "sumo.owl", "cora.owl",
                              "corax.owl", "rparts.owl"})
 """The SkiROS2 core files (``skiros2/owl`` and its IEEE-1872-2015 folder), by lower-cased
@@ -43,8 +46,10 @@ class Discovered:
 
 
 def repository_root(paths: Sequence[Path]) -> Path | None:
-    """The git top level above the first path, else the ROS package that holds it (the
-    nearest folder with a ``package.xml``), else the common folder of the paths.
+    """The project of the first path (``enclosing_project``), else the common folder of
+    the folders named; None when only files outside any project were named: a file alone
+    is checked alone, and nothing around it is searched (a file in a shared folder once
+    had that whole folder's ``owl/`` files loaded).
 
     The command (for the paths it works on) and the runtime (for the first skill module that
     asks for vocabulary, wherever the working directory is: roslaunch starts nodes in
@@ -55,16 +60,20 @@ def repository_root(paths: Sequence[Path]) -> Path | None:
     enclosing = enclosing_project(Path(paths[0]))
     if enclosing is not None:
         return enclosing
-    folders = [p if p.is_dir() else p.parent for p in (Path(x).resolve() for x in paths)]
-    return Path(os.path.commonpath([str(f) for f in folders]))
+    folders = [p for p in (Path(x).resolve() for x in paths) if p.is_dir()]
+    return Path(os.path.commonpath([str(f) for f in folders])) if folders else None
 
 
 def enclosing_project(path: Path) -> Path | None:
-    """The git top level at or above ``path``, else its ROS package; None when ``path`` is
-    in neither (a home folder, say: then nothing around it is the project's to search)."""
+    """The project ``path`` belongs to, the upper bound of every search made for it: the
+    git top level at or above ``path``, else the nearest folder with a ``package.xml`` or a
+    ``pyproject.toml``; None when ``path`` is in none of them (a home folder, a shared
+    folder: then nothing around it is the project's to search)."""
     first = path.resolve()
     folder = first if first.is_dir() else first.parent
-    return git_top(folder) or package_root(folder)
+    return git_top(folder) or next((candidate for candidate in (folder, *folder.parents)
+                                    if any((candidate / name).is_file()
+                                           for name in PROJECT_FILES)), None)
 
 
 def package_root(path: Path) -> Path | None:
@@ -102,5 +111,24 @@ def _owl_files(root: Path, skip: Callable[[Path], bool]) -> Iterable[tuple[Path,
         if OWL_FOLDER not in here.relative_to(root).parts:
             continue
         for name in names:
-            if name.lower().endswith(SUFFIXES) and not skip(here / name):
+            if (name.lower().endswith(SUFFIXES) and not skip(here / name)
+                    and not leads_outside(here / name, root)):
                 yield here / name, inside
+
+
+def leads_outside(path: Path, root: Path) -> bool:
+    """Whether ``path`` is a symbolic link whose target lies outside ``root``.
+
+    Such a file is skipped, as the command skips every file of the kind ("symlink leads
+    outside the given paths, skipped", ``ezmigrate.files.discover``): a repository's
+    ``owl/lab.ttl`` must not load whatever file elsewhere on the machine it points to. A
+    link that cannot be resolved counts as outside. Symbolic links to folders are never
+    entered (``walk``, as ``os.walk``)."""
+    if not os.path.islink(path):
+        return False
+    try:
+        target = Path(os.path.realpath(path))
+        base = Path(os.path.realpath(root))
+    except (OSError, ValueError):
+        return True
+    return target != base and base not in target.parents

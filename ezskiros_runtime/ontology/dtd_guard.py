@@ -17,12 +17,16 @@ Refused, each with the line of its declaration:
   a redeclaration of those five;
 - an entity longer than ``MAX_ENTITY_TEXT`` characters: a long flat entity repeated
   expands quadratically, the other way to blow up;
+- more entity references in the document than ``limits.MAX_ENTITY_REFERENCES``, or
+  references that expand to more than ``limits.MAX_ENTITY_EXPANSION`` characters in all
+  (the count and the size, not only the nesting: see ``_references``);
 - any other markup inside the DTD: what this reader does not know it cannot vouch for.
 
-Only the prolog is read, so the cost does not grow with the file. Anything unexpected
-*before* the DTD or after it (text that is not XML, a Turtle file whose format is being
-guessed, the root element) ends the reading without a verdict: the XML parser stops there
-too, before it could expand anything, and reports its own error.
+The prolog is read for the declarations; the rest of the file only once, by one regular
+expression that counts the references, so the cost grows linearly with the file. Anything
+unexpected *before* the DTD or after it (text that is not XML, a Turtle file whose format
+is being guessed, the root element) ends the reading of the prolog without a verdict: the
+XML parser stops there too, before it could expand anything, and reports its own error.
 """
 
 from __future__ import annotations
@@ -30,6 +34,8 @@ from __future__ import annotations
 import codecs
 import re
 from typing import NamedTuple
+
+from .limits import MAX_ENTITY_EXPANSION, MAX_ENTITY_REFERENCES, Limit
 
 MAX_ENTITY_TEXT = 256
 """Longest entity replacement text accepted (namespace IRIs are well below 100)."""
@@ -44,6 +50,7 @@ _SPACE = re.compile(r"[ \t\r\n]*")
 _NAME = re.compile(r"[^\s\"'<>%&;\[\]]+")
 _CHAR_REFERENCE = re.compile(r"&#(x[0-9a-fA-F]+|[0-9]+);")
 _ENTITY_REFERENCE = re.compile(r"([&%])([^\s\"'<>%&;#][^\s\"'<>%&;]*);")
+_ANY_REFERENCE = re.compile(r"&(#x[0-9a-fA-F]+|#[0-9]+|[^\s\"'<>%&;#][^\s\"'<>%&;]*);")
 _UNQUOTED = re.compile(r"[^\"'%>]*")
 _LINE_BREAK = re.compile(r"\r\n?|\n")
 _DECLARED_ENCODING = re.compile(
@@ -53,10 +60,12 @@ _UTF16_BY_START = ((codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-1
 
 
 class Refusal(NamedTuple):
-    """Why a file's DTD is refused, and the 1-based line of the declaration at fault."""
+    """Why a file's DTD is refused, and the 1-based line of the declaration at fault;
+    ``limit`` is the limit the file is over when that is the reason (else None)."""
 
     line: int
     reason: str
+    limit: Limit | None = None
 
 
 def refusal(data: bytes) -> Refusal | None:
@@ -65,13 +74,48 @@ def refusal(data: bytes) -> Refusal | None:
     while True:
         whole = size >= len(data)
         try:
+            declared: list[tuple[int, dict[str, int]]] = []
             for text in _readings(data[:size], whole):
-                found = _Prolog(text, whole).read()
+                prolog = _Prolog(text, whole)
+                found = prolog.read()
                 if found is not None:
                     return found
-            return None
+                declared.append((prolog.pos, prolog.entities))
+            break
         except _Incomplete:
             size *= 4
+    for text, (start, entities) in zip(_readings(data, True), declared):
+        found = _references(text, start, entities)
+        if found is not None:
+            return found
+    return None
+
+
+def _references(text: str, start: int, entities: dict[str, int]) -> Refusal | None:
+    """Whether the references after the prolog stay within ``MAX_ENTITY_REFERENCES`` and
+    ``MAX_ENTITY_EXPANSION``: flat entities cannot nest, but rdflib gathers a literal by
+    concatenating every expansion onto what came before, so 80,000 uses of a 256-character
+    entity in one literal take minutes. Character and predefined references count as one
+    reference of one character. A reference inside a comment or CDATA section is counted
+    too: the bound errs on the safe side, and real files are far below it."""
+    most_references = MAX_ENTITY_REFERENCES.value()
+    most_characters = MAX_ENTITY_EXPANSION.value()
+    characters = 0
+    for references, match in enumerate(_ANY_REFERENCE.finditer(text, start), start=1):
+        characters += entities.get(match.group(1), 1)
+        if references > most_references:
+            return Refusal(_line_at(text, match.start()),
+                           f"it uses more than {most_references:,} entity references",
+                           MAX_ENTITY_REFERENCES)
+        if characters > most_characters:
+            return Refusal(_line_at(text, match.start()),
+                           f"its entity references expand to more than "
+                           f"{most_characters:,} characters", MAX_ENTITY_EXPANSION)
+    return None
+
+
+def _line_at(text: str, at: int) -> int:
+    return len(_LINE_BREAK.findall(text, 0, at)) + 1
 
 
 def _readings(head: bytes, whole: bool) -> list[str]:
@@ -122,6 +166,8 @@ class _Prolog:
         self.text = text
         self.whole = whole
         self.pos = 1 if text.startswith("\ufeff") else 0
+        self.entities: dict[str, int] = {}
+        """The declared entities and the length of their replacement text."""
 
     def read(self) -> Refusal | None:
         """The refusal, or None; _Incomplete when more of the file is needed to decide
@@ -259,9 +305,11 @@ class _Prolog:
                                       "would be read from outside the file")
         if self._peek() not in "\"'":
             raise self._refuse(start, f"the DTD's entity {name!r} has no quoted value")
-        problem = _entity_problem(name, self._quoted())
+        literal = self._quoted()
+        problem = _entity_problem(name, literal)
         if problem is not None:
             raise self._refuse(start, problem)
+        self.entities.setdefault(name, len(_CHAR_REFERENCE.sub(_character, literal)))
         self._skip()
         if self._peek() != ">":
             raise self._refuse(start, f"the DTD's entity {name!r} does not end where "

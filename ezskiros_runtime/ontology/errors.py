@@ -24,6 +24,21 @@ class OntologyLoadError(OntologyError):
         self.line = line
 
 
+class OntologyLimitError(OntologyLoadError):
+    """A file is over one of the loader's limits (``limits``): too large, too many triples,
+    too slow to parse, too many or too large entity expansions.
+
+    Apart from other load errors so that the parser's own error handling lets it through
+    unchanged (it is not "the file does not parse"); ``variable`` names the environment
+    variable that raises the limit.
+    """
+
+    def __init__(self, message: str, *, path: str | None = None, line: int | None = None,
+                 variable: str = ""):
+        super().__init__(message, path=path, line=line)
+        self.variable = variable
+
+
 class OntologyConfigError(OntologyError):
     """The configuration points at something unusable (a missing path, a bad pyproject).
 

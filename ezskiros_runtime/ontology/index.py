@@ -1,10 +1,12 @@
 """The ontology index: what the DSL and the migrator need to know about the vocabulary.
 
-The index is plain, picklable data (strings, frozensets, small frozen dataclasses), not an
-rdflib graph, for two reasons: it can be cached on disk and loaded without importing rdflib
-(whose import alone costs more than the whole warm load), and every question the checks ask
-("is this a class?", "is A a subclass of B?", "what is the range of contain?") becomes a
-dictionary lookup instead of a graph query.
+The index is plain data (strings, frozensets, small frozen dataclasses), not an rdflib
+graph, for two reasons: it can be cached on disk (``cache``, as JSON) and loaded without
+importing rdflib (whose import alone costs more than the whole warm load), and every
+question the checks ask ("is this a class?", "what is the range of contain?") becomes a
+dictionary lookup instead of a graph query. Subclass and sub-property questions walk the
+direct edges (``closure.Hierarchy``): the closures are never stored, since a long chain
+makes them quadratic.
 
 `load_index` (in `load.py`) is the only entry point that touches files; everything here is
 queries.
@@ -13,10 +15,10 @@ queries.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from .closure import reflexive_transitive_closure
+from .closure import Hierarchy
 from .expressions import (
     ClassExpr,
     ComplementOf,
@@ -54,9 +56,20 @@ class PropertyInfo:
     kind: str
     domains: tuple[ClassExpr, ...]
     ranges: tuple[ClassExpr, ...]
-    super_properties: frozenset[str]
+    parents: frozenset[str]
+    """The direct super-properties (``rdfs:subPropertyOf``), itself excluded."""
     domain_sources: tuple[str, ...] = ()
     range_sources: tuple[str, ...] = ()
+    lineage: Hierarchy | None = field(default=None, compare=False, repr=False, hash=False)
+    """The sub-property hierarchy of all properties, shared, for ``super_properties``."""
+
+    @property
+    def super_properties(self) -> frozenset[str]:
+        """All super-properties, transitively (itself excluded), walked when asked: stored
+        for every property, a chain of them would be quadratic."""
+        if self.lineage is None:
+            return self.parents
+        return self.lineage.ancestors(self.iri) - {self.iri}
 
 
 class OntologyIndex:
@@ -95,15 +108,19 @@ class OntologyIndex:
             iri: list(types) for iri, types in individuals.items()}
         self.default_prefix = default_prefix
         self.classes = frozenset(classes)
-        self.properties = dict(properties)
         self.sources = tuple(sources)
         self.fingerprint = fingerprint
         direct = {c: frozenset(s) for c, s in (direct_superclasses or {}).items()}
         self._direct_superclasses: dict[str, frozenset[str]] = direct
+        self._equivalent_classes: dict[str, frozenset[str]] = {
+            c: frozenset(same) for c, same in (equivalent_classes or {}).items()}
         edges: dict[str, set[str]] = {c: set(s) for c, s in direct.items()}
-        for cls, same in (equivalent_classes or {}).items():
+        for cls, same in self._equivalent_classes.items():
             edges.setdefault(cls, set()).update(same)
-        self._superclasses = reflexive_transitive_closure(self.classes, edges)
+        self._hierarchy = Hierarchy(self.classes, edges)
+        lineage = Hierarchy(properties, {iri: info.parents for iri, info in properties.items()})
+        self.properties = {iri: _with_lineage(info, lineage)
+                           for iri, info in properties.items()}
         self._namespace_prefix: dict[str, str] = {}
         for prefix, namespace in self.prefixes.items():
             self._namespace_prefix.setdefault(namespace, prefix)
@@ -180,7 +197,7 @@ class OntologyIndex:
 
         For an IRI the index does not know, just `{iri}`: reflexivity holds for anything.
         """
-        return self._superclasses.get(iri) or frozenset((iri,))
+        return self._hierarchy.ancestors(iri)
 
     def direct_superclasses(self, iri: str) -> frozenset[str]:
         """The named superclasses asserted for `iri` (no closure, no equivalences).
@@ -192,7 +209,19 @@ class OntologyIndex:
 
     def is_subclass(self, sub: str, sup: str) -> bool:
         """Reflexive, transitive subclass test; everything is a subclass of owl:Thing."""
-        return sup == OWL_THING or sup in self.superclasses(sub)
+        return sup == OWL_THING or self._hierarchy.reaches(sub, sup)
+
+    def direct_superclass_map(self) -> Mapping[str, frozenset[str]]:
+        """Every class's asserted superclasses (read-only): the hierarchy's direct edges."""
+        return self._direct_superclasses
+
+    def equivalent_class_map(self) -> Mapping[str, frozenset[str]]:
+        """Every class's asserted equivalents (read-only)."""
+        return self._equivalent_classes
+
+    def equivalent_classes(self, iri: str) -> frozenset[str]:
+        """The named classes asserted equivalent to `iri` (both directions, no closure)."""
+        return self._equivalent_classes.get(iri, frozenset())
 
     def classes_named(self, local: str) -> list[str]:
         """IRIs of the classes with this local name, across all prefixes (sorted)."""
@@ -233,10 +262,11 @@ class OntologyIndex:
         if class_iri == OWL_THING:
             below = list(self.classes)
         elif class_iri in self.classes:
-            below = [c for c in self.classes if class_iri in self.superclasses(c)]
+            below = [c for c in self._hierarchy.descendants(class_iri) if c in self.classes]
         else:
             return []
-        return sorted(below, key=lambda c: (len(self.superclasses(c)), c))
+        count = self._hierarchy.ancestor_count
+        return sorted(below, key=lambda c: (count(c), c))
 
     def satisfies(self, class_iri: str, expr: ClassExpr) -> bool | None:
         """Does every instance of `class_iri` belong to `expr`? None when undecidable.
@@ -257,7 +287,7 @@ class OntologyIndex:
                 return True
             if expr.iri not in self.classes:
                 return None
-            return expr.iri in self.superclasses(class_iri)
+            return self._hierarchy.reaches(class_iri, expr.iri)
         if isinstance(expr, UnionOf):
             results = [self._satisfies(class_iri, m) for m in expr.members]
             if any(r is True for r in results):
@@ -337,6 +367,16 @@ class OntologyIndex:
             f"{kinds['data']} data / {kinds['annotation']} annotation properties, "
             f"prefixes {sorted(self.prefixes)}, {len(self.sources)} file(s)>"
         )
+
+
+def _with_lineage(info: PropertyInfo, lineage: Hierarchy) -> PropertyInfo:
+    """``info`` sharing the hierarchy of its index. A fresh `PropertyInfo` (from the
+    builder or the cache, with none yet) gets it in place: ``dataclasses.replace`` for every
+    property was a third of the warm load."""
+    if info.lineage is None:
+        object.__setattr__(info, "lineage", lineage)
+        return info
+    return info if info.lineage is lineage else replace(info, lineage=lineage)
 
 
 def _group_by_local_name(iris: Iterable[str]) -> dict[str, tuple[str, ...]]:

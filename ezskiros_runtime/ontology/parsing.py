@@ -8,7 +8,9 @@ knows it, the line: the user has to open that file and fix it.
 Every parse goes through `parse_ontology_file`, so that is where an RDF/XML file's DTD is
 vetted first (`dtd_guard`): a file is untrusted input, and one whose entities nest would
 never finish parsing. A refusal is an `OntologyLoadError` like any other, so a discovered
-file is skipped with one warning and a file named explicitly stops the load.
+file is skipped with one warning and a file named explicitly stops the load. The same goes
+for a file over one of the size, triple, time or entity limits (`limits`): reading and
+parsing are bounded, whatever the file holds.
 """
 
 from __future__ import annotations
@@ -16,10 +18,11 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from .dtd_guard import refusal
-from .errors import OntologyLoadError
+from .errors import OntologyLimitError, OntologyLoadError
+from .limits import MAX_BYTES, ParseBudget, refuse
 
 if TYPE_CHECKING:
     from rdflib import Graph
@@ -108,16 +111,23 @@ def _walk_sorted(folder: Path) -> list[Path]:
 
 
 def read_ontology_files(files: Iterable[OntologyFile]) -> list[OntologyFile]:
-    """Read every file's bytes once: they are both hashed (cache key) and parsed."""
+    """Read every file's bytes once: they are both hashed (cache key) and parsed.
+
+    A file larger than ``limits.MAX_BYTES`` is refused (`OntologyLimitError`) before it
+    is read whole: hashing 35 MB on every launch is already too slow for a robot."""
     loaded: list[OntologyFile] = []
+    most = int(MAX_BYTES.value())
     for entry in files:
         try:
-            data = entry.path.read_bytes()
+            with entry.path.open("rb") as stream:  # never more than the limit and one byte
+                data = stream.read(most + 1)
         except OSError as error:
             raise OntologyLoadError(
                 f"{entry.path}: cannot read ontology file: {error.strerror or error}",
                 path=str(entry.path),
             ) from error
+        if len(data) > most:
+            raise refuse(entry.path, f"it is larger than {most:,} bytes", MAX_BYTES)
         loaded.append(OntologyFile(entry.path, entry.format, data))
     return loaded
 
@@ -134,20 +144,69 @@ def parse_ontology_file(entry: OntologyFile) -> Graph:
     if "xml" in formats:
         _refuse_unsafe_dtd(entry)
     failures: list[tuple[str, BaseException]] = []
+    bounded = _bounded_graph_type(rdflib)
     for fmt in formats:
-        graph = rdflib.Graph()
+        budget = ParseBudget(entry.path)
+        graph = bounded(budget)
         try:
             graph.parse(data=entry.data, format=fmt, publicID=entry.path.as_uri())
+        except OntologyLimitError:
+            raise  # over a limit is not "does not parse": no other format is tried
         except Exception as error:  # rdflib raises many unrelated types; all mean "bad file"
+            limit = _limit_error_inside(error)
+            if limit is not None:  # a parser that wrapped our refusal in its own error
+                raise limit from None
             failures.append((fmt, error))
             continue
+        budget.check_clock()
         return graph
     raise _load_error(entry, failures)
+
+
+def _bounded_graph_type(rdflib: Any) -> Any:
+    """An ``rdflib.Graph`` whose ``add`` counts against a `ParseBudget`.
+
+    Every parser of rdflib 4.2.2 to 7 (RDF/XML, Turtle, N-Triples) hands its triples to the
+    graph's ``add``, so this one hook bounds the triples and the time of any parse without
+    touching rdflib's internals. Made once per process (rdflib is imported lazily)."""
+    global _BOUNDED_GRAPH
+    if _BOUNDED_GRAPH is None:
+
+        class BoundedGraph(rdflib.Graph):
+            """A graph that refuses its triple past the budget."""
+
+            def __init__(self, budget: ParseBudget) -> None:
+                super().__init__()
+                self._budget = budget
+
+            def add(self, triple: Any) -> Any:
+                self._budget.tick()
+                return super().add(triple)
+
+        _BOUNDED_GRAPH = BoundedGraph
+    return _BOUNDED_GRAPH
+
+
+_BOUNDED_GRAPH: Any = None
+
+
+def _limit_error_inside(error: BaseException) -> OntologyLimitError | None:
+    """Our refusal when a parser re-raised it inside its own exception, else None."""
+    seen = 0
+    current: BaseException | None = error
+    while current is not None and seen < 8:
+        if isinstance(current, OntologyLimitError):
+            return current
+        current = current.__cause__ or current.__context__
+        seen += 1
+    return None
 
 
 def _refuse_unsafe_dtd(entry: OntologyFile) -> None:
     """Raise when the file's DTD may not reach rdflib (``dtd_guard`` says why and where)."""
     found = refusal(entry.data)
+    if found is not None and found.limit is not None:
+        raise refuse(entry.path, found.reason, found.limit, line=found.line)
     if found is not None:
         raise OntologyLoadError(
             f"{entry.path}:{found.line}: refused before parsing: {found.reason}; an "

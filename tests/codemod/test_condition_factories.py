@@ -67,11 +67,17 @@ def test_property_operators_values_and_verbatim_form():
         '        self.addPreCondition(self.getPropCond("NotAPositionX", "skiros:PositionX", "A", "=", 0.0, False))\n'
         '        self.addPreCondition(self.getPropCond("Open", "skiros:Open", "A", "=", False, True))\n'
         '        self.addPreCondition(self.getPropCond("APositionX", "skiros:PositionX", "A", "!=", 2.0, True))\n'
-    ), expected('        self.pre_conditions += A.PositionX > 0.5\n'
-                '        self.pre_conditions += A.PositionX <= 1\n'
-                '        self.pre_conditions += ~(A.PositionX == 0.0)\n'
+        '        self.addPreCondition(self.getPropCond("APositionX", "skiros:PositionX", "A", ">=", 0.25, True))\n'
+        '        self.addPreCondition(self.getPropCond("APositionX", "skiros:PositionX", "A", "<", 3, True))\n'
+        '        self.addPreCondition(self.getPropCond("APositionX", "skiros:PositionX", "A", "=", True, True))\n'
+    ), expected('        self.pre_conditions += A.PositionX.gt(0.5)\n'
+                '        self.pre_conditions += A.PositionX.le(1)\n'
+                '        self.pre_conditions += ~ A.PositionX.eq(0.0)\n'
                 '        self.pre_conditions += A.property("skiros:Open", "=", False).named("Open")\n'
-                '        self.pre_conditions += A.property("skiros:PositionX", "!=", 2.0)\n'))
+                '        self.pre_conditions += A.property("skiros:PositionX", "!=", 2.0)\n'
+                '        self.pre_conditions += A.PositionX.ge(0.25)\n'
+                '        self.pre_conditions += A.PositionX.lt(3)\n'
+                '        self.pre_conditions += A.PositionX.eq(True)\n'))
 
 
 def test_has_property_is_specified_generate_on_type():

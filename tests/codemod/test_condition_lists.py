@@ -73,15 +73,16 @@ def test_keyword_argument_condition_classes_and_semicolons():
              '        self.post_conditions += ~ A.contain(B)\n')
 
 
-def test_the_outer_parentheses_of_a_comparison_are_dropped_after_plus_equals():
-    """``(A.PositionX > 0.5)`` alone needs no brackets; named or negated it keeps them."""
+def test_property_conditions_are_method_calls_that_need_no_brackets():
+    """``A.PositionX.gt(0.5)``, not ``A.PositionX > 0.5``: a comparison needs brackets once
+    named or negated, and ``== True`` is what linters flag (E712) and their fixes break."""
     assert_migrates(PRELUDE + (
         '        self.addPreCondition(self.getPropCond("APositionX", "skiros:PositionX", "A", ">", 0.5, True))\n'
         '        self.addHoldCondition(self.getPropCond("X", "skiros:PositionX", "A", ">", 0.5, True))\n'
         '        self.addPostCondition(self.getPropCond("NotAPositionX", "skiros:PositionX", "A", "<", 1.0, False))\n'
-    ), OUT + '        self.pre_conditions += A.PositionX > 0.5\n'
-             '        self.hold_conditions += (A.PositionX > 0.5).named("X")\n'
-             '        self.post_conditions += ~(A.PositionX < 1.0)\n')
+    ), OUT + '        self.pre_conditions += A.PositionX.gt(0.5)\n'
+             '        self.hold_conditions += A.PositionX.gt(0.5).named("X")\n'
+             '        self.post_conditions += ~ A.PositionX.lt(1.0)\n')
 
 
 def test_only_disjunctions_wrap_a_long_line():

@@ -202,3 +202,91 @@ def test_a_star_imported_helper_re_exporting_the_legacy_base_still_verifies(tmp_
                            capture_output=True, text=True, check=False, timeout=600)
     assert proof.returncode == 0, proof.stderr
     assert "1 classes, 1 equivalent, 0 not equivalent" in proof.stderr, proof.stderr
+
+
+def test_an_attribute_of_the_same_name_is_no_use_of_an_import():
+    """Issue 43: ``wmi.Element(...)`` is an attribute of another module, ``self.params`` one
+    of the instance; neither keeps ``Element`` (whose last use was migrated), and ``params``,
+    unused before as now, stays byte for byte."""
+    source = '''\
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+import skiros2_common.core.world_element as wmi
+import skiros2_common.core.params as params
+from skiros2_common.core.primitive import PrimitiveBase
+
+
+class Pick(SkillDescription):
+    def createDescription(self):
+        self.addParam("Object", Element("skiros:Product"), ParamTypes.Required)
+
+
+class pick(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Pick(), self.__class__.__name__)
+
+    def execute(self):
+        place = wmi.Element("skiros:Location", label=self.params["Object"].value.label)
+        return self.success(place.label)
+'''
+    assert_migrates(source, '''\
+from ezskiros_runtime import SkillDescription
+from ezskiros_runtime.ontology import skiros
+import skiros2_common.core.world_element as wmi
+import skiros2_common.core.params as params
+from skiros2_common.core.primitive import PrimitiveBase
+
+
+class Pick(SkillDescription):
+    def description(self,
+                    Object: skiros.Product):
+        pass
+
+
+class pick(PrimitiveBase):
+    def createDescription(self):
+        self.setDescription(Pick(), self.__class__.__name__)
+
+    def execute(self):
+        place = wmi.Element("skiros:Location", label=self.params["Object"].value.label)
+        return self.success(place.label)
+''')
+
+
+def test_a_replaced_dotted_base_takes_only_its_module_reference_with_it():
+    """``abstract_skill.SkillDescription`` refers to ``abstract_skill``, not to the imported
+    ``SkillDescription``, which the skipped ``Later`` still derives from."""
+    source = '''\
+from skiros2_common.core.abstract_skill import SkillDescription
+import skiros2_common.core.abstract_skill as abstract_skill
+from skiros2_common.core.params import ParamTypes
+
+
+class Wait(abstract_skill.SkillDescription):
+    def createDescription(self):
+        self.addParam("Duration", 1.0, ParamTypes.Required)
+
+
+class Later(SkillDescription):
+    def createDescription(self):
+        self.addParam(compute(), 1.0, ParamTypes.Required)
+'''
+    result = assert_migrates(source, '''\
+from skiros2_common.core.abstract_skill import SkillDescription
+from ezskiros_runtime import SkillDescription as EzSkillDescription
+from skiros2_common.core.params import ParamTypes
+
+
+class Wait(EzSkillDescription):
+    def description(self,
+                    Duration: float = 1.0):
+        pass
+
+
+class Later(SkillDescription):
+    def createDescription(self):
+        self.addParam(compute(), 1.0, ParamTypes.Required)
+''')
+    assert [(s.name, s.status) for s in result.skills] == [("Wait", "converted"),
+                                                           ("Later", "skipped")]

@@ -23,7 +23,7 @@ def test_or_of_two_with_children_added_after_use():
         '        self.addPreCondition(o)\n'
         '        o.addCondition(self.getPropCond("X", "skiros:PositionX", "B", ">", 0.5, True))\n'
     ), 'from ezskiros_runtime import SkillDescription\nfrom ezskiros_runtime.ontology import skiros'
-       + SIGNATURE + '        self.pre_conditions += A.contain(B) | (B.PositionX > 0.5).named("X")\n')
+       + SIGNATURE + '        self.pre_conditions += A.contain(B) | B.PositionX.gt(0.5).named("X")\n')
 
 
 def test_negated_or_and_nested_or_use_any_of():

@@ -100,3 +100,37 @@ def test_a_file_only_a_newer_python_parses_migrates_as_its_older_spelling() -> N
     assert old_result.new_source is not None
     assert new_result.new_source.replace(newer_line, older_line) == old_result.new_source
     assert "# metres per second" in new_result.new_source
+
+
+REFERENCES = '''\
+import wmi
+from skiros2_common.core.world_element import Element
+
+
+def build(ParamTypes, *, label="x"):
+    global COUNT
+    try:
+        return wmi.Element(":Location", Element=label, kind=ParamTypes)
+    except KeyError as SkillDescription:
+        return dict(SkillDescription=1)
+
+
+class Pick:
+    match COUNT:
+        case {"k": 1, **rest}:
+            pass
+        case Point(x=other) | [*others] | found:
+            pass
+'''
+
+
+def test_only_references_to_a_name_count_as_its_uses() -> None:
+    """An attribute (``wmi.Element``), a keyword (``Element=``), a parameter, a definition,
+    an ``except ... as`` or a pattern's capture spells a name without using an import of
+    it (issue 43: counting them kept unused legacy imports). Both readers agree."""
+    fast = SyntaxFacts.of(ast.parse(REFERENCES))
+    slow = facts_of(cst.parse_module(REFERENCES))
+    expected = {"COUNT": 2, "wmi": 1, "label": 1, "ParamTypes": 1, "dict": 1, "KeyError": 1,
+                "Point": 1}
+    assert dict(fast.names) == expected
+    assert {n: c for n, c in slow.names.items() if n not in CONSTANTS} == expected

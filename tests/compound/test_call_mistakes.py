@@ -42,7 +42,7 @@ def ez3(tmp_path: Path, body: str) -> list[Diagnostic]:
     path = tmp_path / "task.py"
     path.write_text(MODULE.format(body=textwrap.indent(textwrap.dedent(body).strip(),
                                                        " " * 8)), encoding="utf-8")
-    outcome = run_check([path], None, PoolConfig(workers=1))
+    outcome = run_check([path], None, PoolConfig(workers=1), trace=True)
     return [d for d in outcome.diagnostics if d.code.startswith("EZ3")]
 
 
@@ -148,11 +148,11 @@ def test_parameters_modify_description_adds_to_the_wrapper_are_declared(tmp_path
     on the wrapper; ``self.addParam`` does not, and the specify is dropped."""
     (tmp_path / "wrapper").mkdir()
     (tmp_path / "wrapper" / "paint.py").write_text(MODIFIED.format(owner="skill"))
-    found = run_check([tmp_path / "wrapper"], None, PoolConfig(workers=1)).diagnostics
+    found = run_check([tmp_path / "wrapper"], None, PoolConfig(workers=1), trace=True).diagnostics
     assert [d for d in found if d.code.startswith("EZ3")] == []
     (tmp_path / "itself").mkdir()
     (tmp_path / "itself" / "paint.py").write_text(MODIFIED.format(owner="self"))
-    found = run_check([tmp_path / "itself"], None, PoolConfig(workers=1)).diagnostics
+    found = run_check([tmp_path / "itself"], None, PoolConfig(workers=1), trace=True).diagnostics
     [dropped] = [d for d in found if d.code.startswith("EZ3")]
     assert dropped.code == "EZ307" and "'Pressure'" in dropped.message
     assert "modifyDescription to itself" in dropped.message
@@ -234,7 +234,7 @@ def test_a_remap_onto_a_key_modify_description_adds_depends_on_the_label(
     every node of its description (issue 30, a lab's navigate_and_open_doors)."""
     path = tmp_path / "tour.py"
     path.write_text(TWO_IMPLEMENTATIONS.replace("LABEL", label), encoding="utf-8")
-    outcome = run_check([path], None, PoolConfig(workers=1))
+    outcome = run_check([path], None, PoolConfig(workers=1), trace=True)
     assert codes([d for d in outcome.diagnostics if d.code.startswith("EZ3")]) == expected
 
 

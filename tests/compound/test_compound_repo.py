@@ -22,7 +22,8 @@ MARKER = re.compile(r"# expect: (EZ\d{3}(?:, EZ\d{3})*)")
 
 def _check(*args: str | Path) -> list[dict[str, object]]:
     run = subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--output-format",
-                          "json", "--exit-zero", *map(str, args)], capture_output=True,
+                          "json", "--exit-zero", "--trace", *map(str, args)],
+                         capture_output=True,
                          text=True, timeout=300)
     assert run.returncode == 0, run.stderr
     return json.loads(run.stdout)

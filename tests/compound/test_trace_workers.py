@@ -53,7 +53,7 @@ def test_one_worker_per_so_many_files_at_most_the_pools(count, workers, expected
 def test_a_few_trees_are_traced_by_one_worker(tmp_path: Path, monkeypatch):
     _three_trees(tmp_path)
     spawned = _spawns_noted(monkeypatch)
-    outcome = run_check([tmp_path], None, PoolConfig(workers=2))
+    outcome = run_check([tmp_path], None, PoolConfig(workers=2), trace=True)
     traced = sorted(Path(d.path).name for d in outcome.diagnostics if d.code == "EZ309")
     assert traced == ["task0.py", "task1.py", "task2.py"]  # each tree traced, mistake found
     assert len(spawned) == 1
@@ -86,7 +86,8 @@ def test_a_worker_started_ahead_traces_the_run(tmp_path: Path, monkeypatch):
     assert tracing is not None and len(spawned) == 1 and "--ontology-later" in spawned[0]
     try:
         tracing.use_ontology(())
-        outcome = run_check([tmp_path], None, PoolConfig(workers=2), tracing=tracing)
+        outcome = run_check([tmp_path], None, PoolConfig(workers=2), tracing=tracing,
+                            trace=True)
     finally:
         tracing.close()
     traced = sorted(Path(d.path).name for d in outcome.diagnostics if d.code == "EZ309")
@@ -123,7 +124,7 @@ def test_the_trees_to_trace_are_traced_once_the_reading_ends(tmp_path: Path, mon
         return real(jobs, *rest, **named)  # type: ignore[arg-type]
 
     monkeypatch.setattr(tracing, "trace_all", noted)
-    outcome = run_check([tmp_path], None, PoolConfig(workers=2))
+    outcome = run_check([tmp_path], None, PoolConfig(workers=2), trace=True)
     assert asked == [["task0.py", "task1.py", "task2.py"]]
     traced = sorted(Path(d.path).name for d in outcome.diagnostics if d.code == "EZ309")
     assert traced == ["task0.py", "task1.py", "task2.py"]

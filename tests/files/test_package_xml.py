@@ -21,6 +21,7 @@ from catkin_pkg.package import InvalidPackage, Package, parse_package_string
 from ezmigrate.files.package_xml import (
     OLD_ROSDEP_KEY,
     RUNTIME_PACKAGE,
+    ManifestRefused,
     manifest_format,
     runtime_depend,
     with_runtime_depend,
@@ -170,12 +171,120 @@ def test_what_is_commented_out_neither_declares_nor_anchors():
     assert _runtime_dependencies(_parsed(new)) == [RUNTIME_PACKAGE]
 
 
-def test_what_is_no_manifest_or_the_runtimes_own_is_left_alone():
-    assert with_runtime_depend(b"<not-a-package/>") is None
-    assert with_runtime_depend(b"<package>\n  <name>x</name>") is None  # no </package>
-    assert with_runtime_depend(b"<package><name>x</name></package>") is None  # no line
+def test_the_runtimes_own_manifest_is_left_alone():
     runtime = ROOT / "ros" / "ezskiros_runtime" / "package.xml"
     assert with_runtime_depend(runtime.read_bytes()) is None  # no package needs itself
+
+
+@pytest.mark.parametrize("data", [b"<not-a-package/>", b"<package>\n  <name>x</name>",
+                                  b'<package format="9"><name>x</name></package>'],
+                         ids=["other root", "no </package>", "unknown format"])
+def test_what_is_no_manifest_is_refused_not_guessed_at(data):
+    with pytest.raises(ManifestRefused):
+        with_runtime_depend(data)
+
+
+def _inserted(old: bytes, new: bytes, element: bytes) -> bytes:
+    """The one run of bytes, ``element`` with blanks and line breaks around it, that ``new``
+    adds to ``old``: every byte of ``old`` is kept, in order."""
+    at = new.index(element)
+    spans = [(start, end) for start in range(max(0, at - 16), at + 1)
+             for end in range(at + len(element), at + len(element) + 4)
+             if new[:start] + new[end:] == old and not new[start:end].replace(element, b"").strip()]
+    assert spans, (old, new)
+    return new[spans[0][0]:spans[0][1]]
+
+
+def _one_line(attribute: str, body: str) -> bytes:
+    """A manifest whose mandatory elements share the line of ``<package>``, ``body`` after
+    them (the issue's cases)."""
+    head = "".join(HEAD)
+    return f'<?xml version="1.0"?>\n<package{attribute}>{head}{body}\n'.encode()
+
+
+ONE_LINE_CASES = {
+    # the issue's manifests: each valid, each came out wrong when edited by lines of text
+    "closing tag on the dependency's line": (
+        ' format="2"', "\n  <buildtool_depend>catkin</buildtool_depend>\n"
+                       "  <exec_depend>rospy</exec_depend></package>"),
+    "comment opening on the last dependency's line": (
+        ' format="2"', "\n  <buildtool_depend>catkin</buildtool_depend>\n"
+                       "  <exec_depend>rospy</exec_depend> <!-- was:\n"
+                       "  <exec_depend>python-yaml</exec_depend>\n  -->\n</package>"),
+    "the whole manifest on one line": ("", "</package>"),
+    "one line with a dependency": ("", "<run_depend>rospy</run_depend></package>"),
+    "one line, closing tag on a line of its own": ("", "\n</package>"),
+    "CDATA holding what looks like elements": (
+        ' format="2"', "\n  <exec_depend>rospy</exec_depend>\n"
+                       "  <export><![CDATA[<exec_depend>x</exec_depend></package>]]></export>\n"
+                       "</package>"),
+}
+
+
+@pytest.mark.parametrize("case", list(ONE_LINE_CASES), ids=list(ONE_LINE_CASES))
+def test_the_line_goes_where_catkin_reads_it_whatever_shares_its_line(case):
+    old = _one_line(*ONE_LINE_CASES[case])
+    before = _parsed(old)
+    new = with_runtime_depend(old)
+    assert new is not None
+    _inserted(old, new, (runtime_depend(old) or "").encode())  # one element, nothing else
+    after = _parsed(new)
+    assert _runtime_dependencies(after) == [RUNTIME_PACKAGE]
+    assert [d.name for d in after.exec_depends if d.name != RUNTIME_PACKAGE] == [
+        d.name for d in before.exec_depends]  # a commented-out dependency stays commented
+    assert with_runtime_depend(new) is None
+
+
+def _evaluated(data: bytes, ros_version: str) -> list[str]:
+    """The exec dependencies catkin gives a build for ``ros_version``."""
+    package = _parsed(data)
+    package.evaluate_conditions({"ROS_VERSION": ros_version, "ROS_PYTHON_VERSION": "3"})
+    return [d.name for d in package.exec_depends if d.evaluated_condition]
+
+
+ROS1 = "<buildtool_depend>catkin</buildtool_depend>"
+ROS2 = "<buildtool_depend>ament_python</buildtool_depend>"
+
+
+@pytest.mark.parametrize(("tool", "condition", "version", "declared"), [
+    (ROS1, "$ROS_VERSION == 2", "1", False),
+    (ROS1, "$ROS_VERSION == 1", "1", True),
+    (ROS2, "$ROS_VERSION == 2", "2", True),
+    (ROS2, "$ROS_VERSION == 1", "2", False),
+    (ROS1, "$ROS_VERSION != 2", "1", True),
+    (ROS1, "$ROS_VERSION == 2 or $ROS_PYTHON_VERSION == 3", "1", True),
+    (ROS1, "($ROS_VERSION == 2 or $ROS_VERSION == 3) and $ROS_PYTHON_VERSION == 3", "1", False),
+    (ROS1, "$ROS_DISTRO == noetic", "1", False),  # a distribution this run cannot know
+], ids=lambda value: str(value))
+def test_a_conditional_dependency_counts_for_the_ros_versions_it_admits(
+        tool, condition, version, declared):
+    old = _manifest(' format="3"', [tool, f'<exec_depend condition="{condition}">'
+                                          f"{RUNTIME_PACKAGE}</exec_depend>"])
+    assert (RUNTIME_PACKAGE in _evaluated(old, version)) == declared  # what catkin says
+    new = with_runtime_depend(old)
+    assert (new is None) == declared
+    if new is not None:
+        _added(old, new)
+        assert RUNTIME_PACKAGE in _evaluated(new, version)
+
+
+def test_a_package_built_for_both_needs_the_runtime_for_both():
+    both = ['<buildtool_depend condition="$ROS_VERSION == 1">catkin</buildtool_depend>',
+            '<buildtool_depend condition="$ROS_VERSION == 2">ament_python</buildtool_depend>']
+    only_2 = _manifest(' format="3"', [*both, '<exec_depend condition="$ROS_VERSION == 2">'
+                                              f"{RUNTIME_PACKAGE}</exec_depend>"])
+    assert with_runtime_depend(only_2) is not None
+    each = only_2.replace(b"</package>", b'  <exec_depend condition="$ROS_VERSION == 1">'
+                          + RUNTIME_PACKAGE.encode() + b"</exec_depend>\n</package>")
+    assert with_runtime_depend(each) is None
+
+
+def test_a_line_catkin_would_refuse_is_not_written_and_the_refusal_says_why():
+    old = _manifest("", [ROS1, "<run_depend>rospy</run_depend>",
+                         f"<test_depend>{RUNTIME_PACKAGE}</test_depend>"])
+    _parsed(old)  # valid as it is; a run_depend beside it is "redundant" to catkin
+    with pytest.raises(ManifestRefused, match="catkin_pkg would refuse"):
+        with_runtime_depend(old)
 
 
 @pytest.mark.parametrize("path", SHIPPED, ids=lambda p: p.parent.relative_to(ROOT).as_posix())
@@ -231,3 +340,20 @@ def test_rewrite_writes_run_depend_into_a_format_1_package_and_says_so(tmp_path)
     assert off.returncode == 0, off.stderr
     assert (kept / "package.xml").read_bytes() == old
     assert "ezskiros_runtime" in (kept / "src" / "cell_skills" / "skills.py").read_text()
+
+
+def test_rewrite_names_a_manifest_it_cannot_edit_safely_and_leaves_it_as_it_was(tmp_path):
+    package = tmp_path / "cell_skills"
+    (package / "src" / "cell_skills").mkdir(parents=True)
+    (package / "src" / "cell_skills" / "skills.py").write_text(LEGACY, encoding="utf-8")
+    old = _manifest("", [ROS1, "<run_depend>rospy</run_depend>",
+                         f"<test_depend>{RUNTIME_PACKAGE}</test_depend>"])
+    (package / "package.xml").write_bytes(old)
+    run = _rewrite(package)
+    assert run.returncode == 1, run.stderr  # a file the run could not process
+    said = [line for line in run.stderr.splitlines() if "package.xml" in line]
+    assert said and all("left as it was" in line for line in said), run.stderr
+    assert str(package / "package.xml") in said[0]
+    assert "</run_depend> added" not in run.stderr
+    assert (package / "package.xml").read_bytes() == old
+    assert "ezskiros_runtime" in (package / "src" / "cell_skills" / "skills.py").read_text()

@@ -1,7 +1,8 @@
 """One minimal file per finding code that triggers it, and a near-miss that does not.
 
 Legacy files go through the real static pass (the codemod's reader and the runtime's
-checks on the extracted trace); EzSkiROS files are loaded by the real isolated child.
+checks on the extracted trace); EzSkiROS files are read from their syntax and checked by
+the runtime's checks, as ``check`` does without ``--trace``.
 """
 
 from __future__ import annotations
@@ -127,8 +128,7 @@ CASES: dict[str, tuple[str, str]] = {
               tree(f'self.skill("Child", "", {TARGET})')),
     "EZ312": (tree(f'self.skill("Bin", "", {TARGET})'), tree(f'self.skill("Child", "", {TARGET})')),
     "EZ313": (tree(expand='skill(self.skill("Child", "", remap={"Target": self.wmi.box}))'),
-              tree(expand='for key in ("Box",):\n'
-                   '            skill(self.skill("Child", "", remap={"Target": key}))')),
+              tree(expand='skill(self.skill("Child", "", remap={"Target": "Box"}))')),
     "EZ101": (legacy(f'self.addParam("Speed", 0.1, {REQ}, "metres per second")'),
               legacy(f'self.addParam("Speed", 0.1, {REQ}, description="metres per second")')),
     "EZ102": (legacy(f'self.addParam("Speed", 0.1, {REQ}, [ParamOptions.Lock])'),
@@ -192,7 +192,7 @@ CASES: dict[str, tuple[str, str]] = {
               legacy(f'self.addParam("A", 0.1, {REQ})\nself.addParam("B", 0.1, {REQ})')),
     "EZ905": (legacy(f'self.addParam("Speed", 0.1, {REQ}') + "class Broken(:\n",
               legacy(f'self.addParam("Speed", 0.1, {REQ})')),
-    # EzSkiROS files: loaded in the isolated child, as the runtime reports them
+    # EzSkiROS files: read from their syntax, checked as the runtime checks them
     "EZ106": (ezskiros("def description(self, Speed: float = 1):\n    pass"),
               ezskiros("def description(self, Speed: float = 1.0):\n    pass")),
     "EZ108": (ezskiros("def description(self, *args):\n    pass"),
@@ -201,9 +201,13 @@ CASES: dict[str, tuple[str, str]] = {
                        "    self.pre_conditions += A.near(B)"),
               ezskiros("def description(self, A: skiros.Location, B: skiros.Location):\n"
                        "    self.pre_conditions += A.relation('skiros:near', B)")),
-    "EZ904": ('raise RuntimeError("this module cannot load")\n' + ezskiros(
-                  "def description(self, Speed: float = 1.0):\n    pass"),
-              ezskiros("def description(self, Speed: float = 1.0):\n    pass")),
+    "EZ904": (ezskiros("def description(self, Box: skiros.Locaton):\n    pass"),
+              ezskiros("def description(self, Box: skiros.Location):\n    pass")),
+    "EZ907": (ezskiros("def description(self, A: skiros.Location, B: skiros.Location):\n"
+                       "    for other in (B,):\n"
+                       "        self.pre_conditions += A.contain(other)"),
+              ezskiros("def description(self, A: skiros.Location, B: skiros.Location):\n"
+                       "    self.pre_conditions += A.contain(B)")),
 }
 NOT_FROM_CHECK = {
     "EZ100": "tested with the suppression comments (test_check_formats.py)",

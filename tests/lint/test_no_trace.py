@@ -1,10 +1,13 @@
-"""``check --no-trace`` imports no user code: neither EzSkiROS files (loaded to run their
-checks) nor compound skills (traced when the syntax cannot give their tree). Without it,
-both are imported, in the sandbox; each module here leaves a marker when it is imported."""
+"""``check`` imports no repository code unless told (``--trace``): an EzSkiROS file is read
+from its syntax, a compound skill whose tree the syntax cannot give is reported as unread.
+With ``--trace`` both are imported, in the sandbox. Each module here writes a marker file
+when it is imported, and the compound skill's ``expand`` writes one when it runs; the
+marker paths are literal in the modules, so no environment variable is needed to reach
+them."""
 
 from __future__ import annotations
 
-import os
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -13,12 +16,13 @@ import pytest
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
 
-MARK = '''import os
-if os.environ.get("EZMIGRATE_TEST_MARKER"):
-    open(os.path.join(os.environ["EZMIGRATE_TEST_MARKER"], __name__), "w").close()
-'''
 
-COMPOUND = MARK + '''from skiros2_skill.core.skill import SerialStar, SkillBase
+def _mark(markers: Path, name: str) -> str:
+    return f"open({str(markers / name)!r}, 'w').close()\n"
+
+
+def _compound(markers: Path) -> str:
+    return _mark(markers, "tasks-imported") + f'''from skiros2_skill.core.skill import SerialStar, SkillBase
 from skiros2_common.core.abstract_skill import SkillDescription
 
 STEPS = ("Wait", "Wait")
@@ -34,6 +38,7 @@ class tidy(SkillBase):
         self.setDescription(Tidy(), self.__class__.__name__)
 
     def expand(self, skill):
+        open({str(markers / "expand-ran")!r}, "w").close()
         skill.setProcessor(SerialStar())
         for name in STEPS:
             skill(self.skill(name, ""))
@@ -44,30 +49,53 @@ class tidy(SkillBase):
 def repo(tmp_path: Path) -> Path:
     root = tmp_path / "repo"
     root.mkdir()
+    markers = tmp_path / "markers"
+    markers.mkdir()
     migrated = (FIXTURES / "migrated" / "pick_and_place.py").read_text(encoding="utf-8")
-    (root / "ez_skills.py").write_text(MARK + migrated, encoding="utf-8")
-    (root / "tasks.py").write_text(COMPOUND, encoding="utf-8")
+    (root / "ez_skills.py").write_text(_mark(markers, "ez_skills-imported") + migrated,
+                                       encoding="utf-8")
+    (root / "tasks.py").write_text(_compound(markers), encoding="utf-8")
     return root
 
 
-def _check(repo: Path, markers: Path, *extra: str) -> subprocess.CompletedProcess[str]:
-    markers.mkdir(exist_ok=True)
-    env = dict(os.environ, EZMIGRATE_TEST_MARKER=str(markers))
+def _check(repo: Path, *extra: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero",
-                           "--no-cache", *extra, "."], cwd=repo, env=env, capture_output=True,
-                          text=True, timeout=600, check=False)
+                           "--no-cache", "--output-format", "json", *extra, "."], cwd=repo,
+                          capture_output=True, text=True, timeout=600, check=False)
 
 
-def test_no_trace_imports_nothing_and_says_what_it_left(repo: Path, tmp_path: Path) -> None:
-    run = _check(repo, tmp_path / "none", "--no-trace")
+def _markers(repo: Path) -> list[str]:
+    return sorted(p.name for p in (repo.parent / "markers").iterdir())
+
+
+def test_check_runs_no_repository_code_and_says_what_it_left(repo: Path) -> None:
+    run = _check(repo)
     assert run.returncode == 0, run.stderr
-    assert sorted(p.name for p in (tmp_path / "none").iterdir()) == []
-    assert "1 EzSkiROS file(s) not loaded (--no-trace)" in run.stderr
-    assert "--no-trace keeps its module from being imported" in run.stdout
+    assert _markers(repo) == []
+    found = json.loads(run.stdout)
+    unread = [d for d in found if d["code"] == "EZ313"]
+    assert len(unread) == 1 and "check --trace runs it" in unread[0]["message"]
+    assert unread[0]["path"].endswith("tasks.py")
 
 
-def test_without_it_both_are_imported_in_the_sandbox(repo: Path, tmp_path: Path) -> None:
-    run = _check(repo, tmp_path / "all")
+def test_with_trace_both_are_imported_and_expand_runs(repo: Path) -> None:
+    run = _check(repo, "--trace")
     assert run.returncode == 0, run.stderr
-    imported = sorted(p.name.rpartition(".")[2] for p in (tmp_path / "all").iterdir())
-    assert imported == ["ez_skills", "tasks"]  # (module names as the sandbox gives them)
+    assert _markers(repo) == ["expand-ran", "ez_skills-imported", "tasks-imported"]
+
+
+def test_the_ezskiros_findings_are_those_loading_gives(repo: Path) -> None:
+    """The descriptions read from the syntax give what loading them gives: same findings
+    of the EzSkiROS file, line for line, with and without ``--trace``."""
+    (repo / "ez_skills.py").write_text(
+        (repo / "ez_skills.py").read_text(encoding="utf-8")
+        .replace("skiros.Location", "skiros.Locaton", 1), encoding="utf-8")
+    static, loaded = _check(repo), _check(repo, "--trace")
+
+    def of_file(run: subprocess.CompletedProcess[str]) -> list[tuple[int, str, str]]:
+        # the sandbox names the file by its absolute path, the static reading as given
+        return sorted((d["line"], d["code"], d["message"].replace(f"{repo}/", ""))
+                      for d in json.loads(run.stdout) if d["path"].endswith("ez_skills.py"))
+
+    assert of_file(static) == of_file(loaded)
+    assert of_file(static), "the mistyped class must be found"

@@ -8,8 +8,22 @@ import sys
 from pathlib import Path
 
 
+def user_cache(repo: Path) -> Path:
+    """The cache folder of the tests' runs on ``repo`` (``--cache-dir``), beside it."""
+    return repo.parent / "user-cache"
+
+
+def entries(repo: Path) -> Path:
+    """The folder of ``repo``'s entries in ``user_cache``."""
+    from ezmigrate.project.cache_folder import project_folder
+
+    return project_folder(user_cache(repo), repo)
+
+
 def check_json(repo: Path, *extra: str) -> subprocess.CompletedProcess[str]:
-    """``ezmigrate check --exit-zero --output-format json [extra] .`` in ``repo``."""
+    """``ezmigrate check --exit-zero --output-format json [extra] .`` in ``repo``, its
+    cache in ``user_cache``."""
     return subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--exit-zero",
-                           "--output-format", "json", *extra, "."], cwd=repo,
+                           "--output-format", "json", "--cache-dir", str(user_cache(repo)),
+                           *extra, "."], cwd=repo,
                           capture_output=True, text=True, timeout=600, check=False)

@@ -3,13 +3,14 @@ next run reads that file again, and the files that depend on it, and nothing els
 its findings are those of a run without a cache.
 
 What is read again is observed, not timed: the real reading functions are wrapped to note
-the files they are given (their work is unchanged). The kept entries are signed with a key
-of this user's: a pack another key signed is never unpickled.
+the files they are given (their work is unchanged). The kept entries are JSON signed with a
+key of this user's cache folder: a pack another key signed, or one naming a class that is
+not ours, is a miss.
 """
 
 from __future__ import annotations
 
-import pickle
+import json
 import subprocess
 from pathlib import Path
 
@@ -18,9 +19,10 @@ import pytest
 from ezmigrate.lint.diagnostic import Diagnostic
 from ezmigrate.project import facts_cache, reading_pool
 from ezmigrate.project import settle as settle_module
-from ezmigrate.project.cache_folder import FOLDER
+from ezmigrate.project.cache_folder import Store, project_folder, user_key
 from ezmigrate.project.check import run_check
-from ezmigrate.project.facts_cache import KEY_DIR, PACK, FactsCache
+from ezmigrate.project.facts_cache import PACK, FactsCache
+from ezmigrate.project.facts_codec import CodecError, decode, encode
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.index import bundled_ontology_path
 from ezskiros_runtime.ontology.load import load_index
@@ -76,11 +78,9 @@ skiros:Location-1 a skiros:Location, owl:NamedIndividual .
 
 
 @pytest.fixture
-def own_key(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+def own_key(tmp_path: Path) -> Path:
     """This test's user cache folder, where the signing key is made."""
-    home = tmp_path / "user-cache"
-    monkeypatch.setenv(KEY_DIR, str(home))
-    return home
+    return tmp_path / "user-cache"
 
 
 @pytest.fixture
@@ -125,11 +125,15 @@ class Reads:
         self.parsed, self.settled, self.scenes = [], [], []
 
 
+def _folder(repo: Path) -> Path:
+    return project_folder(repo.parent / "user-cache", repo)
+
+
 def _run(repo: Path, cached: bool) -> list[Diagnostic]:
     scene_module._KNOWN.clear()  # each run as a new process starts: nothing parsed yet
     index = load_index([bundled_ontology_path()])
     outcome = run_check([repo], index, PoolConfig(workers=1),
-                        cache_dir=repo / FOLDER if cached else None)
+                        cache_dir=_folder(repo) if cached else None)
     return outcome.diagnostics
 
 
@@ -175,55 +179,43 @@ def test_a_changed_base_reads_the_files_deriving_from_it_again(
     assert derived == [d for d in uncached if d.path.endswith("derived.py")]
 
 
-def test_a_pack_signed_with_another_key_is_never_unpickled(repo: Path, own_key: Path,
-                                                           tmp_path: Path,
-                                                           monkeypatch: pytest.MonkeyPatch
-                                                           ) -> None:
-    """A pack committed to the checkout (or left by another user) is ignored: unpickling it
-    would run what it says (here: write a marker file)."""
+def test_a_pack_signed_with_another_key_is_a_miss(repo: Path, own_key: Path,
+                                                  tmp_path: Path) -> None:
+    """A pack made by somebody else (another user's key, or a file planted in the cache
+    folder) is ignored, even when it holds readings of our own classes."""
     _run(repo, cached=True)
-    pack = repo / FOLDER / PACK
+    pack = _folder(repo) / PACK
     assert pack.exists()
-    marker = tmp_path / "unpickled.marker"
-    hostile = pickle.dumps(_Hostile(str(marker)))
-    monkeypatch.setenv(KEY_DIR, str(tmp_path / "somebody-else"))
-    stranger = FactsCache.open(repo / FOLDER)
-    assert stranger is not None
-    pack.write_bytes(stranger._sign(hostile) + hostile)  # a valid pack, for their key
-    monkeypatch.setenv(KEY_DIR, str(own_key))
-    mine = FactsCache.open(repo / FOLDER)
-    assert mine is not None and not marker.exists()
-    assert mine.get(FactsCache.key("anything")) is None
+    mine = FactsCache.open(_folder(repo))
+    assert mine is not None and mine._old  # what the first run kept is read back
+    stranger = Store(_folder(repo), b"another key of 32 bytes, not ours")
+    stranger.write(PACK, pack.read_bytes().split(b"\n", 1)[1])
+    assert FactsCache.open(_folder(repo))._old == {}  # type: ignore[union-attr]
     assert _run(repo, cached=True) == _run(repo, cached=False)  # the run reads everything
 
 
-class _Hostile:
-    def __init__(self, path: str) -> None:
-        self.path = path
-
-    def __reduce__(self) -> tuple[object, tuple[str, str]]:
-        return (Path.write_text, (Path(self.path), "ran"))  # type: ignore[return-value]
+def test_the_codec_makes_nothing_but_our_own_readings(tmp_path: Path) -> None:
+    """Decoding never calls what the data names: a class outside our packages, a function
+    or a name that is no class is refused, and so is a field a dataclass does not have."""
+    marker = tmp_path / "ran.marker"
+    for forged in ({"c": "os:system", "f": {}},
+                   {"c": "pathlib:Path", "f": {"_raw_paths": [str(marker)]}},
+                   {"c": "ezmigrate.project.facts_codec:decode", "f": {}},
+                   {"c": "ezmigrate.lint.diagnostic:Diagnostic", "f": {"__class__": 1}}):
+        with pytest.raises(CodecError):
+            decode(json.loads(json.dumps(forged)))
+    assert not marker.exists()
+    index = load_index([bundled_ontology_path()])
+    found = run_check([Path(__file__).parents[2] / "fixtures" / "legacy"], index,
+                      PoolConfig(workers=1)).diagnostics
+    assert decode(json.loads(json.dumps(encode(found)))) == found
 
 
 def test_without_a_key_there_is_no_cache_and_the_same_findings(
-        repo: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    blocked = tmp_path / "not-a-folder"
+        repo: Path, tmp_path: Path) -> None:
+    blocked = tmp_path / "user-cache"
     blocked.write_text("a file where the cache folder would be", encoding="utf-8")
-    monkeypatch.setenv(KEY_DIR, str(blocked))
-    assert facts_cache._user_key() is None
-    assert FactsCache.open(repo / FOLDER) is None
+    assert user_key(blocked) is None
+    assert FactsCache.open(_folder(repo)) is None
     assert _run(repo, cached=True) == _run(repo, cached=False)
-    assert not (repo / FOLDER / PACK).exists()
-
-
-def test_the_key_lives_in_the_users_cache_folder_unless_a_folder_is_named(
-        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.delenv(KEY_DIR, raising=False)
-    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
-    made = facts_cache._user_key()
-    assert made is not None
-    assert (tmp_path / "xdg" / "ezmigrate" / "key").read_text(encoding="ascii") == made.hex()
-    monkeypatch.setenv(KEY_DIR, str(tmp_path / "named"))
-    other = facts_cache._user_key()
-    assert other is not None and other != made
-    assert (tmp_path / "named" / "key").read_text(encoding="ascii") == other.hex()
+    assert not (_folder(repo) / PACK).exists()

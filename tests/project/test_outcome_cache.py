@@ -12,9 +12,8 @@ import subprocess
 import sys
 from pathlib import Path
 
-from cache_support import check_json
+from cache_support import check_json, entries
 
-from ezmigrate.project.cache_folder import FOLDER
 from ezmigrate.project.outcome_cache import OUTCOMES
 
 TRACED = '''\
@@ -62,32 +61,32 @@ def _repo(tmp_path: Path) -> Path:
 def test_an_unchanged_repository_is_answered_from_the_kept_run(tmp_path: Path) -> None:
     repo = _repo(tmp_path)
     marker = repo / "pkg" / "traced.marker"
-    first = check_json(repo)
+    first = check_json(repo, "--trace")
     assert first.returncode == 0, first.stderr
     assert "EZ307" in first.stdout and marker.exists()  # the tree was traced
-    assert len(list((repo / FOLDER / OUTCOMES).glob("*.json"))) == 1
+    assert len(list((entries(repo) / OUTCOMES).glob("*.json"))) == 1
     marker.unlink()
-    second = check_json(repo)
+    second = check_json(repo, "--trace")
     assert (second.stdout, second.stderr) == (first.stdout, first.stderr)
     assert not marker.exists()  # nothing was traced again
-    uncached = check_json(repo, "--no-cache")
+    uncached = check_json(repo, "--trace", "--no-cache")
     assert uncached.stdout == first.stdout and marker.exists()
 
 
 def test_what_the_run_reads_is_the_key(tmp_path: Path) -> None:
     repo = _repo(tmp_path)
-    first = check_json(repo)
+    first = check_json(repo, "--trace")
     (repo / "scene.turtle").write_text(SCENE.format(extra=" ;\n    skiros:hasA skiros:Gone-9"),
                                        encoding="utf-8")
-    changed = check_json(repo)
+    changed = check_json(repo, "--trace")
     assert "EZ404" in changed.stdout and "EZ404" not in first.stdout
     (repo / "pkg" / "tour.py").write_text(TRACED.replace('"Time"', '"Duration"'),
                                           encoding="utf-8")
-    fixed = check_json(repo)
+    fixed = check_json(repo, "--trace")
     assert "EZ307" not in fixed.stdout
-    for entry in (repo / FOLDER / OUTCOMES).glob("*.json"):
+    for entry in (entries(repo) / OUTCOMES).glob("*.json"):
         entry.write_text("{not json")  # a damaged entry is a miss, and the run is redone
-    assert check_json(repo).stdout == fixed.stdout
+    assert check_json(repo, "--trace").stdout == fixed.stdout
 
 
 def test_a_run_over_named_files_is_not_kept(tmp_path: Path) -> None:
@@ -96,4 +95,4 @@ def test_a_run_over_named_files_is_not_kept(tmp_path: Path) -> None:
                           "pkg/tour.py"], cwd=repo, capture_output=True,
                          text=True, timeout=600, check=False)
     assert run.returncode == 0, run.stderr
-    assert not (repo / FOLDER / OUTCOMES).exists()
+    assert not (entries(repo) / OUTCOMES).exists()

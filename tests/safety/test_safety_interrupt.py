@@ -41,17 +41,18 @@ pytestmark = pytest.mark.slow
 
 COPIES = 3
 WORKER_MARK = "317.25"  # an unusual --timeout: lets the test find this run's workers
-IMPORT_HOLD = "EZMIGRATE_TEST_IMPORT_HOLD"
+IMPORT_HOLD = ".hold"
 HOLDING_MODULE = "waits_for_the_test.py"
-"""A legacy skill module whose import, when IMPORT_HOLD names a folder, says so there
-(``imported``) and waits for ``go``: a verification child loading it holds the run in its
-verification phase for as long as the test needs."""
-_HOLDING_PREAMBLE = f"""import os as _os
-import pathlib as _pathlib
+"""A legacy skill module whose import, when the folder IMPORT_HOLD is beside it, says so
+there (``imported``) and waits for ``go``: a verification child loading it holds the run
+in its verification phase for as long as the test needs. (A folder, not an environment
+variable: the child gets none of the test's variables; a hidden folder, which ``rewrite``
+never enters.)"""
+_HOLDING_PREAMBLE = f"""import pathlib as _pathlib
 import time as _time
 
-_HOLD = _os.environ.get("{IMPORT_HOLD}")
-if _HOLD:
+_HOLD = _pathlib.Path(__file__).with_name("{IMPORT_HOLD}")
+if _HOLD.is_dir():
     _pathlib.Path(_HOLD, "imported").touch()
     while not _pathlib.Path(_HOLD, "go").exists():
         _time.sleep(0.005)
@@ -170,7 +171,8 @@ def test_interrupted_run_leaves_old_or_new_files_and_a_second_run_finishes(
         args.append("--no-verify")
     env = dict(os.environ)
     if point == "verifying":  # the holding module's import, in a verification child
-        env[IMPORT_HOLD] = str(hold)
+        hold = folder / IMPORT_HOLD
+        hold.mkdir()
         reached, release = hold / "imported", hold / "go"
     else:
         env.update(EZMIGRATE_HOLD_DIR=str(hold), EZMIGRATE_HOLD_AT=point)
@@ -188,6 +190,8 @@ def test_interrupted_run_leaves_old_or_new_files_and_a_second_run_finishes(
         if process.poll() is None:
             process.kill()
             process.wait()
+    if hold.parent == folder:  # the holding module's folder is no file of the tree
+        shutil.rmtree(hold)
 
     note = f"(held at {point}; stderr: {stderr[-2000:]})"
     assert process.returncode == 128 + signum, note

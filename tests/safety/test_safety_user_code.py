@@ -7,6 +7,7 @@ finishes, and the hostile file is left as it was.
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 import time
@@ -171,42 +172,50 @@ def test_dry_run_without_verification_runs_no_user_code_even_when_hostile(tmp_pa
 
 FORKS = """
 import time
+_held = os.open({fifo!r}, os.O_WRONLY | os.O_NONBLOCK)
 if os.fork() == 0:  # a daemon started at import; it never ends by itself
-    with open({mark!r}, "a") as handle:
-        handle.write(f"{{os.getpid()}}\\n")
+    os.write(_held, b"x")  # and it holds the FIFO open while it lives
     while True:
         time.sleep(0.05)
+os.close(_held)
 {tail}"""
-
-
-def _alive(pid: int) -> bool:
-    try:
-        stat = open(f"/proc/{pid}/stat").read()  # noqa: SIM115
-    except OSError:
-        return False
-    return stat[stat.rindex(")") + 2] != "Z"
 
 
 @pytest.mark.parametrize(("tail", "verdict", "timeout"),
                          [("while True:\n    pass\n", "timeout", "3"),
                           ("", "converted", "120")])  # a load that must end: never timed
 def test_processes_a_module_forks_do_not_outlive_its_load(tmp_path, tail, verdict, timeout):
-    """Each child leads its own process group; the whole group is killed when its load
-    ends, by timeout or normally, so a module's forks leave no orphan behind."""
-    folder, mark = tmp_path / "tree", tmp_path / "forked.pids"
+    """Whatever a module forks is killed when its load ends, by timeout or normally (the
+    child's PID namespace, or else its process group), so it leaves no orphan behind. A
+    daemon holds the write end of a FIFO the test reads: its death is the FIFO's end of
+    file (PIDs would not do: inside its namespace the daemon's PID is not the host's)."""
+    folder, fifo = tmp_path / "tree", tmp_path / "held"
     folder.mkdir()
+    os.mkfifo(fifo)
+    reader = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)
     (folder / "forks.py").write_text(
-        HEADER.format(name="Forks") + FORKS.format(mark=str(mark), tail=tail),
+        HEADER.format(name="Forks") + FORKS.format(fifo=str(fifo), tail=tail),
         encoding="utf-8")
     report = tmp_path / "r.json"
-    run = cli("rewrite", folder, "--dry-run", "--timeout", timeout, "--report", report,
-              timeout=300)
-    assert_no_traceback(run.stderr)
-    skills = json.loads(report.read_text(encoding="utf-8"))["skills"]
-    assert verdict in " ".join(f"{s['status']} {s['reason']}" for s in skills), skills
-    pids = [int(line) for line in mark.read_text().split()]
-    assert pids, "the module forked"
-    deadline = time.monotonic() + 5
-    while any(map(_alive, pids)) and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert not any(map(_alive, pids)), f"orphans of the module: {pids}"
+    try:
+        run = cli("rewrite", folder, "--dry-run", "--timeout", timeout, "--report", report,
+                  timeout=300)
+        assert_no_traceback(run.stderr)
+        skills = json.loads(report.read_text(encoding="utf-8"))["skills"]
+        assert verdict in " ".join(f"{s['status']} {s['reason']}" for s in skills), skills
+        written = b""
+        deadline = time.monotonic() + 5  # a bound on failure: the kill is done on return
+        while time.monotonic() < deadline:
+            try:
+                chunk = os.read(reader, 64)
+            except BlockingIOError:  # a writer still lives
+                time.sleep(0.05)
+                continue
+            if not chunk:
+                break
+            written += chunk
+        else:
+            pytest.fail("a process the module forked outlived its load")
+        assert written.startswith(b"x"), "the module forked"
+    finally:
+        os.close(reader)

@@ -88,9 +88,10 @@ def test_without_one_the_oldest_newer_one_that_compiles_the_file_is_used(tmp_pat
     assert run.returncode == 0, run.stderr
     assert data["skills"][0]["status"] == "converted"
     notes = [n for f in data["files"] for n in f["notes"]]
-    assert any(n.startswith("verified under python3.12 (") for n in notes), notes
+    assert "verified under bin/python3.12" in notes, notes  # the report's form of the path
+    used = tmp_path / "bin" / "python3.12"  # the summary gives the absolute path
     assert ("1 file needs a newer Python than 3." in run.stderr
-            and "verified under python3.12, the oldest found that reads it "
+            and f"verified under {used}, the oldest found that reads it "
                 "(skills/vision.py)" in run.stderr), run.stderr
 
 
@@ -105,7 +106,7 @@ def test_the_oldest_of_several_newer_interpreters_is_chosen(tmp_path):
     (tmp_path / "bin" / "python3.12").symlink_to(SECOND)
     _, data = _run(tmp_path, env=env)
     notes = [n for f in data["files"] for n in f["notes"]]
-    assert any(n.startswith("verified under python3.12 (") for n in notes), notes
+    assert "verified under bin/python3.12" in notes, notes
     assert not any("python3.13" in n for n in notes), notes
 
 
@@ -140,10 +141,111 @@ def test_a_newer_interpreter_installed_by_pyenv_verifies_the_file(tmp_path):
     run, data = _run(tmp_path, env=env)
     assert run.returncode == 0, run.stderr
     assert data["skills"][0]["status"] == "converted"
-    assert "verified under python3.12, the oldest found that reads it" in run.stderr
+    assert f"verified under {installed}, the oldest found that reads it" in run.stderr
 
 
 def test_an_interpreter_that_does_not_exist_is_a_usage_error(tmp_path):
     run, _ = _run(tmp_path, "--python", str(tmp_path / "no-such-python"))
     assert run.returncode == 2
     assert "no such interpreter" in run.stderr and "Traceback" not in run.stderr
+
+
+FAKE_PYTHON = """#!/bin/sh
+# a repository's own interpreter: if anything runs it, the marker says so
+echo "$0 $*" >> "{marker}"
+echo 3.8.99
+exit 0
+"""
+
+CATKIN_MANIFEST = """<?xml version="1.0"?>
+<package format="2">
+  <name>cell_skills</name>
+  <version>0.1.0</version>
+  <description>cell skills</description>
+  <maintainer email="lab@example.org">Lab</maintainer>
+  <license>BSD</license>
+  <buildtool_depend>catkin</buildtool_depend>
+</package>
+"""
+
+
+def _planted(repo: Path, marker: Path) -> list[str]:
+    """``python3.8`` and every newer ``python3.X`` a search could ask for, as executable
+    scripts in the repository's root, its ``bin/`` and its ``tools/``; their names."""
+    names = [f"python3.{minor}" for minor in range(8, 32)]
+    for folder in (repo, repo / "bin", repo / "tools"):
+        folder.mkdir(exist_ok=True)
+        for name in names:
+            script = folder / name
+            script.write_text(FAKE_PYTHON.format(marker=marker), encoding="utf-8")
+            script.chmod(0o755)
+    return names
+
+
+def test_a_repositorys_own_interpreters_are_never_run(tmp_path):
+    """With ``.``, an empty entry, a relative ``bin`` and the repository's absolute
+    ``tools/`` on PATH, run from inside the repository: a ROS 1 package (``python3.8`` is
+    looked for) with a file only Python 3.12 reads (every newer ``python3.X`` is looked
+    for). None of the repository's scripts runs, and no line names one of them."""
+    repo = tmp_path / "cell_skills"
+    (repo / "src").mkdir(parents=True)
+    subprocess.run(["git", "init", "-q", str(repo)], check=True, timeout=60)
+    (repo / "package.xml").write_text(CATKIN_MANIFEST, encoding="utf-8")
+    (repo / "src" / "vision.py").write_text(NEWER_SKILL, encoding="utf-8")
+    marker = tmp_path / "ran.txt"
+    _planted(repo, marker)
+    git = Path(shutil.which("git") or "/usr/bin/git").parent
+    path = os.pathsep.join([".", "", "bin", str(repo / "tools"), str(git)])
+    env = dict(os.environ, PATH=path, PYENV_ROOT=str(tmp_path / "no-pyenv"))
+    for command in (["rewrite", "--dry-run", "src"], ["rewrite", "--check", "src"],
+                    ["verify", "src", "src"], ["check", "--trace", "."]):
+        run = _ezmigrate(command, repo, env)
+        assert run.returncode in (0, 1), run.stderr
+        assert not marker.exists(), (command, marker.read_text(), run.stderr)
+        assert str(repo / "tools") not in run.stderr + run.stdout
+        if command[0] != "check":  # both searches were made, and found nothing
+            assert f"({sys.executable}), ontology read with" in run.stderr, run.stderr
+            assert "put python3.8 on PATH" in run.stderr
+            assert "no newer Python on PATH or in pyenv's versions folder" in run.stderr
+    # the control: the same scripts in a folder outside the repository are found and run
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    _planted(outside, marker)
+    env["PATH"] = os.pathsep.join([str(outside), path])
+    run = _ezmigrate(["rewrite", "--dry-run", "src"], repo, env)
+    assert marker.exists(), run.stderr
+    assert f"({outside / 'python3.8'}), ontology read with" in run.stderr, run.stderr
+
+
+def _ezmigrate(command: list[str], cwd: Path,
+               env: dict[str, str]) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "ezmigrate", *command], cwd=cwd, env=env,
+                          capture_output=True, text=True, check=False, timeout=600)
+
+
+def test_only_absolute_entries_outside_the_checked_repository_are_searched(tmp_path, monkeypatch):
+    """The rule itself, in this process: relative entries never count, an absolute one
+    inside a path given to ``never_search`` (or inside its git top level) stops counting,
+    and what is found is an absolute path."""
+    from ezmigrate.verify import interpreters
+
+    monkeypatch.setattr(interpreters, "_UNSEARCHED", set())
+    repo = tmp_path / "repo"
+    (repo / "pkg").mkdir(parents=True)
+    (repo / ".git").mkdir()
+    marker = tmp_path / "ran.txt"
+    _planted(repo, marker)
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    _planted(elsewhere, marker)
+    monkeypatch.chdir(repo)
+    monkeypatch.setenv("PYENV_ROOT", str(tmp_path / "no-pyenv"))
+    monkeypatch.setenv("PATH", os.pathsep.join([".", "", "bin"]))
+    assert interpreters.find_python("3.8") is None
+    assert interpreters.resolve("python3.8") is None
+    monkeypatch.setenv("PATH", os.pathsep.join([".", str(repo / "tools"), str(elsewhere)]))
+    assert interpreters.find_python("3.8") == str(repo / "tools" / "python3.8")
+    interpreters.never_search([repo / "pkg"])  # a path given: its git top level is repo
+    assert interpreters.find_python("3.8") == str(elsewhere / "python3.8")
+    assert interpreters.resolve("./bin/python3.8") == str(repo / "bin" / "python3.8")
+    assert not marker.exists()

@@ -107,9 +107,10 @@ def test_a_verifying_rewrite_carries_on_past_every_problem_file(tmp_path):
 ])
 def test_user_code_is_imported_only_when_verifying(tmp_path, command, imported):
     folder = tree(tmp_path / "skills", {"creates_marker.py": ISOLATION / "creates_marker.py"})
-    marker = tmp_path / "marker"
+    (folder / ".markers").mkdir()
+    marker = folder / ".markers" / "imported"
     args = (*command, folder, folder) if command == ("verify",) else (*command, folder)
-    run = cli(*args, env={"EZMIGRATE_TEST_MARKER": str(marker)})
+    run = cli(*args)
     assert run.returncode == 0, run.stderr
     assert marker.exists() == imported
     if command[0] == "rewrite":  # the dry run did its work either way

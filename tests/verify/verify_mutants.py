@@ -41,6 +41,9 @@ OTHER_RELATION = {"contain": "at", "at": "contain"}
 OTHER_PROPERTY = {"ContainerState": "StateProperty"}
 OTHER_OPERATOR = {"==": ">=", ">=": ">", ">": "<", "<": "<=", "<=": "==",
                   "=": ">=", "!=": "=="}
+METHOD_OPERATORS = {"eq": "=", "gt": ">", "lt": "<", "ge": ">=", "le": "<="}
+"""``F.Open.eq(False)``: the method of a property handle for each SkiROS2 operator."""
+OPERATOR_METHODS = {**{op: m for m, op in METHOD_OPERATORS.items()}, "==": "eq"}
 LISTS = ("pre_conditions", "hold_conditions", "post_conditions")
 ALIAS = "_mut_"
 """Prefix of the names the mutants use for DSL names and namespaces (imported once per
@@ -424,6 +427,10 @@ def _read_cond(src: _Source, expr: cst.BaseExpression) -> _Cond:
         return _Cond(expr, core, label, "abstract")
     if isinstance(core, cst.Comparison):
         return _Cond(expr, core, label, "compare")
+    if isinstance(core, cst.Call) and isinstance(core.func, cst.Attribute) \
+            and core.func.attr.value in METHOD_OPERATORS \
+            and isinstance(core.func.value, cst.Attribute):  # F.Open.eq(False)
+        return _Cond(expr, core, label, "property-method")
     if isinstance(core, cst.Call) and isinstance(core.func, cst.Attribute):
         method = core.func.attr.value
         kind = method if method in ("relation", "property", "has", "is_specified",
@@ -490,6 +497,19 @@ def _cond_mutants(src: _Source, c: _Cond, where: str, names: list[tuple[str, str
         other = OTHER_PROPERTY.get(left.attr.value, "ContainerState")
         yield "cond-property", where, [(p_start, p_end, other)]
         yield from _value_mutants(src, target.comparator, where)
+    elif c.kind == "property-method":
+        assert isinstance(core, cst.Call) and isinstance(core.func, cst.Attribute)
+        handle = core.func.value
+        assert isinstance(handle, cst.Attribute)
+        subject = handle.value
+        m_start, m_end = src.span(core.func.attr)
+        operator = METHOD_OPERATORS[core.func.attr.value]
+        yield "cond-operator", where, [(m_start, m_end,
+                                        OPERATOR_METHODS[OTHER_OPERATOR[operator]])]
+        p_start, p_end = src.span(handle.attr)
+        other = OTHER_PROPERTY.get(handle.attr.value, "ContainerState")
+        yield "cond-property", where, [(p_start, p_end, other)]
+        yield from _value_mutants(src, core.args[0].value, where)
     elif c.kind == "property":
         assert isinstance(core, cst.Call) and isinstance(core.func, cst.Attribute)
         subject = core.func.value

@@ -2,9 +2,10 @@
 
 A legacy import name is removed only when the migration removed its last use: it was used
 before and nothing left in the module uses it (implementation classes usually still need
-``SkillBase`` or ``ParamTypes``). An import that was already unused stays byte for byte:
-removing it would put an unrelated line in the diff and could drop an import-time side
-effect. Comments that stood above a removed import move to the statement that takes its
+``SkillBase`` or ``ParamTypes``). A use is a reference to the bound name (``name_counts``):
+``wmi.Element(...)`` uses ``wmi``, not an imported ``Element``. An import that was already
+unused stays byte for byte: removing it would put an unrelated line in the diff and could
+drop an import-time side effect. Comments that stood above a removed import move to the statement that takes its
 place, so banners like ``# SkiROS2 imports`` survive.
 
 The new imports go where the first legacy import was, unless a star import follows it: a
@@ -15,7 +16,8 @@ rebind ours, so the new imports then go right after the last top-level star impo
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Collection, Iterable, Sequence
+from collections.abc import Callable, Collection, Iterable, Sequence
+from typing import Any
 
 import libcst as cst
 
@@ -29,12 +31,43 @@ RUNTIME_ORDER = ("SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMEN
                  "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output")
 
 
+def _as_name(node: cst.ExceptHandler | cst.ExceptStarHandler) -> cst.CSTNode | None:
+    return node.name.name if node.name is not None else None
+
+
+_NOT_REFERENCES: dict[type, Callable[[Any], cst.CSTNode | None]] = {
+    # the ``Name`` child of these nodes spells a word without referring to a binding
+    cst.Attribute: lambda node: node.attr,
+    cst.Arg: lambda node: node.keyword,
+    cst.Param: lambda node: node.name,
+    cst.FunctionDef: lambda node: node.name,
+    cst.ClassDef: lambda node: node.name,
+    cst.ExceptHandler: _as_name,
+    cst.ExceptStarHandler: _as_name,
+    cst.MatchAs: lambda node: node.name,
+    cst.MatchStar: lambda node: node.name,
+    cst.MatchMapping: lambda node: node.rest,
+    cst.MatchKeywordElement: lambda node: node.key,
+    cst.TypeVar: lambda node: node.name,
+    cst.TypeVarTuple: lambda node: node.name,
+    cst.ParamSpec: lambda node: node.name,
+}
+
+
 def name_counts(node: cst.CSTNode) -> Counter[str]:
-    """How often a subtree mentions each identifier outside imports (a safe
-    over-approximation of its uses). For a whole module, ``SyntaxFacts.names`` gives the
-    same from one ``ast`` walk."""
-    return Counter(found.value for found in walk(node, (cst.Import, cst.ImportFrom))
-                   if type(found) is cst.Name)
+    """How often a subtree refers to each name outside imports: the ``Name`` nodes that
+    stand for a variable, not an attribute's, a keyword's, a parameter's or a definition's
+    own name. Only a reference uses an import (``wmi.Element`` leaves an imported
+    ``Element`` unused). For a whole module, ``SyntaxFacts.names`` gives the same from one
+    ``ast`` walk."""
+    found = list(walk(node, (cst.Import, cst.ImportFrom)))
+    spelled: set[int] = set()
+    for item in found:
+        child = _NOT_REFERENCES[type(item)](item) if type(item) in _NOT_REFERENCES else None
+        if child is not None:
+            spelled.add(id(child))
+    return Counter(item.value for item in found
+                   if type(item) is cst.Name and id(item) not in spelled)
 
 
 def used_names(node: cst.CSTNode) -> set[str]:

@@ -6,9 +6,12 @@ So the facts that need the whole module (the names it uses, how often each name 
 its legacy imports, the lines of its classes) come from one ``ast`` walk here, and libcst
 is walked only where code is rewritten. ``check``'s fast reader uses the same facts.
 
-``names`` counts identifiers as libcst's ``Name`` nodes would, outside import statements:
-variables, attributes, keywords of calls, parameters, definitions, ``global`` and ``as``
-targets (``True``, ``False`` and ``None`` are constants here, and no import binds them).
+``names`` counts the references to names, outside import statements: every name read or
+bound as a variable (``ast.Name``), and the names of ``global`` and ``nonlocal``. These are
+what an import's binding can be used by. An attribute (``wmi.Element``), a keyword of a call
+(``f(Element=...)``), a parameter or a definition's own name merely spells the same word:
+counting them kept legacy imports the migration had left unused (ruff's F401). ``True``,
+``False`` and ``None`` are constants here, and no import binds them.
 
 A file written for a newer Python than this one (``f"{d["key"]}"``, Python 3.12) parses
 with libcst but not with ``ast``: ``core/cst_facts.py`` then gives the same facts, slowly.
@@ -21,7 +24,6 @@ from collections import Counter
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any
 
 from .legacy_names import LegacyNames
 
@@ -38,7 +40,7 @@ class FunctionFacts:
     spans: list[Span]
     """Its body's statements in order (``StatementLines`` gives its nodes lines)."""
     names: Counter[str]
-    """Identifiers of the whole method: what replacing it removes from the module."""
+    """Name references of the whole method: what replacing it removes from the module."""
     bound: frozenset[str]
     """Names its body binds: Python makes them local throughout, so none reads the module
     constant of the same name."""
@@ -64,7 +66,8 @@ class SyntaxFacts:
     classes: list[ClassFacts]
     """The top-level classes in order: the k-th is libcst's k-th top-level ``ClassDef``."""
     names: Counter[str] = field(default_factory=Counter)
-    """Identifier -> how often the module mentions it outside imports."""
+    """Name -> how often the module refers to it outside imports (see the module's
+    docstring: attributes, keywords and parameters are no references)."""
     bindings: dict[str, int] = field(default_factory=dict)
     """Name -> weight of its bindings anywhere: 1 per plain assignment, 2 per augmented
     assignment or ``global`` (a name bound more than once is no constant)."""
@@ -97,15 +100,12 @@ def _walk(tree: ast.AST, names: Counter[str], legacy: LegacyNames | None = None,
         kind = type(node)
         if kind is ast.Name:
             names[node.id] += 1  # type: ignore[attr-defined]
-        elif kind is ast.Attribute:
-            names[node.attr] += 1  # type: ignore[attr-defined]
         elif kind is ast.Import or kind is ast.ImportFrom:
             if legacy is not None:
                 note_import(node, legacy)
         else:
-            identifiers = _IDENTIFIERS.get(kind)
-            if identifiers is not None:
-                names.update(name for name in identifiers(node) if name is not None)
+            if kind is ast.Global or kind is ast.Nonlocal:
+                names.update(node.names)  # type: ignore[attr-defined]
             if bindings is not None and kind in _BINDERS:
                 note_binding(node, bindings)
 
@@ -159,21 +159,6 @@ def note_binding(node: ast.AST, bindings: dict[str, int]) -> None:
             bindings[name] = bindings.get(name, 0) + 2
 
 
-_IDENTIFIERS: dict[type, Callable[[Any], list[str | None]]] = {
-    # identifiers a node holds as strings (libcst holds them as ``Name`` nodes)
-    ast.FunctionDef: lambda node: [node.name],
-    ast.AsyncFunctionDef: lambda node: [node.name],
-    ast.ClassDef: lambda node: [node.name],
-    ast.arg: lambda node: [node.arg],
-    ast.keyword: lambda node: [node.arg],
-    ast.Global: lambda node: node.names,
-    ast.Nonlocal: lambda node: node.names,
-    ast.ExceptHandler: lambda node: [node.name],
-    ast.MatchAs: lambda node: [node.name],
-    ast.MatchStar: lambda node: [node.name],
-    ast.MatchMapping: lambda node: [node.rest],
-    ast.MatchClass: lambda node: node.kwd_attrs,
-}
 _BINDERS = frozenset({ast.Assign, ast.AugAssign, ast.Global})
 
 

@@ -4,7 +4,7 @@ Legacy (legacy-skiros2-api.md §4, §7)                    EzSkiROS (docs/dsl.md
 ``getRelationCond(l, "skiros:contain", "A", "B", True)``  ``A.contain(B)``
 ``... False``                                              ``~ A.contain(B)``
 ``getAbstractRelationCond(...)``                           ``abstract(A.contain(B))``
-``getPropCond(l, "skiros:Open", "F", "=", False, True)``  ``F.Open == False``
+``getPropCond(l, "skiros:Open", "F", "=", False, True)``  ``F.Open.eq(False)`` (``.gt`` ...)
 ``getHasPropCond(l, "skiros:Position", "O", True)``       ``O.has(skiros.Position)``
 ``getIsSpecifiedCond(l, "O", True)``                       ``O.is_specified()``
 ``getGenerateCond(l, "O", True)``                          ``O.generated()``
@@ -50,7 +50,11 @@ CLASSES = {
     "ConditionGenerate": "getGenerateCond",
     "ConditionOnType": "getOnTypeCond",
 }
-OPERATORS = {"=": "==", ">": ">", "<": "<", ">=": ">=", "<=": "<="}
+OPERATORS = {"=": "eq", ">": "gt", "<": "lt", ">=": "ge", "<=": "le"}
+"""SkiROS2 operator -> the method of a property handle written for it (``F.Open.eq(False)``).
+
+Not ``F.Open == False``: pycodestyle and ruff flag that (E712) in every lab's CI, and their
+fixes turn it into ``not F.Open`` or ``F.Open``, which is no longer the condition."""
 
 
 def factory_condition(node: cst.BaseExpression, ctx: ExtractContext) -> CondSpec | None:
@@ -140,7 +144,7 @@ def emit_property(spec: CondSpec, ctx: EmitContext) -> str:
     subject = ctx.subject(spec.subject)
     short = ctx.short_property(spec.vocabulary)
     if short and spec.operator in OPERATORS:
-        text = f"({subject}.{short} {OPERATORS[spec.operator]} {spec.value.code})"
+        text = f"{subject}.{short}.{OPERATORS[spec.operator]}({spec.value.code})"
     else:
         text = (f"{subject}.property({ctx.quote(spec.vocabulary)}, {ctx.quote(spec.operator)}, "
                 f"{spec.value.code})")

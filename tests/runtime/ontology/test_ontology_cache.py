@@ -8,6 +8,7 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -202,14 +203,15 @@ def test_fast_sha256_matches_hashlib() -> None:
 
 def test_old_indexes_are_pruned(ontology: Path, cache_dir: Path) -> None:
     cache_dir.mkdir()
-    stale = [cache_dir / f"ontology-index-{n:064x}.pickle" for n in range(index_cache.KEEP_INDEXES)]
+    stale = [cache_dir / f"ontology-index-{n:064x}.json" for n in range(index_cache.KEEP_INDEXES)]
+    recent = time.time() - 3600  # within MAX_AGE_DAYS: only the count prunes them
     for number, path in enumerate(stale):
         path.write_bytes(b"old")
-        os.utime(path, (1_000_000 + number, 1_000_000 + number))
+        os.utime(path, (recent + number, recent + number))
     unrelated = cache_dir / "notes.txt"
     unrelated.write_text("not ours")
     index = load_index([ontology], cache_dir=cache_dir)
-    remaining = sorted(p.name for p in cache_dir.glob("ontology-index-*.pickle"))
+    remaining = sorted(p.name for p in cache_dir.glob("ontology-index-*.json"))
     assert len(remaining) == index_cache.KEEP_INDEXES
     assert index_cache.cache_path(cache_dir, index.fingerprint).name in remaining
     assert stale[0].name not in remaining  # the least recently used one went

@@ -1,0 +1,119 @@
+"""The readings ``facts_cache`` keeps, as JSON that cannot run code when it is read.
+
+A file's facts are objects of this project's own classes (``FileFacts``, ``TreeFacts``,
+``ModuleFacts``, the runtime's ``CompoundModel`` and ``Scene``, ...) holding literals,
+tuples, sets and dicts. ``encode`` writes each object as its class's name and its fields;
+``decode`` rebuilds only classes of ``ezmigrate`` and ``ezskiros_runtime`` (the modules
+already imported, or importable from those two packages), setting their fields directly:
+no constructor, no ``__setstate__``, no callable named by the data is ever called, so a
+forged entry can at worst be a wrong reading, which its signature (``cache_folder``)
+already refuses. Anything else in the data is a ``CodecError``, a miss.
+"""
+
+from __future__ import annotations
+
+import base64
+import dataclasses
+import importlib
+import sys
+from typing import Any
+
+OWN = ("ezmigrate.", "ezskiros_runtime.")
+"""The packages whose classes an entry may name."""
+
+
+class CodecError(ValueError):
+    """Data that is not an encoding of our own readings."""
+
+
+def encode(value: Any) -> Any:
+    """``value`` as JSON-ready data (lists, dicts of strings, literals)."""
+    if value is None or isinstance(value, (bool, int, float, str)):
+        return value
+    if isinstance(value, list):
+        return [encode(v) for v in value]
+    if isinstance(value, bytes):
+        return {"b": base64.b64encode(value).decode("ascii")}
+    if isinstance(value, tuple):
+        return {"t": [encode(v) for v in value]}
+    if isinstance(value, (set, frozenset)):
+        items = [encode(v) for v in value]
+        return {"fs" if isinstance(value, frozenset) else "s": items}
+    if isinstance(value, dict):
+        return {"d": [[encode(k), encode(v)] for k, v in value.items()]}
+    kind = type(value)
+    name = f"{kind.__module__}:{kind.__qualname__}"
+    if not name.startswith(OWN):
+        raise CodecError(f"not a reading of ours: {name}")
+    return {"c": name, "f": {key: encode(v) for key, v in _fields(value).items()}}
+
+
+def _fields(value: Any) -> dict[str, Any]:
+    if dataclasses.is_dataclass(value):
+        return {f.name: getattr(value, f.name) for f in dataclasses.fields(value)}
+    found: dict[str, Any] = dict(getattr(value, "__dict__", {}))
+    for slot in getattr(type(value), "__slots__", ()):
+        if hasattr(value, slot):
+            found[slot] = getattr(value, slot)
+    return found
+
+
+def decode(data: Any) -> Any:
+    """The value ``encode`` gave ``data`` for; ``CodecError`` for anything else."""
+    if data is None or isinstance(data, (bool, int, float, str)):
+        return data
+    if isinstance(data, list):
+        return [decode(v) for v in data]
+    if not isinstance(data, dict) or len(data) not in (1, 2):
+        raise CodecError("unexpected data")
+    if "t" in data:
+        return tuple(decode(v) for v in _list(data["t"]))
+    if "b" in data and isinstance(data["b"], str):
+        try:
+            return base64.b64decode(data["b"], validate=True)
+        except ValueError as error:
+            raise CodecError("bytes that are not base64") from error
+    if "fs" in data:
+        return frozenset(decode(v) for v in _list(data["fs"]))
+    if "s" in data:
+        return {decode(v) for v in _list(data["s"])}
+    if "d" in data:
+        pairs = _list(data["d"])
+        if not all(isinstance(p, list) and len(p) == 2 for p in pairs):
+            raise CodecError("a dict entry is no pair")
+        return {decode(k): decode(v) for k, v in pairs}
+    if "c" in data and isinstance(data.get("f"), dict):
+        return _instance(str(data["c"]), data["f"])
+    raise CodecError("unexpected data")
+
+
+def _list(data: Any) -> list[Any]:
+    if not isinstance(data, list):
+        raise CodecError("a list was expected")
+    return data
+
+
+def _instance(name: str, fields: dict[str, Any]) -> Any:
+    """An object of our own class ``name`` with ``fields`` set, its constructor not run."""
+    module_name, _, qualname = name.partition(":")
+    if not name.startswith(OWN) or not qualname:
+        raise CodecError(f"not a class of ours: {name}")
+    module = sys.modules.get(module_name)
+    if module is None:
+        try:
+            module = importlib.import_module(module_name)
+        except ImportError as error:
+            raise CodecError(f"no module {module_name}") from error
+    kind: Any = module
+    for part in qualname.split("."):
+        kind = getattr(kind, part, None)
+    if not isinstance(kind, type) or kind.__module__ != module_name:
+        raise CodecError(f"not a class of ours: {name}")
+    value: Any = object.__new__(kind)
+    allowed = {f.name for f in dataclasses.fields(kind)} if dataclasses.is_dataclass(kind) \
+        else None
+    for key, item in fields.items():
+        if not isinstance(key, str) or (allowed is not None and key not in allowed):
+            raise CodecError(f"{name} has no field {key!r}")
+        object.__setattr__(value, key, decode(item))
+    return value
