@@ -5,8 +5,7 @@ the command needs 3.10 (libcst, click and our own code are not installed or writ
 less). Under an older Python this says so in one line and exits 2, never with a traceback;
 so this module is written for every Python the project installs on and imports the CLI
 only past the gate. A Ctrl-C while the CLI is still being imported (libcst takes a
-noticeable part of a second) is one line and exit 130, as it is once the CLI runs. A
-finished command ends without the interpreter's tear-down (``leave``).
+noticeable part of a second) is one line and exit 130, as it is once the CLI runs.
 """
 
 import sys
@@ -31,36 +30,6 @@ def main() -> None:
         sys.stderr.write("ezmigrate: interrupted by SIGINT before any file was written: "
                          "every file is as it was\n")
         raise SystemExit(130) from None
-    except SystemExit as done:  # the command's end: its exit code
-        if isinstance(done.code, int) or done.code is None:
-            leave(done.code or 0)
-        raise
-
-
-def leave(code: int) -> None:
-    """End the process now, as the interpreter would, without tearing it down.
-
-    A command's heap (a repository's readings, the ontology's index) takes the interpreter
-    tens of milliseconds to free at exit (40 ms of a 0.75 s ``check`` of the 21 public
-    repositories), and nobody needs it freed. So once the command is done: the exit hooks
-    run (temporary folders, multiprocessing's), the standard streams are flushed, and the
-    process ends with ``os._exit``. Only when this is the process's only thread (every
-    pool was shut down by the command; another thread would be cut short) and the streams
-    flush; else this returns and the interpreter exits as usual.
-    """
-    import atexit
-    import os
-    import threading
-
-    if threading.active_count() != 1:
-        return
-    try:
-        atexit._run_exitfuncs()
-        sys.stdout.flush()
-        sys.stderr.flush()
-    except Exception:  # a closed pipe, say: the usual exit reports it as it always did
-        return
-    os._exit(code)
 
 
 if __name__ == "__main__":

@@ -61,10 +61,22 @@ _EXPORTS: dict[str, str] = {
 
 
 def __getattr__(name: str) -> Any:
+    """A public name, imported from its submodule on first use.
+
+    When importing that submodule fails (an import error inside SkiROS2 on the robot, a
+    missing rdflib), the error says so and chains the original: Python would otherwise
+    report only ``cannot import name 'SkillDescription' from 'ezskiros_runtime'`` when the
+    failure is an ``AttributeError``, and the cause would be lost."""
     module = _EXPORTS.get(name)
     if module is None:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
+    try:
+        loaded = importlib.import_module(f"{__name__}.{module}")
+    except Exception as error:
+        raise ImportError(f"cannot import name {name!r} from {__name__!r}: importing "
+                          f"{__name__}.{module} raised {type(error).__name__}: {error}",
+                          name=__name__) from error
+    value = getattr(loaded, name)
     globals()[name] = value  # later lookups skip this function
     return value
 

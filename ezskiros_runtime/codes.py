@@ -324,6 +324,36 @@ RULES: tuple[Rule, ...] = (
          ("remap-key-remapped-below",),
          skiros2='SkillInterface.remap logs "Key ... already remapped ... Can t remap" on the node '
          "below and returns, so the value never reaches it"),
+    Rule("EZ317", "processor-undefined", "error",
+         "A processor class the module neither defines nor imports (Sqeuential() for "
+         "Sequential()): expand raises NameError when it runs, and the compound skill "
+         "fails.",
+         "Fix the name, or import the processor (from skiros2_skill.core.skill import ...).",
+         ("processor-undefined",),
+         skiros2="SkillWrapper.expand runs the implementation's expand, where the name is "
+         "looked up: NameError, and the skill fails when it runs"),
+    Rule("EZ318", "unknown-label", "warning",
+         "A child label that no implementation of the child's type the run knows has "
+         "(the repository, skiros2_std_lib, [tool.ezmigrate] skill-libraries): "
+         "SkillInstanciator.assign_instance finds no instance with that label, and "
+         "add_instance asks PluginLoader.getPluginByName for it, which raises. Info when the "
+         "run knows no implementation of the type at all (it may come from another "
+         "library).",
+         "Use the label of an implementation of the type (see the suggestion), or leave it "
+         "empty to let the skill manager pick one.",
+         ("unknown-label",),
+         skiros2="SkillInstanciator.add_instance -> PluginLoader.getPluginByName raises "
+         "\"No plugin with name ... found\" when the compound skill expands"),
+    Rule("EZ319", "specify-modified-key", "warning",
+         "A specify of a parameter that only the implementation's modifyDescription adds: "
+         "self.skill(...) applies specify to a wrapper filled from the description class "
+         "alone, and modifyDescription runs later (SkillWrapper.setInstance), so the value "
+         "is dropped and the child runs with modifyDescription's default.",
+         "Declare the parameter in the description class, or set it another way (remap "
+         "onto a key the parent sets).",
+         ("specify-modified-key",),
+         skiros2="SkillWrapper.specifyParamDefault logs \"No param ... found\" and drops the "
+         "value"),
     Rule("EZ315", "specify-parameter-object", "error",
          "A specify value that is the parameter object self.params[\"X\"] rather than "
          "its value: SkiROS2 logs an error and leaves the child's parameter unset.",

@@ -4,7 +4,8 @@
 each turns its options into settings, calls the project and prints what comes back, so no
 decision is taken here. `options` and `config` resolve the settings a command runs with
 (the command line over ``[tool.ezmigrate]``); `output_formats` renders
-``check``'s findings for machines (JSON, SARIF, GitHub, JUnit); `rules_doc` with
+``check``'s findings for machines (JSON, SARIF, GitHub, JUnit); `terminal` decides
+colour (a terminal, ``NO_COLOR``, ``--color``) and colours diffs and findings; `rules_doc` with
 `rules_precision` writes docs/rules.md from the catalogue. May import `project`,
 `compound`, `lint`, `codemod`, `verify`, `report` and `files`; only ``ezmigrate.__main__``
 imports this room.

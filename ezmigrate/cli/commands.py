@@ -536,7 +536,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     from ezskiros_runtime.ontology.vendored import shared_rules
 
     from ..lint.select import Selection, SelectorError, apply, parse_selectors
-    from ..project.check import checked_files, needs_trees, run_check, tracing_ahead
+    from ..project.check import checked_files, needs_trees, run_check
     from .output_formats import STATISTICS
 
     if statistics and output_format not in STATISTICS:
@@ -567,27 +567,18 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
         raise click.UsageError(str(error)) from None
     compounds = needs_trees(selection.codes())
     cache_dir = None if no_cache else _cache_dir(paths, options, cache_folder)
-    tracing = tracing_ahead(list(paths), options.pool(()), compounds and trace,
-                            cache_dir)
-    try:
-        with shared_rules():  # the four searches of the repository share their answers
-            discovered = checked_files(list(paths), options.exclude, include_vendored)
-            index, ontology_files, _ = _load_index(ontology, anchor, roots, options)
-            pool = options.pool(ontology_files)
-            if tracing is not None:
-                tracing.use_ontology(pool.ontology)
-            progress = (lambda line: click.echo(f"ezmigrate: {printable(line)}", err=True)) \
-                if sys.stderr.isatty() and not quiet else None
-            outcome = run_check(list(paths), index, pool, options.exclude, progress,
-                                options.skill_libraries, compounds=compounds,
-                                world=_world_run(paths, options, scene),
-                                include_vendored=include_vendored,
-                                cache_dir=cache_dir,
-                                launch=_launch(anchor, launch_file, quiet), trace=trace,
-                                discovered=discovered, tracing=tracing)
-    finally:
-        if tracing is not None:
-            tracing.close()
+    with shared_rules():  # the four searches of the repository share their answers
+        discovered = checked_files(list(paths), options.exclude, include_vendored)
+        index, ontology_files, _ = _load_index(ontology, anchor, roots, options)
+        pool = options.pool(ontology_files)
+        progress = (lambda line: click.echo(f"ezmigrate: {printable(line)}", err=True)) \
+            if sys.stderr.isatty() and not quiet else None
+        outcome = run_check(list(paths), index, pool, options.exclude, progress,
+                            options.skill_libraries, compounds=compounds,
+                            world=_world_run(paths, options, scene),
+                            include_vendored=include_vendored, cache_dir=cache_dir,
+                            launch=_launch(anchor, launch_file, quiet), trace=trace,
+                            discovered=discovered)
     for note in outcome.notes:
         click.echo(f"ezmigrate: {printable(note)}", err=True)
     found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it

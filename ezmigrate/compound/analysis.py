@@ -27,7 +27,7 @@ from ..files.discover import Candidate
 from ..files.package_xml import ros_flavour
 from ..report.once import once_per_cause
 from ..report.results import FileResult
-from ..verify.pool import PoolConfig, Standby
+from ..verify.pool import PoolConfig
 from ..verify.protocol import LoadOutcome
 from .repository import READ_WHEN, Recovered, RepositoryScan, description_of
 from .static import (
@@ -38,7 +38,7 @@ from .static import (
     modified_params,
     read_compounds,
 )
-from .tracing import EarlyTraces, trace_job, traced
+from .tracing import trace_all, trace_job
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -69,8 +69,6 @@ class Trees:
     modified: list[tuple[str, str, str | None, bool, str]] = field(default_factory=list)
     """Parameters implementations add in ``modifyDescription`` (``static.modified_params``)."""
     seen: set[str] = field(default_factory=set)
-    early: EarlyTraces | None = None
-    """The traces the run started when its reading ended (``tracing.EarlyTraces``)."""
     syntax: dict[tuple[str, str], list[tuple[str, int, str]]] = field(default_factory=dict)
     """``(path, class)`` -> mistakes its ``self.skill`` calls show in the syntax alone
     (``static.expand_findings``): reported when the tree can be neither read nor traced."""
@@ -165,10 +163,9 @@ def _read(items: Iterable[tuple[Candidate, bytes]], trees: Trees | None = None) 
     return trees
 
 
-def _trace(trees: Trees, pool: PoolConfig, standby: Standby | None = None) -> None:
+def _trace(trees: Trees, pool: PoolConfig) -> None:
     """Trace every class the syntax could not read, in sandboxed children
-    (``tracing.trace_all``), but for the files the run traced as soon as it had read them
-    (``trees.early``)."""
+    (``tracing.trace_all``); without ``trees.trace``, take what the syntax gives of it."""
     if not trees.traced:
         return
     if not trees.trace:
@@ -179,8 +176,7 @@ def _trace(trees: Trees, pool: PoolConfig, standby: Standby | None = None) -> No
                     "code to trace it (check --trace does, in the sandbox)", unread.line)))
         return
     order = list(trees.traced.values())
-    outcomes = traced([trace_job(c, pending) for c, pending in order], pool, standby,
-                      trees.early)
+    outcomes = trace_all([trace_job(c, pending) for c, pending in order], pool)
     for (candidate, pending), found in zip(order, outcomes, strict=True):
         _record(trees, str(candidate.path), pending, found)
 
@@ -230,13 +226,12 @@ def add_descriptions(index: SkillIndex, results: Iterable[tuple[Candidate, FileR
 def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
             ontology: OntologyIndex | None, pool: PoolConfig,
             library_items: Sequence[tuple[Candidate, bytes]] = (),
-            read: Trees | None = None, standby: Standby | None = None,
-            around: RepositoryScan | None = None) -> CompoundRun:
+            read: Trees | None = None, around: RepositoryScan | None = None) -> CompoundRun:
     """Read, trace and check every compound skill of ``items`` against ``index``.
 
     Compound skills of ``library_items`` join the index (a remap reaches into their trees)
     but are not reported. ``read``: what the caller's own pass already read (its files are
-    not parsed again); ``standby``: workers already starting for the tracing; ``around``:
+    not parsed again); ``around``:
     the rest of the repository (``repository.py``), whose descriptions the caller already
     added to ``index``.
     """
@@ -244,7 +239,7 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
     library = _read(library_items, Trees(trace=read.trace if read is not None else True))
     _trace(library, pool)
     trees = _read(items, read)
-    _trace(trees, pool, standby)
+    _trace(trees, pool)
     for label, description in [*library.labels, *around.labels, *trees.labels]:
         index.add_implementation(label, description)
     index.bases |= {base for cls, base in [*library.bases, *around.bases, *trees.bases]

@@ -19,7 +19,6 @@ from __future__ import annotations
 import ast
 import io
 import os
-import sys
 import tokenize
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -227,55 +226,14 @@ def _described_by(current: _Recovered, previous: list[str], string: str) -> None
         current.described = string
 
 
-_OPENING = frozenset("([{")
-_CLOSING = frozenset(")]}")
 Token = tuple[str, int, int, int]
 """``(string, type, line, column)`` of one token."""
 
 
 def _tokens(data: bytes) -> Iterable[Token]:
     """The module's tokens as ``tokenize`` gives them, but for its layout (newlines and
-    comments, which ``recover_classes`` passes over) and its first, the encoding.
-
-    Python 3.11's ``tokenize`` is written in Python: the Python 2 files of the 21 public
-    repositories take it 45 ms. Its C tokenizer (what ``tokenize`` itself runs on from
-    3.12) gives the same names, strings and operators in 6 ms (``c_tokens``); where it
-    refuses what ``tokenize`` reads on (``0777``, ``10L``), reads what ``tokenize``
-    refuses (a bracket still open at the end) or stops short (a dedent to no level), the
-    tokens are ``tokenize``'s (``python_tokens``). A test holds both to the same classes
-    on every module of the project."""
-    found = c_tokens(data) if sys.version_info[:2] == (3, 11) else None
-    return found if found is not None else python_tokens(data)
-
-
-def c_tokens(data: bytes) -> list[Token] | None:
-    """``_tokens`` by Python 3.11's C tokenizer; None where it cannot stand in for
-    ``tokenize`` (see ``_tokens``), or under another Python."""
-    try:
-        encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
-        from _tokenize import TokenizerIter
-
-        text = data.decode(encoding)
-        raw = list(TokenizerIter(text))
-    except (SyntaxError, UnicodeError, LookupError, ValueError, ImportError, TypeError):
-        return None
-    opened = sum(1 for token in raw if token[0] in _OPENING)
-    if opened != sum(1 for token in raw if token[0] in _CLOSING) or not _whole(raw, text):
-        return None
-    return [(string, kind, line, column) for string, kind, line, _, column, _, _ in raw]
-
-
-def _whole(raw: list[tuple[str, int, int, int, int, int, str]], text: str) -> bool:
-    """Whether the C tokenizer read ``text`` to its end: 3.11's stops without a word at
-    some errors (a dedent to no level ``tokenize`` refuses), so its last token must be
-    followed by nothing but spaces and comments."""
-    last = next((t for t in reversed(raw) if t[0]), None)
-    if last is None:
-        return not any(_code(line) for line in text.splitlines())
-    _, _, _, end_line, _, end_column, line = last
-    rest = line.encode("utf-8")[end_column:].decode("utf-8", "replace")
-    return not _code(rest) and not any(_code(after)
-                                       for after in text.splitlines()[end_line:])
+    comments, which ``recover_classes`` passes over) and its first, the encoding."""
+    return python_tokens(data)
 
 
 def _code(line: str) -> bool:

@@ -14,6 +14,7 @@ tracer ignores it too): read past.
 from __future__ import annotations
 
 import ast
+import builtins
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
@@ -68,12 +69,13 @@ def compound_classes(tree: ast.Module) -> list[ast.ClassDef]:
 def read_compounds(tree: ast.Module, path: str) -> list[CompoundModel | NeedsTrace]:
     """Every compound class of a module, read statically or marked for tracing."""
     found: list[CompoundModel | NeedsTrace] = []
+    bound = module_names(tree)
     for cls in compound_classes(tree):
         expand = [m for m in cls.body if isinstance(m, ast.FunctionDef)
                   and m.name == "expand"][-1]
         description, label = _described(cls)
         try:
-            processor, children, gaps = _Reader(expand).read()
+            processor, children, gaps = _Reader(expand, bound).read()
         except _Computed as computed:
             found.append(NeedsTrace(cls.name, cls.lineno, str(computed), description, label))
             continue
@@ -82,6 +84,46 @@ def read_compounds(tree: ast.Module, path: str) -> list[CompoundModel | NeedsTra
         found.append(model if not gaps else NeedsTrace(
             cls.name, cls.lineno, gaps[0][1], description, label, model))
     return found
+
+
+def module_names(tree: ast.Module) -> frozenset[str] | None:
+    """The names a module binds at its top level (imports, classes, functions, assignments,
+    also inside top-level ``if``/``try``), and the builtins; None when a star import may
+    bind any name."""
+    names: set[str] = set(dir(builtins))
+    todo: list[ast.stmt] = list(tree.body)
+    while todo:
+        node = todo.pop()
+        if isinstance(node, ast.ImportFrom) and any(a.name == "*" for a in node.names):
+            return None
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            names.update((a.asname or a.name).split(".")[0] for a in node.names)
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            names.add(node.name)
+        elif isinstance(node, (ast.If, ast.Try, ast.With, ast.For, ast.While)):
+            todo += [c for c in ast.iter_child_nodes(node) if isinstance(c, ast.stmt)]
+            if isinstance(node, ast.Try):
+                todo += [s for h in node.handlers for s in h.body]
+            names |= _stored(node)
+        else:
+            names |= _stored(node)
+    return frozenset(names)
+
+
+def _stored(node: ast.AST) -> set[str]:
+    """The names a statement (or an expression) assigns, walrus included."""
+    return {n.id for n in ast.walk(node) if isinstance(n, ast.Name)
+            and isinstance(n.ctx, ast.Store)}
+
+
+def _bound_in(function: ast.FunctionDef) -> frozenset[str]:
+    """A function's parameters and the names its body binds (its locals)."""
+    args = function.args
+    params = {a.arg for a in (*args.posonlyargs, *args.args, *args.kwonlyargs,
+                              *(a for a in (args.vararg, args.kwarg) if a is not None))}
+    imported = {(a.asname or a.name).split(".")[0] for n in ast.walk(function)
+                if isinstance(n, (ast.Import, ast.ImportFrom)) for a in n.names}
+    return frozenset(params | imported | _stored(function))
 
 
 def class_bases(tree: ast.Module) -> list[tuple[str, str]]:
@@ -99,8 +141,14 @@ def class_bases(tree: ast.Module) -> list[tuple[str, str]]:
 
 def implementations(tree: ast.Module) -> list[tuple[str, str | None]]:
     """``(label, description)`` of every implementation class (primitive or compound) of a
-    module: what ``self.skill("Type", "label")`` may name."""
-    return [(label, description) for description, label, _ in _implementation_classes(tree)]
+    module: what ``self.skill("Type", "label")`` may name. Both its label and its class
+    name: ``SkillInstanciator.assign_instance`` matches the label of a loaded instance, and
+    where none has it ``add_instance`` loads the plugin of that name, the class."""
+    found: dict[tuple[str, str | None], None] = {}
+    for description, label, cls in _implementation_classes(tree):
+        found[(label, description)] = None
+        found[(cls.name, description)] = None
+    return list(found)
 
 
 def described_classes(tree: ast.Module) -> list[tuple[str, ast.ClassDef]]:
@@ -203,14 +251,17 @@ def _set_description(node: ast.expr, name: str) -> tuple[str | None, str] | None
 
 
 class _Reader:
-    """One literal ``expand`` body."""
+    """One literal ``expand`` body; ``bound``: the names the module and ``expand`` bind
+    (None: a star import may bind any)."""
 
-    def __init__(self, expand: ast.FunctionDef) -> None:
+    def __init__(self, expand: ast.FunctionDef, bound: frozenset[str] | None = None) -> None:
         args = expand.args.args
         if len(args) != 2:
             raise _Computed("expand does not take (self, skill)")
         self.self_name, self.root = args[0].arg, args[1].arg
         self.body = expand.body
+        self.bound = None if bound is None else bound | _bound_in(expand)
+        self.problems: list[CallProblem] = []
 
     def read(self) -> tuple[str, tuple[Node | CallProblem, ...], tuple[tuple[int, str], ...]]:
         """The tree's processor and children, and the statements it could not read (line,
@@ -229,7 +280,7 @@ class _Reader:
                 processor, children = self._statement(stmt, processor, children)
             except _Computed as computed:
                 gaps.append((stmt.lineno, str(computed)))
-        return processor, tuple(children), tuple(gaps)
+        return processor, (*children, *self.problems), tuple(gaps)
 
     def _statement(self, stmt: ast.stmt, processor: str, children: list[Node | CallProblem]
                    ) -> tuple[str, list[Node | CallProblem]]:
@@ -315,6 +366,12 @@ class _Reader:
         name = ast_dotted_name(node.func)
         if name is None or len(node.args) > 1:
             raise _Computed(f"line {node.lineno} sets a processor computed at run time")
+        if self.bound is not None and name.split(".")[0] not in self.bound:
+            self.problems.append(CallProblem(
+                f"processor {name} is defined nowhere in the module (no class, import or "
+                "assignment of that name): expand raises NameError when it runs, and the "
+                "compound skill fails", node.lineno, "processor-undefined",
+                name.rpartition(".")[2]))
         base = name.rpartition(".")[2]
         return f"{base}({self._processor(node.args[0])})" if node.args else base
 

@@ -249,6 +249,14 @@ def _note_vendored(notes: list[str], given: Path) -> Callable[[Path], bool]:
     return skip
 
 
+def _catkin_toplevel(folder: Path, name: str) -> bool:
+    """Whether ``folder/name`` is where ``catkin_init_workspace`` puts its symlink to
+    ``/opt/ros/<distro>/share/catkin/cmake/toplevel.cmake``: ``CMakeLists.txt`` at the top
+    of a workspace's ``src/``. Every catkin workspace has it and it is catkin's, never the
+    lab's code, so a note about it would be noise on every run."""
+    return name == "CMakeLists.txt" and folder.name == "src"
+
+
 def _walk(top: Path, roots: list[str], notes: list[str],
           stale: list[Path] | None = None,
           vendored: Callable[[Path], bool] | None = None) -> Iterator[tuple[Path, str]]:
@@ -282,8 +290,9 @@ def _walk(top: Path, roots: list[str], notes: list[str],
             link = entry.is_symlink()
             target = os.path.realpath(entry.path) if link else os.path.join(real, entry.name)
             if link and not _inside(target, roots):
-                notes.append(f"{Path(entry.path)}: symlink leads outside the given paths, "
-                             "skipped")
+                if not _catkin_toplevel(folder, entry.name):
+                    notes.append(f"{Path(entry.path)}: symlink leads outside the given "
+                                 "paths, skipped")
                 continue
             try:
                 is_dir = entry.is_dir()

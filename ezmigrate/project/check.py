@@ -11,7 +11,6 @@ suppression happen afterwards (``lint/select.py``), so this module reports every
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -36,8 +35,6 @@ if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
     from ..compound.analysis import CompoundRun, Trees
-    from ..compound.tracing import EarlyTraces
-    from ..verify.pool import Standby
     from ..verify.pool_config import PoolConfig
     from ..verify.protocol import LoadOutcome
     from .facts_cache import FactsCache
@@ -103,9 +100,7 @@ def _legacy(path: str, result: FileResult, positions: Positions,
 
 def read_statically(candidates: list[Candidate], workers: int, index: OntologyIndex | None,
                     on_facts: Callable[[Candidate, bytes, FileFacts], None] | None = None,
-                    cache: FactsCache | None = None, reader: ReadingPool | None = None,
-                    on_trace: Callable[[], None] | None = None,
-                    on_read: Callable[[list[tuple[Candidate, FileFacts]]], None] | None = None
+                    cache: FactsCache | None = None, reader: ReadingPool | None = None
                     ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
     """What every legacy description declares, without importing user code.
 
@@ -116,10 +111,8 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
     description are read, never parsed. ``on_facts`` (when given) sees what the compound
     pass and the implementation checks read of each parsed file (``file_facts``); ``cache``
     keeps those readings, and the codemod's, by content (``facts_cache``); ``reader``
-    parses the files the cache lacks in its workers (``reading_pool``), and calls
-    ``on_trace`` as soon as one of them holds a tree to trace; ``on_read`` is told the
-    facts of every file parsed once all are read. Files come out in the order given, the
-    codemod's last.
+    parses the files the cache lacks in its workers (``reading_pool``). Files come out in
+    the order given, the codemod's last.
     """
     from ..compound.repository import SCAN_WHEN
     from ..files.prefilter import by_text
@@ -151,7 +144,7 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
         else:
             missing.append((candidate, data, verdict, key))
     items: list[tuple[Candidate, bytes, bool | None]] = [(c, d, v) for c, d, v, _ in missing]
-    made = reader.read_files(items, compounds, on_trace) if reader is not None \
+    made = reader.read_files(items, compounds) if reader is not None \
         else [(file_facts(c, d, compounds, v), None) for c, d, v in items]
     for (candidate, data, _, key), (found, own) in zip(missing, made, strict=True):
         facts[candidate.path] = found
@@ -160,8 +153,6 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
             alone[str(candidate.path)] = (data, taken)
         if cache is not None and key is not None:
             cache.put(key, found)
-    if on_read is not None:
-        on_read([(c, facts[c.path]) for c, _ in read if c.path in facts])
     plain: list[tuple[Candidate, bytes, FileResult]] = []
     declined: list[tuple[Candidate, bytes | None]] = []
     whole_package: set[Path] = set()
@@ -296,26 +287,6 @@ def checked_files(paths: list[Path], exclude: tuple[str, ...] = (),
                            include_vendored=include_vendored)
 
 
-def tracing_ahead(paths: list[Path], pool: PoolConfig, tracing: bool,
-                  cache_dir: Path | None) -> Standby | None:
-    """The tracing worker of a run over folders, started before anything else
-    (``Standby(ahead=True)``): its start costs a core about 0.1 s, which the run's first
-    tenth of a second, spent searching the repository on one core, leaves free; once the
-    files are read, the second core has them to read instead.
-
-    Not for a run over named files (a pre-commit hook's: one file seldom holds a tree to
-    trace), with one job (no second core to start it on), or with runs kept in the cache
-    (``cache_dir``): the run is then most often one of them (a CI job run again), which
-    traces nothing, and the worker would only take the second core from git's answers.
-    ``tracing`` False: the run traces nothing."""
-    if not tracing or pool.workers < 2 or not paths or not all(p.is_dir() for p in paths) \
-            or (cache_dir is not None and OutcomeCache(cache_dir).keeps_any()):
-        return None
-    from ..verify.pool import Standby
-
-    return Standby(pool, 1, ahead=True)
-
-
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               exclude: tuple[str, ...] = (),
               progress: Callable[[str], None] | None = None,
@@ -323,8 +294,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               world: WorldRun | None = None,
               include_vendored: bool = False,
               cache_dir: Path | None = None, launch: Launch | None = None,
-              trace: bool = False, discovered: Discovery | None = None,
-              tracing: Standby | None = None) -> CheckOutcome:
+              trace: bool = False, discovered: Discovery | None = None) -> CheckOutcome:
     """Static pass over legacy descriptions, the runtime's checks of EzSkiROS files, then
     the compound skills' trees against every description found (unless ``compounds`` is
     False: no EZ3 code is selected, so their reading and tracing would be thrown away),
@@ -333,8 +303,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     (the default): no user code is imported, EzSkiROS files are read from their syntax
     (``lint/ezskiros_static``) and compound skills are not traced; True (``--trace``) loads
     and traces them in the sandbox.
-    ``discovered``: the files of ``paths``, already being discovered (``checked_files``);
-    ``tracing``: the tracing worker, already starting (``tracing_ahead``)."""
+    ``discovered``: the files of ``paths``, already being discovered (``checked_files``)."""
     world = world or WorldRun(scenes=tuple(scene_files(paths, exclude)))
     world = with_init_scene(world, launch)
     candidates, notes = (discovered or checked_files(paths, exclude, include_vendored)).result()
@@ -346,31 +315,15 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     if progress is not None:
         progress(f"checking {len(candidates)} files")
     from ..codemod.settings import Settings
-    from ..verify.pool import Standby
     from .facts_cache import FactsCache
     from .frozen_heap import frozen_heap
 
     trees = None
-    standby: list[Standby] = [tracing] if tracing is not None and trace else []
-    starting = threading.Lock()
-
-    def start_tracing() -> None:
-        """Start the tracing worker once: as soon as the reading meets a tree to trace (in
-        the reading pool's thread when a worker read it), or at the reading's end
-        (``_traces_now``)."""
-        with starting:
-            if trace and not standby:
-                standby.append(Standby(pool, 1))
-
-    early = None
     if compounds:
         from ..compound.analysis import Trees
-        from ..compound.tracing import EarlyTraces
 
-        early = EarlyTraces(pool) if trace else None
         listed = launch.listed("skill_list") if launch is not None else None
-        trees = Trees(early=early,
-                      named=tuple(paths), exclude=exclude,
+        trees = Trees(named=tuple(paths), exclude=exclude,
                       launched=frozenset(listed) if listed is not None else None,
                       libraries=frozenset(launch.listed("libraries_list") or ())
                       if launch is not None else frozenset(), trace=trace)
@@ -384,10 +337,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     try:
         with frozen_heap():
             outcome = _run(candidates, outcome, index, pool, progress, skill_libraries, trees,
-                           standby, world, cache_dir, trace, facts, reader,
-                           start_tracing if trees is not None else None,
-                           None if early is None else _traces_now(early, start_tracing,
-                                                                  standby))
+                           world, cache_dir, trace, facts, reader)
             outcome.files += len(world.scenes)
             from ..lint.robot_vocabulary import (
                 as_the_robot_resolves,
@@ -408,10 +358,6 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
             return outcome
     finally:
         reader.close()
-        if early is not None:
-            early.close()
-        for workers in standby:
-            workers.close()
 
 
 def _checks_after_reading() -> None:
@@ -455,18 +401,12 @@ def _kept_run(paths: list[Path], candidates: list[Candidate], world: WorldRun,
 
 def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyIndex | None,
          pool: PoolConfig, progress: Callable[[str], None] | None,
-         skill_libraries: tuple[Path, ...], trees: Trees | None,
-         standby: list[Standby], world: WorldRun,
+         skill_libraries: tuple[Path, ...], trees: Trees | None, world: WorldRun,
          cache_dir: Path | None = None, trace: bool = False,
          facts_cache: FactsCache | None = None,
-         reader: ReadingPool | None = None,
-         start_tracing: Callable[[], None] | None = None,
-         traces_now: Callable[[list[tuple[Candidate, FileFacts]]], None] | None = None
-         ) -> CheckOutcome:
+         reader: ReadingPool | None = None) -> CheckOutcome:
     """``run_check`` once its compound pass (``trees``) is set up, with the heap it started
-    with frozen (``frozen_heap``); ``start_tracing``: what the reading calls when it meets
-    a tree to trace; ``traces_now``: what it calls with every file's facts once all are
-    read (``_traces_now``)."""
+    with frozen (``frozen_heap``)."""
     from ezskiros_runtime.model import SkillModel
 
     from ..verify.pool import BATCH, job_for, run_batched
@@ -505,7 +445,7 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     with line:  # erased before the next message
         for candidate, data, result in read_statically(
                 candidates, pool.workers, index, at_hand if trees is not None else None,
-                facts_cache, reader, start_tracing, traces_now):
+                facts_cache, reader):
             path = str(candidate.path)
             read.append((candidate, data))
             results.append((candidate, result))
@@ -538,8 +478,7 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     compound = _Compound()
     if trees is not None:
         compound = _compound(read, results, list(zip(loadable, outcomes, strict=True)),
-                             index, pool, skill_libraries, outcome.sources, trees,
-                             standby[0] if standby else None)
+                             index, pool, skill_libraries, outcome.sources, trees)
         outcome.diagnostics += compound.diagnostics
     # a legacy class the static pass kept (EZ902) in a file that is loaded because another
     # class in it was migrated: its findings are the static pass's, as before the migration
@@ -619,19 +558,6 @@ def _read_ezskiros(path: Path, data: bytes, index: OntologyIndex | None) -> Load
     return read_ezskiros_statically(tree, str(path)).outcome()
 
 
-def _traces_now(early: EarlyTraces, start_tracing: Callable[[], None],
-                standby: list[Standby]) -> Callable[[list[tuple[Candidate, FileFacts]]], None]:
-    """What the reading calls once every file is read: the trees only tracing reads are
-    traced from then on (``EarlyTraces``), while the run goes on with its static pass."""
-    def start(files: list[tuple[Candidate, FileFacts]]) -> None:
-        pending = [(c, f.trees.to_trace()) for c, f in files if f.trees is not None]
-        if any(classes for _, classes in pending):
-            start_tracing()
-            if standby:
-                early.start(pending, standby[0])
-    return start
-
-
 @dataclass
 class _Compound:
     """What the compound pass found: its diagnostics, the trees and the skill index."""
@@ -663,7 +589,17 @@ def _judge_uninferable(diagnostics: list[Diagnostic],
     passed = keys_passed(compound.models, compound.skills) \
         if compound.skills is not None else {}
     return judge(diagnostics, keys_read(facts for _, facts in implementing), passed,
-                 _scene_counter(world, index))
+                 _scene_counter(world, index), _misspelt_class(index))
+
+
+def _misspelt_class(index: OntologyIndex | None) -> Callable[[str], bool]:
+    """Whether a class name is one edit from a class of its prefix the ontology defines."""
+    from ezskiros_runtime.ontology.suggest import misspelt_class
+
+    if index is None:
+        return lambda _term: False
+    classes = [index.compact(c) for c in index.classes]
+    return lambda term: misspelt_class(term, classes) is not None
 
 
 def _implementations(implementing: list[tuple[Candidate, ModuleFacts]], skills: SkillIndex,
@@ -734,8 +670,8 @@ def _scene_counter(world: WorldRun, index: OntologyIndex | None
 def compound_pass(read: list[tuple[Candidate, bytes]],
                   results: list[tuple[Candidate, FileResult]],
                   loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
-                  pool: PoolConfig, libraries: tuple[Path, ...], trees: Trees,
-                  standby: Standby | None = None) -> tuple[CompoundRun, SkillIndex] | None:
+                  pool: PoolConfig, libraries: tuple[Path, ...], trees: Trees
+                  ) -> tuple[CompoundRun, SkillIndex] | None:
     """The one compound pass (issue 29): every compound skill of the run read or traced and
     checked against the index of this run's descriptions, the repository's around them,
     the standard library's and ``libraries``'. ``check`` and the review report of
@@ -761,7 +697,7 @@ def compound_pass(read: list[tuple[Candidate, bytes]],
         skills.add_description(info)
     add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],
                      "repository")
-    return analyse(read, skills, index, pool, library, trees, standby, around), skills
+    return analyse(read, skills, index, pool, library, trees, around), skills
 
 
 def compound_report(items: list[tuple[Candidate, bytes, FileResult]],
@@ -793,11 +729,10 @@ def scene_report(paths: tuple[Path, ...], exclude: tuple[str, ...],
 def _compound(read: list[tuple[Candidate, bytes]], results: list[tuple[Candidate, FileResult]],
               loaded: list[tuple[Candidate, LoadOutcome]], index: OntologyIndex | None,
               pool: PoolConfig, libraries: tuple[Path, ...],
-              sources: dict[str, str], trees: Trees,
-              standby: Standby | None = None) -> _Compound:
+              sources: dict[str, str], trees: Trees) -> _Compound:
     """``compound_pass`` as ``check``'s diagnostics (EZ3xx), with the trees and the index
     they were checked against."""
-    done = compound_pass(read, results, loaded, index, pool, libraries, trees, standby)
+    done = compound_pass(read, results, loaded, index, pool, libraries, trees)
     if done is None:
         return _Compound()
     run, skills = done

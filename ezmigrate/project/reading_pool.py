@@ -139,19 +139,6 @@ def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds
     return found, caught_up
 
 
-def _to_trace(readings: list[Reading]) -> bool:
-    """Whether a file read holds a compound tree its syntax does not give."""
-    return any(facts.trees is not None and facts.trees.to_trace() for facts, _ in readings)
-
-
-def _traced(done: Future[tuple[list[Reading], list[tuple[str, FileResult]]]],
-            on_trace: Callable[[], None]) -> None:
-    """``on_trace`` for a worker's chunk that holds a tree to trace (a chunk cancelled or
-    lost says nothing: its files are read again in the main process)."""
-    if not done.cancelled() and done.exception() is None and _to_trace(done.result()[0]):
-        on_trace()
-
-
 class ReadingPool:
     """Forked readers for one run: ``workers`` processes read, the main one among them
     (so one fewer is forked; ``workers`` under two: none, the main reads alone). ``settings``:
@@ -206,13 +193,11 @@ class ReadingPool:
                 seed_scene(path, *parsed)
         self._scenes = []
 
-    def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
-                   on_trace: Callable[[], None] | None = None) -> list[Reading]:
+    def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
+                   ) -> list[Reading]:
         """``file_facts`` of each ``(candidate, bytes, the prefilter's text verdict)``, and
         the codemod's reading of those the plain reader declines (``_read_files``), in
-        order: in the workers when there are enough. ``on_trace`` is called when a chunk
-        read holds a tree to trace, as soon as it is read (from the pool's thread for a
-        worker's chunk): the tracing worker starts while the files are still being read.
+        order: in the workers when there are enough.
 
         Files of the same bytes are read once (a workspace keeps a fork beside its
         upstream, a vendored copy of a package): the copies' facts are moved from the
@@ -223,7 +208,7 @@ class ReadingPool:
         for item in items:
             if firsts.setdefault(item[1], len(unique)) == len(unique):
                 unique.append(item)
-        read = self._read_all(unique, compounds, on_trace)
+        read = self._read_all(unique, compounds)
         if len(unique) == len(items):
             return read
         found: list[Reading] = []
@@ -237,13 +222,13 @@ class ReadingPool:
             else:
                 found.append((facts, own))  # a placeholder, read again below
                 again.append(index)
-        for index, reading in zip(again, self._read_all([items[i] for i in again], compounds,
-                                                        on_trace), strict=True):
+        for index, reading in zip(again, self._read_all([items[i] for i in again], compounds),
+                                  strict=True):
             found[index] = reading
         return found
 
-    def _read_all(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
-                  on_trace: Callable[[], None] | None = None) -> list[Reading]:
+    def _read_all(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
+                  ) -> list[Reading]:
         """``read_files`` of files whose bytes all differ."""
         here = None if self.settings is None else functools.partial(_here, self.settings)
         pool = self._executor() if len(items) >= SHARED_FROM else None
@@ -254,17 +239,12 @@ class ReadingPool:
         starts = list(range(0, len(items), size))
         futures = {start: pool.submit(_read_in_worker, items[start:start + size], compounds)
                    for start in starts}
-        if on_trace is not None:
-            for future in futures.values():
-                future.add_done_callback(lambda done: _traced(done, on_trace))
         self._start_scenes()
         mine: dict[int, list[Reading]] = {}
         for start in reversed(starts):  # the main takes chunks from the end, while no
             if not futures[start].cancel():  # worker has started them: the share each
                 break  # does is what it gets through, whatever a chunk costs
             mine[start] = _read_files(items[start:start + size], compounds, here)
-            if on_trace is not None and _to_trace(mine[start]):
-                on_trace()
         if self.idle is not None and not all(futures[start].done() for start in starts
                                              if start not in mine):
             idle, self.idle = self.idle, None

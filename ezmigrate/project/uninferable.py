@@ -79,14 +79,19 @@ def keys_passed(models: Iterable[CompoundModel], skills: SkillIndex
 
 def judge(diagnostics: Sequence[Diagnostic], read: dict[str, set[str]],
           passed: dict[str, dict[str, bool]],
-          elements_of: Callable[[str], int | None]) -> list[Diagnostic]:
+          elements_of: Callable[[str], int | None],
+          misspelt: Callable[[str], bool] = lambda _term: False) -> list[Diagnostic]:
     """``diagnostics`` with each EZ105 kept a warning or lowered to info, as the module
     doc says; ``elements_of(class)`` is the number of elements of that class the run's
-    scenes hold (None: no scene)."""
+    scenes hold (None: no scene); ``misspelt(term)``: the unknown class is one edit from a
+    known one of its loaded namespace, a typo, which stays a warning even where every tree
+    passes a value (the task planner types the parameter by its class, and the GUI lists
+    no element for it)."""
     out = []
     for d in diagnostics:
         if d.code == UNKNOWN and d.term_is_class and d.param and d.severity == "warning" \
-                and passed.get(d.skill, {}).get(d.param, False):
+                and passed.get(d.skill, {}).get(d.param, False) \
+                and not (d.term is not None and misspelt(d.term)):
             # SkiROS2 matches a class only to ground a parameter; one every tree passes a
             # value to is never grounded, so its unknown class changes nothing at run time
             out.append(replace(d, severity="info", message=f"{d.message}; info: every tree "

@@ -85,11 +85,9 @@ ZYGOTE = "ezmigrate.verify.zygote"
 
 
 class _Worker:
-    """One zygote (``zygote.py``), started and ready; with ``ontology_later`` only started:
-    it imports while the run finds its ontology, loads the files ``send_ontology`` names,
-    and ``wait_ready`` waits for it to be ready."""
+    """One zygote (``zygote.py``), started and ready."""
 
-    def __init__(self, config: PoolConfig, crew: _Crew, ontology_later: bool = False) -> None:
+    def __init__(self, config: PoolConfig, crew: _Crew) -> None:
         self.config = config
         command, env = [sys.executable, "-m", ZYGOTE], None
         if is_foreign(config.python):
@@ -98,19 +96,10 @@ class _Worker:
         args = [*command, "--timeout", str(config.timeout), "--memory-mb",
                 str(config.memory_mb),
                 *(f"--hide={folder}" for folder in hidden_folders(os.environ))]
-        for path in () if ontology_later else config.ontology:
+        for path in config.ontology:
             args += ["--ontology", path]
-        self.process = crew.spawn([*args, *(["--ontology-later"] if ontology_later else [])],
-                                  env)
-        if not ontology_later:
-            self.wait_ready()
-
-    def send_ontology(self, ontology: Sequence[str]) -> None:
-        """The ontology files a worker started with ``ontology_later`` loads."""
-        with contextlib.suppress(OSError):  # it died: ``wait_ready`` says so
-            assert self.process.stdin is not None
-            self.process.stdin.write(json.dumps({"ontology": list(ontology)}) + "\n")
-            self.process.stdin.flush()
+        self.process = crew.spawn(args, env)
+        self.wait_ready()
 
     def wait_ready(self) -> None:
         ready = self.process.stdout.readline() if self.process.stdout else ""
@@ -163,41 +152,16 @@ class Standby:
     pass finds a compound skill to trace, and the pass goes on meanwhile. ``run_jobs(...,
     standby=)`` takes them before starting new ones; ``close`` stops those never taken. An
     interrupt stops them like any other worker (they share the run's crew).
-
-    ``ahead``: started at the very start of a run, before it knows its ontology, while the
-    second core has nothing else to do (the run is searching the repository); they import
-    meanwhile, and load the ontology ``use_ontology`` names. No thread waits for them (a
-    reading worker forked later must not copy one): ``take`` does, and ``close`` ends
-    those never taken at once.
     """
 
-    def __init__(self, config: PoolConfig, count: int, ahead: bool = False) -> None:
+    def __init__(self, config: PoolConfig, count: int) -> None:
         self.config = config
         self.crew = _Crew()
         self._ready: queue.Queue[_Worker | None] = queue.Queue()
-        self._ahead: list[_Worker] = []
-        self._told = False
-        self._lock = threading.Lock()  # ``take`` runs in each of a run's threads
-        self._threads: list[threading.Thread] = []
-        if ahead:
-            for _ in range(max(1, count)):
-                with contextlib.suppress(_Stopped, OSError):
-                    self._ahead.append(_Worker(config, self.crew, ontology_later=True))
-            return
         self._threads = [threading.Thread(target=self._start, daemon=True)
                          for _ in range(max(1, count))]
         for thread in self._threads:
             thread.start()
-
-    def use_ontology(self, ontology: tuple[str, ...]) -> None:
-        """The ontology the workers started ``ahead`` load (once: the run's)."""
-        with self._lock:
-            if self._told:
-                return
-            self._told = True
-            self.config = replace(self.config, ontology=ontology)
-            for worker in self._ahead:
-                worker.send_ontology(ontology)
 
     def _start(self) -> None:
         try:
@@ -207,17 +171,6 @@ class Standby:
 
     def take(self) -> _Worker | None:
         """A started worker (waiting for one still starting), or None when none is left."""
-        self.use_ontology(self.config.ontology)  # never told: the config's
-        while True:
-            with self._lock:
-                if not self._ahead:
-                    break
-                worker = self._ahead.pop(0)
-            try:
-                worker.wait_ready()
-                return worker
-            except (RuntimeError, OSError):
-                worker.kill()
         while any(t.is_alive() for t in self._threads) or not self._ready.empty():
             try:
                 return self._ready.get(timeout=0.05)
@@ -231,10 +184,6 @@ class Standby:
         for thread in self._threads:
             if thread.ident is not None:
                 thread.join()
-        with self._lock:  # still importing, or waiting for its ontology: nothing to finish
-            ahead, self._ahead = self._ahead, []
-        for never in ahead:
-            never.kill()
         while not self._ready.empty():
             worker = self._ready.get_nowait()
             if worker is not None:

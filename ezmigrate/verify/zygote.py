@@ -265,9 +265,6 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--memory-mb", type=int, default=2048)
     parser.add_argument("--hide", action="append", default=[],
                         help="a folder the loaded modules must not see (repeatable)")
-    parser.add_argument("--ontology-later", action="store_true",
-                        help="read the ontology files as the first line of stdin, "
-                             "{\"ontology\": [...]}, once the imports are done")
     args = parser.parse_args(argv)
     for signum in (signal.SIGTERM, signal.SIGHUP, signal.SIGINT):
         signal.signal(signum, _stop)
@@ -283,13 +280,7 @@ def main(argv: list[str] | None = None) -> int:
     from ezskiros_runtime.ontology.active import use_ontology
     from ezskiros_runtime.ontology.load import load_index
 
-    ontology = args.ontology
-    if args.ontology_later:  # started before the run knew its ontology (``Standby``)
-        line = sys.stdin.readline()
-        if line.strip() in ("", QUIT):
-            return 0
-        ontology = list(json.loads(line)["ontology"])
-    use_ontology(load_index(ontology or None))
+    use_ontology(load_index(args.ontology or None))
     with contextlib.suppress(Exception):  # only a lost speed-up if it fails
         warm_up()
     gc.collect()

@@ -28,7 +28,8 @@ UPSTREAM_PROCESSORS = frozenset({"NoProcessor", "Serial", "SerialStar", "Sequent
                                  "Selector", "SelectorStar", "ParallelFf", "ParallelFs",
                                  "NoFail"})
 ELSEWHERE = {"RetryOnFail": "the upstream branch ros2_roscon24_workshop (the ROSCon 2024 "
-                            "workshop's, which the public pyrobosim skill library targets)"}
+                            "workshop's, which the public pyrobosim skill library targets)",
+             **dict.fromkeys(("Loop", "InferInvalid"), "forks of SkiROS2 only")}
 """Where a processor that upstream's other branches lack does exist (shared doc §3)."""
 _MAX_DEPTH = 16
 OBTAINED = {"static": "tree read statically", "traced": "tree traced by running expand"}
@@ -291,7 +292,7 @@ class _Checker:
         self._processor(self.model.processor, self.model.expand_line)
         for node, _ in self.nodes:
             if isinstance(node, CallProblem):
-                self.add("compound-call-shape", node.line, node.message)
+                self.add(node.kind, node.line, node.message)
             elif isinstance(node, ProcessorNode):
                 self._processor(node.processor, node.line)
             else:
@@ -299,13 +300,18 @@ class _Checker:
         return self.found
 
     def _processor(self, name: str, line: int) -> None:
+        undefined = {n.subject for n, _ in self.nodes
+                     if isinstance(n, CallProblem) and n.kind == "processor-undefined"}
         for part in name.replace(")", "").split("("):
-            if part and part not in UPSTREAM_PROCESSORS:
-                where = ELSEWHERE.get(part, "forks of SkiROS2 only")
+            if part and part not in UPSTREAM_PROCESSORS and part not in undefined:
+                where = ELSEWHERE.get(part)
                 self.add("processor-not-upstream", line,
                          f"processor {part} is not on SkiROS2's master and ros2 branches; it "
-                         f"exists on {where}: the tree runs only where that is installed",
-                         part)
+                         f"exists on {where}: the tree runs only where that is installed"
+                         if where is not None else
+                         f"processor {part} is not one of SkiROS2's (master, ros2) nor of a "
+                         "known fork's: the lab's own processor class, which this run does "
+                         "not judge", part)
 
     # -- one child ----------------------------------------------------------------------
 
@@ -378,11 +384,34 @@ class _Checker:
         self._dangling(node)
 
     def _label(self, node: SkillNode, child: DescriptionInfo) -> None:
-        implements = self.index.implementations.get(node.label) if node.label else None
+        if not node.label:
+            return
+        implements = self.index.implementations.get(node.label)
         if implements is not None and implements != child.name:
             self.add("label-other-type", node.line,
                      f"label {node.label!r} names an implementation of {implements}, not of "
                      f"{child.name}: SkiROS2 runs it anyway (upstream issue #80)", node.type)
+        if implements is None:
+            self._unknown_label(node, child)
+
+    def _unknown_label(self, node: SkillNode, child: DescriptionInfo) -> None:
+        """A label no implementation the run knows has: a warning when the run knows the
+        type's implementations (most likely a typo of one), info when it knows none of them
+        or could not read every file (another library may hold it)."""
+        known = sorted(label for label, described in self.index.implementations.items()
+                       if described == child.name)
+        close = difflib.get_close_matches(node.label, known, 1, 0.6)
+        unsure = not known or bool(self.index.unread)
+        where = (f"the implementations of {child.name} the run knows are "
+                 f"{', '.join(known[:4])}{', ...' if len(known) > 4 else ''}" if known else
+                 f"the run knows no implementation of {child.name} (it may come from a "
+                 "library this run does not read)")
+        self.add("unknown-label", node.line,
+                 f"label {node.label!r} names no implementation this run knows ({where}): "
+                 "SkillInstanciator.add_instance asks PluginLoader.getPluginByName for it, "
+                 "which raises when the compound skill expands", node.type,
+                 f"Did you mean {close[0]!r}?" if close else None,
+                 "info" if unsure else None)
 
     def _remaps(self, node: SkillNode, child: DescriptionInfo) -> dict[str, str]:
         """Check each remap; return the renames SkiROS2 applies (child key -> new key)."""
@@ -432,6 +461,12 @@ class _Checker:
                 self.add("specify-parameter-object", node.line,
                          parameter_object_message(str(value[PARAMETER_OBJECT])), node.type,
                          f"Write self.params[{value[PARAMETER_OBJECT]!r}].value.")
+            if key in keys and key in self.index.modified_by.get(child.name, {}):
+                self.add("specify-modified-key", node.line,
+                         f"specify key {key!r}: {child.name} declares it only in an "
+                         "implementation's modifyDescription, which runs after specify is "
+                         "applied (SkillWrapper.setInstance), so SkiROS2 drops the value",
+                         node.type)
             if key not in keys:
                 why = f" (remapped, it is called {renamed[key]!r})" if key in renamed else ""
                 if key in self.index.self_added.get(child.name, ()):

@@ -92,6 +92,12 @@ STANDARD_LIBRARY: tuple[DescriptionInfo, ...] = (
 )
 """``skiros2_std_lib``'s descriptions (master), from legacy-compound-skills.md §3."""
 
+STANDARD_IMPLEMENTATIONS: dict[str, str] = {
+    "wait": "Wait", "wm_set_relation": "WmSetRelation", "wm_set_properties": "WmSetProperties",
+    "wm_move_object": "WmMoveObject", "wm_move_and_transform_object": "WmMoveObject",
+    "counter": "Counter", "task_plan": "TaskPlan"}
+"""``skiros2_std_lib``'s implementations: label (the class name) -> description type."""
+
 STANDARD_LIBRARY_ROS2: dict[str, DescriptionInfo] = {
     "WmSetRelation": _std("WmSetRelation", {
         "Src": "sumo:Object", "Relation": None, "Dst": "sumo:Object", "RelationState": None,
@@ -142,7 +148,7 @@ class SkillIndex:
 
     @classmethod
     def with_standard_library(cls) -> SkillIndex:
-        return cls({d.name: d for d in STANDARD_LIBRARY})
+        return cls({d.name: d for d in STANDARD_LIBRARY}, dict(STANDARD_IMPLEMENTATIONS))
 
     def add_description(self, info: DescriptionInfo) -> None:
         """A repository's own description wins over a library's of the same name; two

@@ -81,9 +81,16 @@ class CallProblem:
 
     message: str
     line: int = field(default=0, compare=False)
+    kind: str = "compound-call-shape"
+    """The catalogue key of its finding (``processor-undefined`` for a processor class the
+    module neither defines nor imports)."""
+    subject: str = ""
+    """The name it is about (the undefined processor's), for the checks of the same name."""
 
     def to_json(self, positions: bool = True) -> dict[str, Any]:
         data: dict[str, Any] = {"node": "problem", "message": self.message}
+        if self.kind != "compound-call-shape":
+            data.update(kind=self.kind, subject=self.subject)
         if positions:
             data["line"] = self.line
         return data
@@ -147,7 +154,8 @@ def node_from_json(data: dict[str, Any]) -> Node | CallProblem:
     """Rebuild a node from ``to_json`` (the child process sends trees this way)."""
     kind = data["node"]
     if kind == "problem":
-        return CallProblem(data["message"], data.get("line", 0))
+        return CallProblem(data["message"], data.get("line", 0),
+                           data.get("kind", "compound-call-shape"), data.get("subject", ""))
     children = tuple(node_from_json(c) for c in data.get("children", ()))
     remap = tuple((str(k), str(v)) for k, v in data.get("remap", ()))
     specify = tuple((str(k), v) for k, v in data.get("specify", ()))

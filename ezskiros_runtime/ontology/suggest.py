@@ -63,3 +63,29 @@ def closest_names(name: str, candidates: Iterable[str], limit: int = 3) -> list[
         scored.append((score, exact_case.ratio(), candidate))
     scored.sort(key=lambda item: (-item[0], -item[1], item[2]))
     return [candidate for _score, _tie, candidate in scored[:limit]]
+
+
+def one_edit_apart(a: str, b: str) -> bool:
+    """Whether ``b`` is ``a`` with one letter dropped, added, changed, or two neighbours
+    swapped (the typos a hand makes): what makes an unknown name almost certainly a
+    misspelling of a known one."""
+    if a == b or abs(len(a) - len(b)) > 1:
+        return False
+    if len(a) == len(b):
+        diff = [i for i, (x, y) in enumerate(zip(a, b)) if x != y]
+        return len(diff) == 1 or (len(diff) == 2 and diff[1] == diff[0] + 1
+                                  and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]])
+    short, long = (a, b) if len(a) < len(b) else (b, a)
+    i = next((k for k, (x, y) in enumerate(zip(short, long)) if x != y), len(short))
+    return short[i:] == long[i + 1:]
+
+
+def misspelt_class(name: str, classes: Iterable[str]) -> str | None:
+    """The known class (compact ``prefix:Local``) of the same prefix that ``name`` is one
+    edit away from, or None."""
+    prefix, local = _split_compact(name)
+    for candidate in classes:
+        other_prefix, other_local = _split_compact(candidate)
+        if other_prefix == prefix and one_edit_apart(local, other_local):
+            return candidate
+    return None

@@ -81,6 +81,9 @@ class middle_impl(SkillBase):
     def createDescription(self):
         self.setDescription(Middle(), self.__class__.__name__)
 
+    def modifyDescription(self, skill):
+        skill.addParam("Pace", 1.0, ParamTypes.Optional)
+
     def expand(self, skill):
         skill(self.skill("Child", "", remap={{"Target": "Spot"}}))
 
@@ -129,6 +132,12 @@ CASES: dict[str, tuple[str, str]] = {
     "EZ312": (tree(f'self.skill("Bin", "", {TARGET})'), tree(f'self.skill("Child", "", {TARGET})')),
     "EZ313": (tree(expand='skill(self.skill("Child", "", remap={"Target": self.wmi.box}))'),
               tree(expand='skill(self.skill("Child", "", remap={"Target": "Box"}))')),
+    "EZ317": (tree(f'self.skill(Sequentail())(self.skill("Child", "", {TARGET}))'),
+              tree(f'self.skill(Sequential())(self.skill("Child", "", {TARGET}))')),
+    "EZ318": (tree('self.skill("Middle", "midle_impl", remap={"Spot": "Box"})'),
+              tree('self.skill("Middle", "middle_impl", remap={"Spot": "Box"})')),
+    "EZ319": (tree('self.skill("Middle", "", remap={"Spot": "Box"}, specify={"Pace": 2.0})'),
+              tree('self.skill("Middle", "", remap={"Spot": "Box"})')),
     "EZ101": (legacy(f'self.addParam("Speed", 0.1, {REQ}, "metres per second")'),
               legacy(f'self.addParam("Speed", 0.1, {REQ}, description="metres per second")')),
     "EZ102": (legacy(f'self.addParam("Speed", 0.1, {REQ}, [ParamOptions.Lock])'),

@@ -111,8 +111,20 @@ def _ez209(tmp_path: Path, source: str) -> list[str]:
     return [str(d["severity"]) for d in json.loads(run.stdout)]
 
 
+UNKNOWN_CLASS = TYPO.replace("skiros:TransformationPoze", "skiros:GraspTarget")
+
+
 def test_an_unknown_class_every_tree_passes_a_value_to_is_info(tmp_path):
     """SkiROS2 matches a parameter's class only to ground it: with the value always passed
-    (the parent remaps its own Goal onto Pose), the misspelt class changes nothing."""
+    (the parent remaps its own Goal onto Pose), a class the ontology lacks (the lab's own,
+    perhaps) changes nothing the run can see."""
+    assert _ez209(tmp_path / "alone", UNKNOWN_CLASS) == ["warning"]
+    assert _ez209(tmp_path / "passed", UNKNOWN_CLASS + PARENT) == ["info"]
+
+
+def test_a_class_one_edit_from_a_known_one_stays_a_warning(tmp_path):
+    """A typo of a class of a loaded namespace (TransformationPoze) is a mistake even where
+    every tree passes a value: the task planner types the parameter by its class, the GUI
+    lists no element for it, and the migrated module fails to import (issue 42)."""
     assert _ez209(tmp_path / "alone", TYPO) == ["warning"]
-    assert _ez209(tmp_path / "passed", TYPO + PARENT) == ["info"]
+    assert _ez209(tmp_path / "passed", TYPO + PARENT) == ["warning"]

@@ -1,4 +1,4 @@
-"""Workers started ahead of their jobs (``pool.Standby``) are used, and never leak.
+"""Workers started before their jobs (``pool.Standby``) are used, and never leak.
 
 Real zygote workers: the run's crew records every process it spawned, so the tests count
 processes instead of timing anything.
@@ -7,12 +7,9 @@ processes instead of timing anything.
 from __future__ import annotations
 
 import os
-from dataclasses import replace
 from pathlib import Path
 
 from ezmigrate.verify.pool import PoolConfig, Standby, job_for, run_jobs
-from ezmigrate.verify.protocol import LoadOutcome
-from ezskiros_runtime.ontology.index import bundled_ontology_path
 
 LEGACY = """\
 from skiros2_common.core.abstract_skill import SkillDescription
@@ -45,57 +42,11 @@ def test_workers_nobody_took_are_stopped() -> None:
     assert all(p.poll() is not None for p in standby.crew.processes)
 
 
-PAINT = """\
-from ezskiros_runtime import SkillDescription
-from ezskiros_runtime.ontology import lab
-
-
-class PaintIt(SkillDescription):
-    def description(self, Paint: lab.Paint):
-        pass
-"""
-LAB_OWL = Path(__file__).resolve().parents[2] / "fixtures" / "ros_repo" / "owl" / "lab.owl"
-
-
-def _ahead(tmp_path: Path, ontology: tuple[str, ...]) -> tuple[LoadOutcome, int]:
-    """``PaintIt`` loaded by a worker started ahead and told ``ontology`` later; the
-    processes the run started."""
-    (tmp_path / "paint.py").write_text(PAINT)
-    config = PoolConfig(workers=1, ontology=ontology)
-    standby = Standby(replace(config, ontology=()), 1, ahead=True)
-    try:
-        standby.use_ontology(ontology)
-        [outcome] = run_jobs([job_for(tmp_path / "paint.py")], config, standby=standby)
-    finally:
-        standby.close()
-    assert all(p.wait(timeout=30) is not None for p in standby.crew.processes)
-    return outcome, len(standby.crew.processes)
-
-
-def test_a_worker_started_ahead_loads_the_ontology_it_is_told(tmp_path: Path) -> None:
-    """Started before the run knows its ontology (``ahead``), told it later: its jobs are
-    judged against that ontology, as a worker started with it would judge them."""
-    core = str(bundled_ontology_path())
-    told, started = _ahead(tmp_path, (core, str(LAB_OWL)))
-    assert started == 1  # the worker started ahead served: no other was started
-    assert told.loaded and not told.errors and told.models[0]["name"] == "PaintIt"
-    without, _ = _ahead(tmp_path, (core,))  # the lab's classes unknown: refused
-    assert not without.loaded or without.errors or without.findings
-
-
-def test_a_worker_started_ahead_and_never_used_is_ended_at_once() -> None:
-    standby = Standby(PoolConfig(workers=1), 1, ahead=True)
-    assert len(standby.crew.processes) == 1
-    standby.close()  # never told its ontology: it waits for it, or still imports
-    assert all(p.poll() is not None for p in standby.crew.processes)
-
-
 def test_a_worker_quits_when_told_though_a_forked_process_holds_its_pipe() -> None:
-    """A reading worker forked after the tracing worker started holds a copy of that
+    """A process forked after a worker started (a reading worker) holds a copy of that
     worker's stdin, which then never ends: the pool says ``QUIT`` instead. The forked
     process here waits on a pipe of its own until the test releases it."""
-    standby = Standby(PoolConfig(workers=1), 1, ahead=True)
-    standby.use_ontology(())
+    standby = Standby(PoolConfig(workers=1), 1)
     worker = standby.take()
     assert worker is not None
     release_read, release_write = os.pipe()

@@ -5,8 +5,8 @@ before and nothing left in the module uses it (implementation classes usually st
 ``SkillBase`` or ``ParamTypes``). A use is a reference to the bound name (``name_counts``):
 ``wmi.Element(...)`` uses ``wmi``, not an imported ``Element``. An import that was already
 unused stays byte for byte: removing it would put an unrelated line in the diff and could
-drop an import-time side effect. Comments that stood above a removed import move to the statement that takes its
-place, so banners like ``# SkiROS2 imports`` survive.
+drop an import-time side effect. Comments that stood above a removed import move to the
+statement that takes its place, so banners like ``# SkiROS2 imports`` survive.
 
 The new imports go where the first legacy import was, unless a star import follows it: a
 helper module imported with ``*`` may re-export the legacy ``SkillDescription`` and would

@@ -148,3 +148,28 @@ def test_closest_names_never_suggests_the_name_itself() -> None:
         "skiros:Products"
     ]
     assert closest_names("x", ["a", "b"], limit=0) == []
+
+
+@pytest.mark.parametrize(("a", "b", "apart"), [
+    ("Location", "Lcoation", True),   # two neighbours swapped
+    ("Location", "Locaton", True),    # one dropped
+    ("Location", "Locattion", True),  # one doubled
+    ("Location", "Lokation", True),   # one changed
+    ("Location", "Location", False),  # the same name is no typo
+    ("Location", "Lcoaiton", False),  # two edits
+    ("Product", "Location", False),
+])
+def test_one_edit_apart_is_the_typos_a_hand_makes(a: str, b: str, apart: bool) -> None:
+    from ezskiros_runtime.ontology.suggest import one_edit_apart
+
+    assert one_edit_apart(a, b) is apart
+    assert one_edit_apart(b, a) is apart
+
+
+def test_a_misspelt_class_is_matched_within_its_own_prefix() -> None:
+    from ezskiros_runtime.ontology.suggest import misspelt_class
+
+    classes = ["skiros:Location", "rparts:Locator"]
+    assert misspelt_class("skiros:Lcoation", classes) == "skiros:Location"
+    assert misspelt_class("cora:Lcoation", classes) is None
+    assert misspelt_class("skiros:Location", classes) is None
