@@ -429,6 +429,32 @@ RULES: tuple[Rule, ...] = (
          "Nothing to fix if the skill runs later; else add the elements or relations the "
          "pre-condition needs to the scene.",
          ("cannot-start",)),
+    Rule("EZ410", "ontology-undefined-reference", "warning",
+         "An rdfs:subClassOf, rdfs:subPropertyOf, rdfs:domain or rdfs:range in the lab's "
+         "ontology names a term that no loaded ontology defines, in a namespace that "
+         "defines others (a typo): the lab's class falls outside get_sub_classes of its "
+         "intended parent, and parameters typed by that parent never match its elements.",
+         "Name the defined term the suggestion gives, or define the term.",
+         ("ontology-undefined-reference",),
+         skiros2="WorldModel.get_sub_classes (and get_sub_properties) follow only the "
+                 "axioms as written: the misspelt parent has no sub-classes, the intended "
+                 "one lacks the lab's class"),
+    Rule("EZ411", "scene-unknown-predicate", "warning",
+         "A scene uses a predicate that no loaded ontology declares: the world model drops "
+         "the value or relation when it loads the scene.",
+         "Fix the predicate's name (see the suggestion), or declare the property in the "
+         "lab's ontology.",
+         ("scene-unknown-predicate",),
+         skiros2="WorldModel.get_individual logs \"Predicate is not defined in the "
+                 "ontology\" and skips the triple"),
+    Rule("EZ412", "ontology-property-is-class", "warning",
+         "A property declared with the IRI of a class (an owl:DatatypeProperty written "
+         "rdf:about=\"...#Skill\", SkiROS2 pull request #114): the one IRI is then both a "
+         "class and a predicate in the world model.",
+         "Give the property its own IRI.",
+         ("ontology-property-is-class",),
+         skiros2="WorldModel.get_sub_classes and get_sub_properties both answer for the "
+                 "IRI: elements typed by the class and values of the property mix"),
     # EZ9xx: migration state
     Rule("EZ901", "not-migrated", "error",
          "A legacy description that `ezmigrate rewrite` would convert is still in the "

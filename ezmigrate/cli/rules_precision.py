@@ -59,6 +59,7 @@ LAB_REPOSITORY: tuple[Row, ...] = (
     Row("EZ313", 2, 2),
     Row("EZ314", 1, 1),
     Row("EZ315", 1, 1),
+    Row("EZ319", 1, 1),
     Row("EZ407", 1, 1),
     Row("EZ905", 1, 1),
 )

@@ -19,7 +19,9 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
+from ezskiros_runtime.compound.checks import ELSEWHERE, UPSTREAM_PROCESSORS
 from ezskiros_runtime.compound.model import (
+    COMPUTED,
     CallProblem,
     CompoundModel,
     Node,
@@ -35,6 +37,8 @@ from ezskiros_runtime.compound.trace import (
 
 from ..codemod.core.ast_names import ast_dotted_name
 from ..lint.ezskiros_static import shape_of
+
+PROCESSORS = UPSTREAM_PROCESSORS | frozenset(ELSEWHERE)
 
 
 class _Computed(Exception):
@@ -86,6 +90,15 @@ def read_compounds(tree: ast.Module, path: str) -> list[CompoundModel | NeedsTra
     return found
 
 
+KNOWN_STAR: dict[str, frozenset[str]] = dict.fromkeys(
+    ("skiros2_skill.core.skill", "skiros2_skill.core.processors"),
+    PROCESSORS | frozenset({"SkillBase", "SkillCore", "SkillDescription", "SkillWrapper",
+                            "ParamTypes", "ParamOptions", "Element", "State", "Params"}))
+"""What ``from M import *`` binds for SkiROS2's modules a tree's processors come from,
+as far as a processor's name goes: every processor of every branch and fork
+(``compound.checks``), so that a misspelt one is still found undefined."""
+
+
 def module_names(tree: ast.Module) -> frozenset[str] | None:
     """The names a module binds at its top level (imports, classes, functions, assignments,
     also inside top-level ``if``/``try``), and the builtins; None when a star import may
@@ -95,7 +108,10 @@ def module_names(tree: ast.Module) -> frozenset[str] | None:
     while todo:
         node = todo.pop()
         if isinstance(node, ast.ImportFrom) and any(a.name == "*" for a in node.names):
-            return None
+            if node.level or node.module not in KNOWN_STAR:
+                return None  # any name may come from it
+            names |= KNOWN_STAR[node.module]
+            continue
         if isinstance(node, (ast.Import, ast.ImportFrom)):
             names.update((a.asname or a.name).split(".")[0] for a in node.names)
         elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
@@ -262,6 +278,9 @@ class _Reader:
         self.body = expand.body
         self.bound = None if bound is None else bound | _bound_in(expand)
         self.problems: list[CallProblem] = []
+        self.tolerant = False
+        """Reading the nodes of a statement that is not literal (``_loose``): a value
+        computed at run time is ``COMPUTED``, a pair with a computed key is left out."""
 
     def read(self) -> tuple[str, tuple[Node | CallProblem, ...], tuple[tuple[int, str], ...]]:
         """The tree's processor and children, and the statements it could not read (line,
@@ -280,7 +299,33 @@ class _Reader:
                 processor, children = self._statement(stmt, processor, children)
             except _Computed as computed:
                 gaps.append((stmt.lineno, str(computed)))
+                children += self._loose(stmt)
         return processor, (*children, *self.problems), tuple(gaps)
+
+    def _loose(self, stmt: ast.stmt) -> list[Node | CallProblem]:
+        """The literal ``self.skill(...)`` calls inside a statement the tree cannot be read
+        from (a loop, a branch): where they go in the tree is not known, but each node is,
+        and its own checks (its type, label, remaps and specifies) hold wherever it goes."""
+        found: list[Node | CallProblem] = []
+        self.tolerant = True
+        try:
+            self._walk_loose(stmt, found)
+        finally:
+            self.tolerant = False
+        return found
+
+    def _walk_loose(self, stmt: ast.stmt, found: list[Node | CallProblem]) -> None:
+        for call in ast.walk(stmt):
+            if not isinstance(call, ast.Call):
+                continue
+            try:
+                if self._is_skill_call(call):
+                    found.append(self._skill(call, ()))
+                elif isinstance(call.func, ast.Attribute) and call.func.attr == "setProcessor" \
+                        and len(call.args) == 1:
+                    self._processor(call.args[0])  # for an undefined processor's problem
+            except _Computed:
+                continue
 
     def _statement(self, stmt: ast.stmt, processor: str, children: list[Node | CallProblem]
                    ) -> tuple[str, list[Node | CallProblem]]:
@@ -343,7 +388,8 @@ class _Reader:
             return CallProblem("self.skill(self.skill(...), ...) passes a node where "
                                "SkiROS2 wants a type name or a processor; call the node "
                                "instead: self.skill(...)(child, ...)", call.lineno)
-        remap = tuple((k, str(v)) for k, v in self._pairs(bound.get("remap"), call))
+        remap = tuple((k, COMPUTED if isinstance(v, dict) and COMPUTED in v else str(v))
+                      for k, v in self._pairs(bound.get("remap"), call))
         specify = self._pairs(bound.get("specify"), call)
         if isinstance(first, ast.Constant) and isinstance(first.value, str):
             label = self._literal(bound["slabel"], call) if "slabel" in bound else ""
@@ -379,14 +425,24 @@ class _Reader:
         if node is None or _empty(node):
             return ()  # SkiROS2 iterates them: remap="" or [] is none
         if not isinstance(node, ast.Dict) or any(k is None for k in node.keys):
+            if self.tolerant:
+                return ()
             raise _Computed(f"line {call.lineno} passes a computed remap or specify")
         pairs = []
         for key, value in zip(node.keys, node.values, strict=True):
             assert key is not None
-            name = self._literal(key, call)
-            if not isinstance(name, str):
-                raise _Computed(f"line {call.lineno} has a non-string key")
-            pairs.append((name, self._value(value, call)))
+            try:
+                name = self._literal(key, call)
+                if not isinstance(name, str):
+                    raise _Computed(f"line {call.lineno} has a non-string key")
+                pairs.append((name, self._value(value, call)))
+            except _Computed:
+                if not self.tolerant or not isinstance(key, ast.Constant) \
+                        or not isinstance(key.value, str):
+                    if self.tolerant:
+                        continue  # a computed key: that pair is not known
+                    raise
+                pairs.append((key.value, {COMPUTED: True}))
         if len({k for k, _ in pairs}) != len(pairs):
             raise _Computed(f"line {call.lineno} repeats a key")  # Python keeps the last
         return tuple(pairs)

@@ -308,6 +308,8 @@ class _Module:
             result.models.append(traced.model(line, self.path))
         except Unreadable as why:
             result.unread.append((name, why.line or line, why.shape))
+        except (RecursionError, MemoryError):
+            result.unread.append((name, line, "an expression nested too deeply to read"))
         except RaisedAt as raised:
             result.errors.append(_class_error(name, line, raised.exc, raised.line))
         except Exception as exc:  # what instantiating the class raises: a class error
@@ -430,16 +432,9 @@ class _Body:
                                f"{shape_of(node)}")
 
     def _record(self, which: str, item: Any, node: ast.AugAssign) -> None:
-        from ezskiros_runtime.dsl.collectors import Recorded
-        from ezskiros_runtime.dsl.conditions import Cond
+        from ezskiros_runtime.dsl.collectors import record
 
-        items = item if isinstance(item, (list, tuple)) else (item,)
-        for cond in items:
-            if not isinstance(cond, Cond):
-                raise DescriptionError(
-                    f"self.{which}_conditions += ... takes conditions (A.contain(B), "
-                    f"F.Open == False, ...), got {cond!r}")
-            self.recorded.append(Recorded(which, cond, self.path, node.lineno))
+        record(self.recorded, which, item, self.path, node.lineno)
 
 
 class _Evaluator:
@@ -497,10 +492,9 @@ class _Evaluator:
 
     def _Call(self, node: ast.Call) -> Any:
         func = self.value(node.func)
-        if func is not _bound_param:
-            _trusted(func, node)
-            if isinstance(func, type) and not func.__module__.startswith(RUNTIME):
-                raise Unreadable(node, f"a call of {func.__name__}")
+        if func is not _bound_param and not _dsl_callable(func):
+            name = getattr(func, "__name__", type(func).__name__)
+            raise Unreadable(node, f"a call of {name}, which is no form of the DSL")
         args = []
         for arg in node.args:
             if isinstance(arg, ast.Starred):
@@ -607,6 +601,24 @@ def _harmless(node: ast.stmt, self_name: str) -> bool:
         return on_self(func) and isinstance(func, ast.Attribute) \
             and func.attr in _NO_MODEL_EFFECT
     return False
+
+
+def _dsl_callable(func: Any) -> bool:
+    """Whether calling ``func`` is a form of docs/dsl.md: a method of a parameter symbol,
+    a property handle or a condition (``A.contain(B)``, ``F.Open.eq(x)``, ``c.named(...)``),
+    or one of the DSL's functions and markers (``ELEMENT``, ``KEY``, ``DESC``,
+    ``abstract``, ``any_of``). Any other callable of the runtime (``use_ontology``, say)
+    is refused: a file under check must not change what the run checks the others with."""
+    from ezskiros_runtime.dsl import conditions, markers, symbols
+
+    owner = getattr(func, "__self__", None)
+    if owner is not None and isinstance(owner, (symbols.Symbol, symbols.PropertyHandle,
+                                                conditions.Cond)):
+        return True
+    if isinstance(func, symbols.PropertyHandle):
+        return True
+    return any(func is allowed for allowed in (markers.ELEMENT, markers.KEY, markers.DESC,
+                                               conditions.abstract, conditions.any_of))
 
 
 def _bound_param(key: Any) -> Any:

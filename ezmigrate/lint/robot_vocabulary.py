@@ -15,7 +15,7 @@ file names in another package, which this run cannot read. So:
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Sequence
+from collections.abc import Callable, Collection, Iterable, Sequence
 from dataclasses import replace
 from pathlib import Path
 
@@ -28,6 +28,9 @@ from .scene_search import scene_files
 from .world_model import readable_scenes
 
 UNKNOWN = code_for("unknown-vocabulary")
+PREDICATE = code_for("scene-unknown-predicate")
+JUDGED = frozenset({UNKNOWN, PREDICATE})
+"""The codes of a name the loaded ontology lacks, in code or in a scene."""
 
 
 def scene_classes(scenes: Iterable[Path]) -> set[str]:
@@ -53,24 +56,28 @@ def typing_scenes(paths: Sequence[Path], scenes: Sequence[Path],
 
 def as_the_robot_resolves(diagnostics: Sequence[Diagnostic], typed: set[str],
                           unread_workspace: str | None,
-                          prefixes: Collection[str] = ()) -> list[Diagnostic]:
-    """``diagnostics`` with EZ209 judged as described in the module doc, by the term each
-    names (``Diagnostic.term``); ``prefixes``: those the loaded ontology defines."""
+                          prefixes: Collection[str] = (),
+                          misspelt: Callable[[str], bool] = lambda _term: False
+                          ) -> list[Diagnostic]:
+    """``diagnostics`` with EZ209 and EZ411 judged as the module doc says, by the term each
+    names (``Diagnostic.term``); ``prefixes``: those the loaded ontology defines;
+    ``misspelt(term)``: the term is one edit from a term its loaded namespace defines, a
+    typo, which a workspace this run cannot read would not define either."""
     def undefined(d: Diagnostic) -> str | None:
-        """The prefix no loaded file defines that an EZ209 names, else None."""
-        if d.code != UNKNOWN or d.term is None or "://" in d.term:
+        """The prefix no loaded file defines that an EZ209 or EZ411 names, else None."""
+        if d.code not in JUDGED or d.term is None or "://" in d.term:
             return None
         prefix, colon, _ = d.term.partition(":")
         return prefix if colon and prefix not in prefixes else None
 
     judged: list[Diagnostic] = []
     for d in diagnostics:
-        if d.code == UNKNOWN and d.term is not None:
-            if d.term_is_class and d.term in typed:
+        if d.code in JUDGED and d.term is not None:
+            if d.code == UNKNOWN and d.term_is_class and d.term in typed:
                 continue  # the scene types individuals with it: the world model matches it
             if undefined(d) is not None:
                 d = replace(d, severity="info")  # another package's ontology may define it
-            if unread_workspace is not None:
+            if unread_workspace is not None and not misspelt(d.term or ""):
                 d = replace(d, severity="info", message=(
                     f"{d.message} (the launch file's workspace_dir {unread_workspace} could "
                     "not be read by this run: it may define it)"))

@@ -15,6 +15,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ezskiros_runtime.model import SkillModel
+from ezskiros_runtime.ontology.consistency import ontology_findings, unknown_predicates
+from ezskiros_runtime.ontology.errors import OntologyLoadError
+from ezskiros_runtime.ontology.index import bundled_ontology_path
 from ezskiros_runtime.world.findings import WorldFinding, finding
 from ezskiros_runtime.world.grounding import can_start
 from ezskiros_runtime.world.postconditions import (
@@ -60,8 +63,41 @@ def read_scenes(paths: Iterable[Path], index: OntologyIndex | None) -> list[Scen
         except SceneError as error:
             out.append(SceneRead(path, text, None, [unreadable(error)]))
             continue
-        out.append(SceneRead(path, text, scene, check_scene(scene, index)))
+        found = check_scene(scene, index)
+        if index is not None:
+            found += unknown_predicates(scene, index)
+        out.append(SceneRead(path, text, scene, found))
     return out
+
+
+def ontology_diagnostics(index: OntologyIndex | None, sources: dict[str, str]
+                         ) -> list[Diagnostic]:
+    """EZ410 and EZ412 on the ontology files this run loaded besides the bundled core (the
+    repository's ``owl/`` folders, ``--ontology``); their texts go to ``sources`` so that a
+    suppression comment works there too. A file that does not parse was refused when the
+    index was built and is left alone here."""
+    if index is None:
+        return []
+    bundled = str(bundled_ontology_path())
+    files = [Path(s) for s in index.sources if s != bundled]
+    if not files:
+        return []
+    try:
+        found = ontology_findings(files, index, [Path(s) for s in index.sources])
+    except OntologyLoadError:
+        return []
+    out: list[Diagnostic] = []
+    for f in found:
+        text = sources.setdefault(f.path, _read(Path(f.path)))
+        out += diagnostics_of([f], text)
+    return out
+
+
+def _read(path: Path) -> str:
+    try:
+        return path.read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return ""
 
 
 def readable_scenes(paths: Iterable[Path]) -> list[Scene]:
@@ -93,8 +129,14 @@ def diagnostics_of(found: Iterable[WorldFinding], text: str, skill: str = ""
                    ) -> list[Diagnostic]:
     """World findings of one file as diagnostics (columns from ``text``)."""
     where = Positions(text)
-    return [diagnostic(f.path, where, f.kind, f.line, f.message, skill, f.fix, f.lowered)
+    return [diagnostic(f.path, where, f.kind, f.line, f.message, skill, f.fix, f.lowered,
+                       term=f.subject if f.kind == UNKNOWN_PREDICATE else None)
             for f in found]
+
+
+UNKNOWN_PREDICATE = "scene-unknown-predicate"
+"""Its term (the predicate, as the scene writes it) is judged as the robot resolves
+vocabulary (``robot_vocabulary``), like an unknown name in the code."""
 
 
 def legacy_double_places(path: str, skill: str, facts: StaticDescription,
@@ -202,6 +244,7 @@ def world_diagnostics(run: WorldRun, legacy: Iterable[tuple[str, FileResult]],
         for f in ezskiros_double_places(path, sources.get(path, ""), found, index, entries):
             out += diagnostics_of([f], sources.get(path, ""), f.subject)
         models += [(path, m.name, m.line or 0, m) for m in found]
+    out += ontology_diagnostics(index, sources)
     reads = read_scenes(run.scenes, index)
     for read, kept in zip(reads, once_per_project([r.findings for r in reads]), strict=True):
         sources[str(read.path)] = read.text
@@ -224,4 +267,4 @@ def _start_diagnostics(path: Path, models: list[tuple[str, str, int, SkillModel]
 
 
 __all__ = ["SceneRead", "cannot_start", "diagnostics_of", "ezskiros_double_places",
-           "legacy_double_places", "read_scenes", "world_diagnostics"]
+           "legacy_double_places", "ontology_diagnostics", "read_scenes", "world_diagnostics"]

@@ -348,7 +348,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
             outcome.diagnostics = as_the_robot_resolves(
                 outcome.diagnostics, scene_classes(typing_scenes(paths, world.scenes, exclude)),
                 launch.workspace_unresolved if launch is not None else None,
-                index.prefixes if index is not None else ())
+                index.prefixes if index is not None else (), _misspelt_term(index))
             if kept is not None:
                 OutcomeCache(kept[0][0]).put(kept[0][1], outcome.files, outcome.skills,
                                              outcome.notes, outcome.diagnostics,
@@ -589,17 +589,18 @@ def _judge_uninferable(diagnostics: list[Diagnostic],
     passed = keys_passed(compound.models, compound.skills) \
         if compound.skills is not None else {}
     return judge(diagnostics, keys_read(facts for _, facts in implementing), passed,
-                 _scene_counter(world, index), _misspelt_class(index))
+                 _scene_counter(world, index), _misspelt_term(index))
 
 
-def _misspelt_class(index: OntologyIndex | None) -> Callable[[str], bool]:
-    """Whether a class name is one edit from a class of its prefix the ontology defines."""
-    from ezskiros_runtime.ontology.suggest import misspelt_class
+def _misspelt_term(index: OntologyIndex | None) -> Callable[[str], bool]:
+    """Whether a term (class, relation, property) is one edit from a term of its prefix the
+    ontology defines: a typo (``skiros:Lcoation``)."""
+    from ezskiros_runtime.ontology.suggest import misspelt_term
 
     if index is None:
         return lambda _term: False
-    classes = [index.compact(c) for c in index.classes]
-    return lambda term: misspelt_class(term, classes) is not None
+    terms = [index.compact(c) for c in (*index.classes, *index.properties)]
+    return lambda term: misspelt_term(term, terms) is not None
 
 
 def _implementations(implementing: list[tuple[Candidate, ModuleFacts]], skills: SkillIndex,

@@ -136,10 +136,10 @@ def _loaded(job: LoadJob) -> LoadOutcome:
             else "import-error"
         message, line = str(error), getattr(error, "line", None)
         cause = error.__cause__
+        newer = False
         if isinstance(cause, SyntaxError):
-            message, line = syntax_message(cause, source, path, message, line)
-        return LoadOutcome(status, message, line,
-                           newer_syntax=message.startswith(NEWER_SYNTAX))
+            message, line, newer = syntax_message(cause, source, path, message, line)
+        return LoadOutcome(status, message, line, newer_syntax=newer)
     except Exception as error:  # a loader bug still gives a verdict for this file only
         traceback.print_exc(limit=8)  # into the captured stderr, not into the message
         first = (str(error).splitlines() or [""])[0]
@@ -154,8 +154,9 @@ def _loaded(job: LoadJob) -> LoadOutcome:
 
 
 def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,
-                   line: int | None) -> tuple[str, int | None]:
-    """Why a file does not compile, and the line to report.
+                   line: int | None) -> tuple[str, int | None, bool]:
+    """Why a file does not compile, the line to report, and whether the syntax is only
+    newer than this Python's.
 
     "cannot import under Python 3.11" only when the syntax is newer than this Python: libcst
     (which knows newer grammars) parses the file and Python's own parser does not. A Python 2
@@ -165,7 +166,7 @@ def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,
     try:
         import libcst
     except ImportError:  # under another interpreter (--python): no libcst, no second opinion
-        return f"SyntaxError in {path.name} at line {error.lineno}: {error.msg}", line
+        return f"SyntaxError in {path.name} at line {error.lineno}: {error.msg}", line, False
     data = source
     if error.filename and Path(error.filename) != path:  # raised in a module it imports
         with contextlib.suppress(OSError):
@@ -176,7 +177,7 @@ def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,
         pass
     else:
         version = f"{sys.version_info.major}.{sys.version_info.minor}"
-        return f"{NEWER_SYNTAX} {version}: {message}", line
+        return f"{NEWER_SYNTAX} {version}: {message}", line, True
     row, column = error.lineno, error.offset
     if row is None and b"\0" in data:
         before = data[:data.index(b"\0")]
@@ -184,7 +185,8 @@ def syntax_message(error: SyntaxError, source: bytes, path: Path, message: str,
     where = f"line {row}, column {column}" if row is not None and column is not None \
         else f"line {row}" if row is not None else "unknown position"
     name = Path(error.filename).name if error.filename else path.name
-    return f"SyntaxError in {name} at {where}: {error.msg}", line if line is not None else row
+    return (f"SyntaxError in {name} at {where}: {error.msg}",
+            line if line is not None else row, False)
 
 
 def run_child(job: LoadJob, result_path: str, stdout_path: str, stderr_path: str,

@@ -323,7 +323,7 @@ def _newer_syntax(outcome: LoadOutcome, job: LoadJob, config: PoolConfig) -> boo
     opinion, so a syntax error there counts when libcst, here, reads the file."""
     if outcome.newer_syntax:
         return True
-    if not (is_foreign(config.python) and "SyntaxError in " in outcome.message):
+    if not (is_foreign(config.python) and outcome.status == "syntax"):
         return False
     import libcst
 

@@ -18,7 +18,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from .library import ROBOT, DescriptionInfo, SkillIndex, type_name
-from .model import CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
+from .model import COMPUTED, CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
 from .trace import PARAMETER_OBJECT, Unanalysable, parameter_object_message
 
 if TYPE_CHECKING:
@@ -418,6 +418,9 @@ class _Checker:
         declared = child.declared()
         renamed: dict[str, str] = {}
         for key, target in node.remap:
+            if key in declared and target == COMPUTED:
+                renamed[key] = target
+                continue
             if key in declared:
                 held = self.index.held_by(child.name, target, node.label) \
                     if target in declared and target != key else False
@@ -485,6 +488,8 @@ class _Checker:
         unsure = "" if writes.complete_without(node) else (
             ", unless a node whose parameters this run could not read writes it")
         for key, target in node.remap:
+            if target == COMPUTED:
+                continue
             if target not in self.parent.declared() and not writes.by_others(node, target):
                 close = difflib.get_close_matches(target, sorted(self.parent.declared()), 1, 0.6)
                 self.add("remap-dangling", node.line,

@@ -74,6 +74,12 @@ class ProcessorNode:
 Node = Union[SkillNode, ProcessorNode]
 
 
+COMPUTED = "(computed at run time)"
+"""A remap target, or the key of a ``specify`` value, that only running ``expand`` gives:
+a node read where the tree around it cannot be (``CompoundModel.gaps``) keeps its known
+parts, and the checks pass such a target by."""
+
+
 @dataclass(frozen=True)
 class CallProblem:
     """A call SkiROS2 cannot use (``self.skill(self.skill(...))``, a number as the type):

@@ -30,6 +30,23 @@ class Recorded:
     line: int
 
 
+def record(records: list[Recorded], which: str, item: Any, file: str, line: int
+           ) -> list[Cond]:
+    """One ``self.<which>_conditions += item`` at ``file:line``: each condition of ``item``
+    (one, or a list or tuple of them) appended to ``records``; a ``DescriptionError`` for
+    anything else. What tracing does, and what ``ezmigrate check`` does reading the
+    statement from its syntax."""
+    items = item if isinstance(item, (list, tuple)) else (item,)
+    for cond in items:
+        if not isinstance(cond, Cond):
+            raise DescriptionError(
+                f"self.{which}_conditions += ... takes conditions (A.contain(B), "
+                f"F.Open.eq(False), ...), got {cond!r}")
+    added = [Recorded(which, cond, file, line) for cond in items]
+    records.extend(added)
+    return list(items)
+
+
 class ConditionCollector:
     """The object behind ``self.pre_conditions`` (and hold/post) of one description."""
 
@@ -43,14 +60,8 @@ class ConditionCollector:
 
     def __iadd__(self, item: Any) -> ConditionCollector:
         frame = sys._getframe(1)
-        items = item if isinstance(item, (list, tuple)) else (item,)
-        for cond in items:
-            if not isinstance(cond, Cond):
-                raise DescriptionError(
-                    f"self.{self._which}_conditions += ... takes conditions (A.contain(B), "
-                    f"F.Open == False, ...), got {cond!r}")
-            self._records.append(Recorded(self._which, cond, frame.f_code.co_filename,
-                                          frame.f_lineno))
+        for cond in record(self._records, self._which, item, frame.f_code.co_filename,
+                           frame.f_lineno):
             if self._live is not None:
                 self._live(self._which, cond)
         return self
@@ -92,4 +103,4 @@ class CollectorSlot:
                 f"self.{self.public} collects conditions with +=; it cannot be assigned")
 
 
-__all__ = ["LISTS", "CollectorSlot", "ConditionCollector", "Recorded"]
+__all__ = ["LISTS", "CollectorSlot", "ConditionCollector", "Recorded", "record"]

@@ -80,11 +80,11 @@ def one_edit_apart(a: str, b: str) -> bool:
     return short[i:] == long[i + 1:]
 
 
-def misspelt_class(name: str, classes: Iterable[str]) -> str | None:
-    """The known class (compact ``prefix:Local``) of the same prefix that ``name`` is one
-    edit away from, or None."""
+def misspelt_term(name: str, terms: Iterable[str]) -> str | None:
+    """The known term (compact ``prefix:Local``: a class, a relation, a property) of the
+    same prefix that ``name`` is one edit away from, or None."""
     prefix, local = _split_compact(name)
-    for candidate in classes:
+    for candidate in terms:
         other_prefix, other_local = _split_compact(candidate)
         if other_prefix == prefix and one_edit_apart(local, other_local):
             return candidate

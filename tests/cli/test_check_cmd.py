@@ -32,7 +32,7 @@ class NavigateSlow(Navigate):
 
 class NavigateTwice(Navigate):
     def createDescription(self):
-        for key in ("First", "Second"):
+        for key in sorted(("First", "Second")):
             self.addParam(key, 0.5, ParamTypes.Optional)
 '''
 

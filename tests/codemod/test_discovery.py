@@ -44,7 +44,7 @@ CHILDREN = '''from skiros2_common.core.params import ParamTypes
 
 class NavigateTwice({base}):
     def createDescription(self):
-        for key in ("First", "Second"):  # computed at run time: never converted
+        for key in sorted(("First", "Second")):  # computed at run time: never converted
             self.addParam(key, 0.5, ParamTypes.Optional)
 
 

@@ -117,7 +117,7 @@ class F(SkillDescription):
 
 
 def test_statements_that_could_declare_at_run_time_block_the_skill():
-    assert_skipped(START + '        for k in ["A", "B"]:\n            self.addParam(k, float, 0)\n',
+    assert_skipped(START + '        for k in self.keys:\n            self.addParam(k, float, 0)\n',
                    "a loop at line", "unroll")
     assert_skipped(START + '        if True:\n            self.addParam("A", float, 0)\n',
                    "a conditional")

@@ -19,7 +19,7 @@ CORE = Path(ezmigrate.codemod.rules.__file__).parents[1] / "core"
 
 
 def _functions(table: RuleTable) -> set[object]:
-    return {*table.statement_rules, *table.conditions, *table.read_passes,
+    return {*table.statement_rules, *table.conditions, *table.compound_rules, *table.read_passes,
             table.param_annotation, table.condition_statement,
             *table.condition_emitters.values(), *table.condition_replayers.values()}
 

@@ -143,13 +143,16 @@ class paint(SkillBase):
 '''
 
 
-def test_parameters_modify_description_adds_to_the_wrapper_are_declared(tmp_path: Path):
-    """SkiROS2 calls ``instance.modifyDescription(wrapper)``: ``skill.addParam`` declares
-    on the wrapper; ``self.addParam`` does not, and the specify is dropped."""
+def test_a_specify_of_what_modify_description_adds_is_dropped(tmp_path: Path):
+    """SkiROS2 calls ``instance.modifyDescription(wrapper)`` when the tree is grounded
+    (``SkillWrapper.setInstance``), after ``self.skill(...)`` applied its ``specify``:
+    ``skill.addParam`` declares the key on the wrapper too late for it (EZ319, a warning);
+    ``self.addParam`` never declares it there (EZ307)."""
     (tmp_path / "wrapper").mkdir()
     (tmp_path / "wrapper" / "paint.py").write_text(MODIFIED.format(owner="skill"))
     found = run_check([tmp_path / "wrapper"], None, PoolConfig(workers=1), trace=True).diagnostics
-    assert [d for d in found if d.code.startswith("EZ3")] == []
+    [late] = [d for d in found if d.code.startswith("EZ3")]
+    assert (late.code, late.severity) == ("EZ319", "warning") and "'Pressure'" in late.message
     (tmp_path / "itself").mkdir()
     (tmp_path / "itself" / "paint.py").write_text(MODIFIED.format(owner="self"))
     found = run_check([tmp_path / "itself"], None, PoolConfig(workers=1), trace=True).diagnostics
@@ -174,7 +177,7 @@ def test_a_keyword_typo_in_a_branch_the_trace_did_not_take_is_found(tmp_path: Pa
     assert ez3(tmp_path / "fine", branch.replace("TYPO", "specify")) == []
 
 
-@pytest.mark.parametrize(("label", "severity"), [("", "error"), ("wait_here", "info")])
+@pytest.mark.parametrize(("label", "severity"), [("", "error"), ("wait", "info")])
 def test_a_type_matched_only_as_a_regular_expression_fails_without_a_label(
         tmp_path: Path, label: str, severity: str) -> None:
     """SkillInstanciator finds the description by regex but its instances by the literal

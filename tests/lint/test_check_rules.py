@@ -197,7 +197,7 @@ CASES: dict[str, tuple[str, str]] = {
               + PROPERTY.format(read="skiros:Label")),
     "EZ901": (legacy(f'self.addParam("Speed", 0.1, {REQ})'),
               ezskiros("def description(self, Speed: float = 0.1):\n    pass")),
-    "EZ902": (legacy(f'for key in ("A", "B"):\n    self.addParam(key, 0.1, {REQ})'),
+    "EZ902": (legacy(f'for key in sorted(("B", "A")):\n    self.addParam(key, 0.1, {REQ})'),
               legacy(f'self.addParam("A", 0.1, {REQ})\nself.addParam("B", 0.1, {REQ})')),
     "EZ905": (legacy(f'self.addParam("Speed", 0.1, {REQ}') + "class Broken(:\n",
               legacy(f'self.addParam("Speed", 0.1, {REQ})')),
@@ -229,6 +229,9 @@ NOT_FROM_CHECK = {
     **dict.fromkeys(("EZ402", "EZ403", "EZ404", "EZ405", "EZ406", "EZ407", "EZ408", "EZ409"),
                     "findings of scenes, not of Python files: each has its trigger and near "
                     "miss in tests/lint/test_world_check.py"),
+    **dict.fromkeys(("EZ410", "EZ411", "EZ412"),
+                    "findings of the lab's ontology files and scenes: their triggers and near "
+                    "misses are in tests/lint/test_world_check.py"),
 }
 
 

@@ -29,6 +29,9 @@ LABELS: dict[tuple[str, int, str], str] = {
     (f"{SKILLS}/tasks.py", 29, "EZ314"):
         "fetch_part already remaps Container to Shelf: kit_parts' Bin never reaches Pick",
     (f"{SKILLS}/tasks.py", 31, "EZ315"): "self.params['Pause'] without .value",
+    (f"{SKILLS}/tasks.py", 56, "EZ319"):
+        "Pressure is added by spray_coat's modifyDescription to the wrapper, which runs at "
+        "grounding (SkillWrapper.setInstance), after specify was applied: the 3.0 is dropped",
     (f"{SKILLS}/tasks.py", 57, "EZ307"):
         "Nozzle is added by spray_coat to itself, not to the wrapper: the value is dropped",
     (f"{SKILLS}/tasks.py", 58, "EZ311"): "the spray gun passed as Place's gripper",

@@ -22,7 +22,8 @@ def _mark(markers: Path, name: str) -> str:
 
 
 def _compound(markers: Path) -> str:
-    return _mark(markers, "tasks-imported") + f'''from skiros2_skill.core.skill import SerialStar, SkillBase
+    return _mark(markers, "tasks-imported") + f'''\
+from skiros2_skill.core.skill import SerialStar, SkillBase
 from skiros2_common.core.abstract_skill import SkillDescription
 
 STEPS = ("Wait", "Wait")

@@ -263,3 +263,103 @@ def test_stdin_takes_the_single_valued_setting_of_the_file_it_stands_for(
                          capture_output=True, text=True, timeout=300, check=False)
     assert run.returncode == 0, run.stderr
     assert [(d["line"], d["code"]) for d in json.loads(run.stdout)] == named
+
+
+# -- the lab's own ontology, checked for consistency (EZ410, EZ411, EZ412) -----------------
+
+LAB_OWL = """\
+@prefix rdf: <http://www.w3.org/1999/02/22-rdf-syntax-ns#> .
+@prefix rdfs: <http://www.w3.org/2000/01/rdf-schema#> .
+@prefix owl: <http://www.w3.org/2002/07/owl#> .
+@prefix xsd: <http://www.w3.org/2001/XMLSchema#> .
+@prefix skiros: <http://rvmi.aau.dk/ontologies/skiros.owl#> .
+@prefix lab: <http://example.org/lab#> .
+
+lab:Tray a owl:Class ; rdfs:subClassOf skiros:Locaton .
+lab:Bin a owl:Class ; rdfs:subClassOf skiros:Location .
+lab:holds a owl:ObjectProperty ; rdfs:domain lab:Tray ; rdfs:range skiros:Prodct .
+lab:Depth a owl:DatatypeProperty ; rdfs:range xsd:float .
+lab:Weight a owl:DatatypeProperty ; rdfs:domain lab:Bin .
+lab:Bin a owl:DatatypeProperty .
+"""
+"""Line 8: a typo in a superclass (EZ410); 10: one in a range (EZ410); 13: a property with
+a class's IRI (EZ412, pull request #114). Lines 9, 11 and 12 are the near misses."""
+
+LAB_SCENE = """\
+@prefix rdf: <http://www.w3.org/1999/02/22-rdf-syntax-ns#> .
+@prefix xsd: <http://www.w3.org/2001/XMLSchema#> .
+@prefix skiros: <http://rvmi.aau.dk/ontologies/skiros.owl#> .
+@prefix lab: <http://example.org/lab#> .
+
+skiros:Scene-0 rdf:type skiros:Scene ;
+    skiros:contain lab:Tray-1 .
+lab:Tray-1 rdf:type lab:Tray ;
+    lab:Depht "0.1"^^xsd:float ;
+    lab:Depth "0.2"^^xsd:float .
+lab:Bin-2 rdf:type lab:Bin ;
+    lab:Depht "0.3"^^xsd:float .
+"""
+"""Line 9: a misspelt predicate (EZ411, once for both uses); line 10 is the near miss."""
+
+
+def _lab_repository(folder: Path, owl: str = LAB_OWL, scene: str = LAB_SCENE) -> Path:
+    """A lab repository (a ROS package) with its own ontology and one scene."""
+    (folder / "owl" / "scenes").mkdir(parents=True)
+    (folder / "package.xml").write_text("<package><name>lab</name></package>\n")
+    (folder / "owl" / "lab.ttl").write_text(owl, encoding="utf-8")
+    (folder / "owl" / "scenes" / "lab.turtle").write_text(scene, encoding="utf-8")
+    (folder / "skills.py").write_text("", encoding="utf-8")
+    return folder
+
+
+def test_the_lab_ontology_and_scene_mistakes_are_found_and_the_near_misses_are_not(
+        tmp_path: Path) -> None:
+    repo = _lab_repository(tmp_path / "lab")
+    found = _check(repo, "--select", "EZ41", cwd=repo)
+    where = sorted((Path(str(d["path"])).name, int(str(d["line"])), str(d["code"]),
+                    str(d["severity"])) for d in found)
+    assert where == [("lab.ttl", 8, "EZ410", "warning"), ("lab.ttl", 10, "EZ410", "warning"),
+                     ("lab.ttl", 13, "EZ412", "warning"),
+                     ("lab.turtle", 9, "EZ411", "warning")], found
+    messages = {(Path(str(d["path"])).name, int(str(d["line"]))): str(d["message"])
+                for d in found}
+    assert "did you mean skiros:Location?" in messages["lab.ttl", 8]
+    assert "get_sub_classes" in messages["lab.ttl", 8]
+    assert "did you mean skiros:Product?" in messages["lab.ttl", 10]
+    assert "lab:Bin is declared a property here and a class in lab.ttl:9" \
+        in messages["lab.ttl", 13]
+    assert "did you mean lab:Depth?" in messages["lab.turtle", 9]
+    assert "2 uses in this scene" in messages["lab.turtle", 9]
+
+
+def test_a_reference_to_an_ontology_not_loaded_is_no_typo(tmp_path: Path) -> None:
+    """A namespace no loaded file defines a term of is another ontology (not loaded here),
+    not a misspelling: nothing to suggest, no finding."""
+    owl = LAB_OWL.split("lab:Tray a")[0] + (
+        "@prefix dul: <http://www.ontologydesignpatterns.org/ont/dul/DUL.owl#> .\n"
+        "lab:Tray a owl:Class ; rdfs:subClassOf dul:PhysicalObject .\n")
+    repo = _lab_repository(tmp_path / "lab", owl=owl, scene=LAB_SCENE.split("lab:Tray-1 rdf")[0]
+                           .replace("    skiros:contain lab:Tray-1 .", "    .")
+                           .replace("skiros:Scene ;", "skiros:Scene"))
+    assert _check(repo, "--select", "EZ41", cwd=repo) == []
+
+
+CORE = Path(__file__).resolve().parents[3] / "shared" / "ontology" / "skiros2"
+
+
+@pytest.mark.skipif(not CORE.is_dir(), reason="the real SkiROS2 OWL files are not here")
+def test_skiros2s_own_core_ontology_gives_no_warning() -> None:
+    """Real data: the public core files, loaded and checked as a lab's own would be. Its
+    only notes are info: ``skiros:NavigationExe`` below ``skiros:RobotProperty`` (the core
+    declares ``robotProperty``) and the velocities below an undeclared ``skiros:Velocity``;
+    SkiROS2 never asks for sub-properties of either, so nothing misbehaves."""
+    from ezskiros_runtime.ontology.consistency import ontology_findings
+    from ezskiros_runtime.ontology.load import load_index
+
+    files = sorted(CORE.rglob("*.owl"))
+    assert len(files) == 6
+    found = ontology_findings(files, load_index(files, cache=False))
+    assert [f for f in found if f.severity != "info"] == []
+    assert {(f.code, f.subject.rpartition("#")[2]) for f in found} == {
+        ("EZ410", "NavigationExe"), ("EZ410", "VelocityX"), ("EZ410", "VelocityY"),
+        ("EZ410", "VelocityZ")}

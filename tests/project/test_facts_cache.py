@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from ezmigrate.lint.diagnostic import Diagnostic
-from ezmigrate.project import facts_cache, reading_pool
+from ezmigrate.project import reading_pool
 from ezmigrate.project import settle as settle_module
 from ezmigrate.project.cache_folder import Store, project_folder, user_key
 from ezmigrate.project.check import run_check

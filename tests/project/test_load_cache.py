@@ -73,7 +73,8 @@ def test_a_changed_module_misses_for_the_files_importing_it_alone(tmp_path: Path
 
 
 def test_cached_loads_loads_only_the_misses_in_one_batch(tmp_path: Path) -> None:
-    cache = LoadCache.for_run(tmp_path / "user-cache" / "projects" / "p", [("a.py", b"A"), ("b.py", b"B")], "onto",
+    folder = tmp_path / "user-cache" / "projects" / "p"
+    cache = LoadCache.for_run(folder, [("a.py", b"A"), ("b.py", b"B")], "onto",
                               None)
     jobs = [LoadJob("/x/a.py", None, None), LoadJob("/x/b.py", None, None)]
     batches: list[list[str]] = []
@@ -87,7 +88,7 @@ def test_cached_loads_loads_only_the_misses_in_one_batch(tmp_path: Path) -> None
     second = cached_loads(jobs, [b"A", b"B"], load, cache)
     assert [o.message for o in first] == [o.message for o in second] == ["/x/a.py", "/x/b.py"]
     assert batches == [["/x/a.py", "/x/b.py"], ["/x/b.py"]]  # a timeout is never kept
-    other = LoadCache.for_run(tmp_path / "user-cache" / "projects" / "p", [("a.py", b"A"), ("b.py", b"B")], "other",
+    other = LoadCache.for_run(folder, [("a.py", b"A"), ("b.py", b"B")], "other",
                               None)
     cached_loads(jobs[:1], [b"A"], load, other)  # another ontology: another key
     assert batches[-1] == ["/x/a.py"]

@@ -89,6 +89,11 @@ is not its construct, a list of operations (possibly empty) when it handled it, 
 ``Unsupported`` with a reason."""
 ConditionRule = Callable[["cst.BaseExpression", "ExtractContext"], "CondSpec | None"]
 """Turns an expression that builds a condition into a ``CondSpec`` (``None``: not its)."""
+CompoundRule = Callable[["cst.BaseStatement", "ExtractContext"],
+                        "Sequence[Operation] | None"]
+"""Turns one compound statement of ``createDescription`` (a loop) into IR: ``None`` when it
+is not its construct (the reader then refuses it), the operations it stands for, or raises
+``Unsupported`` with a reason."""
 ReadPass = Callable[["list[Operation]"], "list[Operation]"]
 """Runs over a whole ``createDescription``'s operations once it is read."""
 
@@ -103,6 +108,9 @@ class ExtractionRules(Protocol):
 
     @property
     def conditions(self) -> tuple[ConditionRule, ...]: ...
+
+    @property
+    def compound_rules(self) -> tuple[CompoundRule, ...]: ...
 
     @property
     def read_passes(self) -> tuple[ReadPass, ...]: ...

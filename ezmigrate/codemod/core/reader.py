@@ -1,8 +1,10 @@
 """Read one description class's ``createDescription`` into IR, statement by statement.
 
 Each small statement goes to the registered rules (``ezmigrate/codemod/rules``); compound statements
-(loops, conditionals, ``try``) are refused with a reason because what they declare depends
-on run time. Comments are collected with the statement they stand above.
+go to the compound rules (a loop over constants is unrolled, ``rules/constant_loops.py``)
+and the others (conditionals, ``try``, a loop over a computed value) are refused with a
+reason because what they declare depends on run time. Comments are collected with the
+statement they stand above.
 """
 
 from __future__ import annotations
@@ -80,15 +82,34 @@ def read_operations(func: cst.FunctionDef, bound: frozenset[str], ctx: ExtractCo
             assert isinstance(stmt, cst.SimpleStatementLine)
             ctx.skill.docstring = stmt
             continue
-        if not isinstance(stmt, cst.SimpleStatementLine):
-            what = COMPOUND_REASONS.get(type(stmt).__name__, "a compound statement")
-            raise Unsupported(f"{what} at line {ctx.line(stmt)}: parameters or conditions made "
-                              "there depend on run time; unroll it by hand, then migrate", stmt)
-        comments = Comments(leading=list(stmt.leading_lines),
-                            trailing=stmt.trailing_whitespace.comment)
-        _read_line_statements(list(stmt.body), comments, ctx, stmt)
+        read_statement(stmt, ctx)
     for read_pass in ctx.rules.read_passes:
         ctx.skill.operations = read_pass(ctx.skill.operations)
+
+
+def read_statement(stmt: cst.BaseStatement, ctx: ExtractContext) -> None:
+    """Add the operations of one statement of the body (or of a block inside it, read by a
+    compound rule) to ``ctx.skill``: a line goes to the statement rules, a compound
+    statement to the compound rules (a loop over constants), else it is refused."""
+    if not isinstance(stmt, cst.SimpleStatementLine):
+        for rule in ctx.rules.compound_rules:
+            ops = rule(stmt, ctx)
+            if ops is not None:
+                ctx.skill.operations.extend(ops)
+                return
+        raise Unsupported(compound_reason(stmt, ctx), stmt)
+    comments = Comments(leading=list(stmt.leading_lines),
+                        trailing=stmt.trailing_whitespace.comment)
+    _read_line_statements(list(stmt.body), comments, ctx, stmt)
+
+
+def compound_reason(stmt: cst.BaseStatement, ctx: ExtractContext, why: str = "") -> str:
+    """Why a compound statement keeps the skill as it is (``why``: what a compound rule
+    found that it cannot unroll)."""
+    what = COMPOUND_REASONS.get(type(stmt).__name__, "a compound statement")
+    because = f" ({why})" if why else ""
+    return (f"{what} at line {ctx.line(stmt)}{because}: parameters or conditions made there "
+            "depend on run time; unroll it by hand, then migrate")
 
 
 def _read_line_statements(small: list[cst.BaseSmallStatement], comments: Comments,

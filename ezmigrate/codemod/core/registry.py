@@ -15,7 +15,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from .context import ConditionRule, ReadPass, StatementRule
+from .context import CompoundRule, ConditionRule, ReadPass, StatementRule
 from .emit import ConditionEmitter, EmitContext
 from .ir import AddCondition, CondSpec, ParamOp
 
@@ -32,6 +32,8 @@ class RuleTable:
     """Asked last, whatever ``statements`` holds: it explains why a statement blocks an
     exact translation (``rules/unsupported.py``)."""
     conditions: tuple[ConditionRule, ...]
+    compound_rules: tuple[CompoundRule, ...]
+    """Asked for a compound statement (a loop); one none claims is refused."""
     read_passes: tuple[ReadPass, ...]
     param_annotation: Callable[[ParamOp, str, EmitContext], tuple[str, str | None]]
     """A parameter's annotation and default in the ``description`` signature."""

@@ -103,7 +103,7 @@ def test_the_papers_hasA_mistake_names_file_line_skill_parameter_and_classes():
                                                   "rparts:GripperEffector")
 
 
-def test_a_misspelt_class_fails_when_the_class_is_defined_with_a_suggestion():
+def test_a_misspelt_term_fails_when_the_class_is_defined_with_a_suggestion():
     reached_end_of_class = False
     with pytest.raises(UnknownVocabularyError) as raised:
         class Pick(SkillDescription):

@@ -166,10 +166,10 @@ def test_one_edit_apart_is_the_typos_a_hand_makes(a: str, b: str, apart: bool) -
     assert one_edit_apart(b, a) is apart
 
 
-def test_a_misspelt_class_is_matched_within_its_own_prefix() -> None:
-    from ezskiros_runtime.ontology.suggest import misspelt_class
+def test_a_misspelt_term_is_matched_within_its_own_prefix() -> None:
+    from ezskiros_runtime.ontology.suggest import misspelt_term
 
     classes = ["skiros:Location", "rparts:Locator"]
-    assert misspelt_class("skiros:Lcoation", classes) == "skiros:Location"
-    assert misspelt_class("cora:Lcoation", classes) is None
-    assert misspelt_class("skiros:Location", classes) is None
+    assert misspelt_term("skiros:Lcoation", classes) == "skiros:Location"
+    assert misspelt_term("cora:Lcoation", classes) is None
+    assert misspelt_term("skiros:Location", classes) is None
