@@ -15,10 +15,12 @@ import ast
 from dataclasses import dataclass, replace
 
 from ezskiros_runtime.compound.model import CompoundModel
+from ezskiros_runtime.compound.trace import Unanalysable
 
 from ..codemod.core.python2 import python2_refusal
 from ..compound.analysis import TreeFacts, tree_facts
 from ..compound.repository import READ_WHEN, SCAN_WHEN, Recovered, recover_classes
+from ..compound.static import NeedsTrace
 from ..files.discover import Candidate
 from ..files.prefilter import marker_is_identifier
 from ..lint.ezskiros_reader import read_ezskiros
@@ -65,8 +67,7 @@ class FileFacts:
             if isinstance(self.static, FileResult) else self.static
         settled = replace(self.settled, path=relative) if self.settled is not None else None
         trees = None if self.trees is None else replace(self.trees, found=tuple(
-            replace(f, path=path) if isinstance(f, CompoundModel) else f
-            for f in self.trees.found))
+            _moved(f, path) for f in self.trees.found))
         return replace(self, static=static, settled=settled, trees=trees)
 
 
@@ -84,6 +85,16 @@ def _parse(data: bytes) -> ast.Module | SyntaxError | None:
         return error
     except (ValueError, UnicodeError, LookupError, MemoryError, RecursionError):
         return None
+
+
+def _moved(found: CompoundModel | Unanalysable | NeedsTrace, path: str
+           ) -> CompoundModel | Unanalysable | NeedsTrace:
+    """A tree's reading moved to the file at ``path`` (a partial one's model too)."""
+    if isinstance(found, CompoundModel):
+        return replace(found, path=path)
+    if isinstance(found, NeedsTrace) and found.partial is not None:
+        return replace(found, partial=replace(found.partial, path=path))
+    return found
 
 
 def file_facts(candidate: Candidate, data: bytes, compounds: bool,

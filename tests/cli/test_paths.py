@@ -29,7 +29,7 @@ class Drive(SkillDescription):
 
 class Loop(SkillDescription):
     def createDescription(self):
-        for key in ("A", "B"):
+        for key in sorted(("A", "B")):  # computed: kept as legacy
             self.addParam(key, 0.5, ParamTypes.Optional)
 '''
 
