@@ -149,8 +149,8 @@ def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
         source = resolve_ontology_paths(list(ontology) or None, start=start, roots=roots,
                                         skip=skip)
         index, source = load_source(source)
-        for warning in source.warnings():
-            click.echo(f"ezmigrate: {printable(warning)}", err=True)
+        for warning in source.warnings():  # paths relative, as the line after it gives them
+            click.echo(f"ezmigrate: {printable(scrub(warning, report=False))}", err=True)
         described = scrub(source.describe(), report=False)  # paths as other lines give them
         click.echo(f"ezmigrate: {printable(described)}", err=True)
         return index, tuple(str(p) for p in source.paths), described

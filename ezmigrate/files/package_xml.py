@@ -470,15 +470,16 @@ def package_files(paths: Iterable[Path]) -> list[Path]:
 
 
 def ros_flavour(package_xml: Path) -> str | None:
-    """``ros1`` for a catkin package, ``ros2`` for an ament one, None when it says neither
-    (or cannot be read)."""
+    """``ros1`` for a package built for ROS 1 (catkin), ``ros2`` for one built for ROS 2
+    only (ament: its ``<export><build_type>``, as an ament_python package says it, else its
+    ``<buildtool_depend>``, each where its condition admits it), None when it says neither
+    (or cannot be read). A package built for both targets the older robot."""
     try:
-        data = package_xml.read_bytes()
-    except OSError:
+        manifest = _read(package_xml.read_bytes())
+    except (OSError, ValueError):
         return None
-    tools = {match.group(1).decode() for match in _BUILDTOOL.finditer(data)}
-    if "catkin" in tools:
-        return "ros1"
-    if any(tool.startswith("ament") for tool in tools):
-        return "ros2"
-    return None
+    said = [e for e in manifest.exports if e.tag == "build_type"] \
+        + manifest.named("buildtool_depend")
+    if not any(_version_of_tool(e.text) is not None for e in said):
+        return None
+    return "ros1" if 1 in _ros_versions(manifest) else "ros2"

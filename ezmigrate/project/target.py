@@ -11,6 +11,7 @@ kinds writes for the oldest Python among them, which the others run as well.
 
 from __future__ import annotations
 
+import os
 import re
 import sys
 from collections.abc import Iterable
@@ -69,8 +70,14 @@ def target_for(paths: Iterable[Path], configured: tuple[int, int] | None,
         return Target(DEFAULT_TARGET, "no ROS package.xml found: the default")
     flavour, xml = min(kinds, key=lambda kind: PYTHON_OF[kind[0]])
     version = PYTHON_OF[flavour]
-    return Target(version, f"{xml.parent.name}/package.xml is a {DISTRIBUTION[flavour]} "
+    return Target(version, f"{shown(xml)} is a {DISTRIBUTION[flavour]} "
                            f"package: Python {version[0]}.{version[1]}", flavour)
+
+
+def shown(path: Path) -> str:
+    """``path`` as the run's other lines name it: relative to the working directory."""
+    relative = os.path.relpath(path)
+    return relative if not relative.startswith("..") else str(path)
 
 
 def robot_python(target: Target, configured: str | None, verify: bool) -> str | None:
@@ -91,5 +98,9 @@ def verified_with(python: str | None, target: Target) -> str:
     major_minor = tuple(int(part) for part in found.split(".")[:2] if part.isdigit())
     if target.flavour is None or major_minor == target.version:
         return line
-    return (f"{line}; the robot runs Python {target.python} ({target.why}): put python"
-            f"{target.python} on PATH or pass --python to verify under it")
+    looked = target.flavour == "ros1"  # ``robot_python`` looked for it
+    return (f"{line}; the robot runs Python {target.python} ({target.why})"
+            + (f": no python{target.python} was found on PATH's absolute entries or in "
+               "pyenv's versions folder; install one, or pass --python to verify under it"
+               if looked else f": pass --python naming a python{target.python} to verify "
+               "under it"))

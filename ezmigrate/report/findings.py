@@ -68,16 +68,27 @@ def skill_findings(model: SkillModel, index: OntologyIndex | None,
                 hint = _close(term, index.suggest(
                     term, ("class",) if what == "class" else ("object", "data")))
                 extra = f"; did you mean {', '.join(hint)}?" if hint else ""
+                prefix, colon, _ = term.partition(":")
+                unknown = prefix if colon and prefix not in index.prefixes else None
                 found.append(ReviewFinding("unknown-vocabulary", where.get(source, 0),
-                                     f"{what} {term!r} is not in the loaded ontology{extra}"))
+                                           f"{what} {term!r} is not in the loaded ontology"
+                                           f"{extra}", prefix=unknown))
     return _unique(found)
 
 
 def _close(term: str, suggestions: list[str]) -> list[str]:
-    """Only suggestions whose local name is close to the term's: a typo, not a guess."""
-    local = term.rsplit(":", 1)[-1].lower()
-    return [s for s in suggestions
-            if difflib.SequenceMatcher(None, local, s.rsplit(":", 1)[-1].lower()).ratio() >= 0.8]
+    """Only suggestions that are a typo away, not a guess: of the term's own prefix with a
+    close local name, or of another prefix with the same local name (a misspelt prefix,
+    ``skirso:Product``); ``scalable:Ur5EndEffector`` is no ``rparts:EndEffector``."""
+    prefix, _, local = term.rpartition(":")
+    found = []
+    for s in suggestions:
+        other_prefix, _, other = s.rpartition(":")
+        close = difflib.SequenceMatcher(None, local.lower(), other.lower()).ratio() >= 0.8
+        if (other_prefix == prefix and close) or \
+                (other_prefix != prefix and other.lower() == local.lower()):
+            found.append(s)
+    return found
 
 
 def _unique(findings: list[ReviewFinding]) -> list[ReviewFinding]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import os
 import sys
+from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -62,10 +63,6 @@ def counted(number: int, noun: str) -> str:
     return f"{number} {noun}" + ("" if number == 1 else "s")
 
 
-VERIFIED_UNDER = "verified under "
-"""How a file's note names the interpreter that loaded it (``verdicts.note_stand_ins``)."""
-
-
 def newer_python_lines(results: Sequence[FileResult], run_python: str | None,
                        run_version: str) -> list[str]:
     """One line per interpreter other than the run's (``run_python``; None: ours) that
@@ -75,12 +72,9 @@ def newer_python_lines(results: Sequence[FileResult], run_python: str | None,
     what was proven there is what that Python loads, not the robot's."""
     run_path = os.path.abspath(run_python or sys.executable)
     by_python: dict[str, list[str]] = {}
-    for file in results:
-        for note in file.notes:
-            if note.startswith(VERIFIED_UNDER):
-                used = note[len(VERIFIED_UNDER):]  # its absolute path (``describe``)
-                if used != run_path:
-                    by_python.setdefault(used, []).append(file.path)
+    for file in results:  # ``python``: its absolute path (``describe``)
+        if file.python and file.python != run_path:
+            by_python.setdefault(file.python, []).append(file.path)
     return [f"{counted(len(files), 'file')} need{'s' if len(files) == 1 else ''} a newer "
             f"Python than {run_version}: verified under {name}, the oldest found that "
             f"reads {'it' if len(files) == 1 else 'them'} ({', '.join(files)})"
@@ -139,8 +133,9 @@ def json_report(results: Sequence[FileResult], extra: dict[str, Any] | None = No
         "skills": [_skill_json(f, s) for f in results for s in f.skills],
         "files": [{"file": f.path, "changed": f.changed, "error": f.error,
                    "code": f.error_code,
-                   "error_line": f.error_line, "notes": f.notes}
-                  for f in results if f.error or f.notes or f.changed],
+                   "error_line": f.error_line, "notes": f.notes,
+                   **({"python": f.python} if f.python else {})}
+                  for f in results if f.error or f.notes or f.changed or f.python],
         **(extra or {}),
     }
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
@@ -183,6 +178,9 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
             f"{s.unchanged} |", ""]
     out += [f"- {note}" for note in options.notes]
     findings: list[str] = []
+    said: set[str] = set()
+    prefix_uses = Counter(f.prefix for file in results for skill in file.skills
+                          for f in skill.findings if f.prefix is not None)
     for file in results:
         if not file.skills and not file.error and not file.notes:
             continue
@@ -204,9 +202,16 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
                 if d.get("after") is not None:
                     out.append(f"    - migrated: `{d['after']}`")
             for f in skill.findings:
+                if f.prefix is not None and f.prefix in said:
+                    continue  # one cause, one line: its uses are counted there
                 where = _where(f.line, f.legacy_line) if f.line else "skill"
+                uses = prefix_uses.get(f.prefix or "", 0)
+                once = (f" ({uses} uses of prefix {f.prefix!r} in the migration, reported "
+                        "once, here)" if f.prefix is not None and uses > 1 else "")
+                if f.prefix is not None:
+                    said.add(f.prefix)
                 findings.append(f"- `{file.path}` {skill.name} ({where}) **{f.code}** "
-                                f"{f.kind}: {f.message}")
+                                f"{f.kind}: {f.message}{once}")
         out.append("")
     if findings:
         out += ["## Findings (kept as they were; not equivalence problems)", "", *findings, ""]

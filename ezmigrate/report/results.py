@@ -31,6 +31,9 @@ class ReviewFinding:
     message: str
     legacy_line: int | None = None
     """The line in the legacy file when ``line`` is the written file's (``written_lines``)."""
+    prefix: str | None = None
+    """The prefix no loaded ontology defines that the finding is about: one cause for the
+    whole project, which the report says once (as ``check`` does)."""
 
     @property
     def code(self) -> str:
@@ -38,7 +41,9 @@ class ReviewFinding:
         return code_for(self.kind)
 
     def to_json(self) -> dict[str, Any]:
-        return {**asdict(self), "code": self.code}
+        data = {**asdict(self), "code": self.code}
+        del data["prefix"]  # the report's schema: the message names the term
+        return data
 
 
 @dataclass(frozen=True)
@@ -105,6 +110,9 @@ class FileResult:
     """The catalogue kind of ``error``: ``unreadable`` (EZ905), or ``lossy-rewrite`` (EZ906)
     for a file the line guard (``core/guard.py``) kept from being written."""
     notes: list[str] = field(default_factory=list)
+    python: str = ""
+    """The interpreter that loaded the file when verifying, when it was not the run's own
+    (said once in the summary and the report's header, not per file)."""
     exports: list[str] = field(default_factory=list)
     """Description classes that convert (or inherit a conversion): bases for other files."""
     foreign_bases: list[tuple[str, str]] = field(default_factory=list)

@@ -11,7 +11,7 @@ from ..report.results import FileResult, SkillResult, SkillStatus
 from .compare_files import class_sources, compare_outcomes, load_failure
 from .pool import BATCH, PoolConfig, job_for, run_batched
 from .protocol import LoadJob, LoadOutcome
-from .verdicts import capture, note_stand_ins, rejections, with_findings
+from .verdicts import capture, loaded_with, note_stand_ins, rejections, with_findings
 
 
 @dataclass(frozen=True)
@@ -140,7 +140,7 @@ def _pair(relative: str, old_bytes: bytes | None, new_bytes: bytes | None,
     note_stand_ins(notes, before, after)
     skills = _compare(old_bytes, new_bytes, before, after, options)
     return FileResult(relative, skills=with_findings(skills, after, skip=frozenset()),
-                      notes=notes), False
+                      notes=notes, python=loaded_with(before, after)), False
 
 
 def _compare(old_bytes: bytes, new_bytes: bytes, before: LoadOutcome, after: LoadOutcome,

@@ -14,7 +14,6 @@ from dataclasses import dataclass, replace
 from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.dsl.policy import severity_of
 
-from ..report.reports import VERIFIED_UNDER
 from ..report.results import FileResult, ReviewFinding, SkillResult
 from .compare_files import ClassVerdict, compare_outcomes, load_failure
 from .protocol import LoadOutcome
@@ -46,6 +45,7 @@ def apply_verdicts(result: FileResult, before: LoadOutcome, after: LoadOutcome,
         capture(notes, before, after)
         return replace(result, skills=list(skills.values()), notes=notes, new_source=None), {}
     note_stand_ins(notes, before, after)
+    result = replace(result, python=loaded_with(before, after))
     verdicts = {v.name: v for v in compare_outcomes(
         before, after, ignore_order=comparison.ignore_order,
         ignore_labels=comparison.ignore_labels)}
@@ -173,12 +173,15 @@ def with_findings(skills: list[SkillResult], after: LoadOutcome,
     return out
 
 
+def loaded_with(before: LoadOutcome, after: LoadOutcome) -> str:
+    """The interpreter that loaded the file when it was not ours (``FileResult.python``),
+    else ""."""
+    return next((o.python for o in (before, after) if o.python), "")
+
+
 def note_stand_ins(notes: list[str], before: LoadOutcome, after: LoadOutcome) -> None:
-    """Say which interpreter loaded the file when it was not ours, and which imports could
-    not be resolved and were stood in (on both sides alike, so the comparison still holds;
-    a value taken from one would be a stand-in's)."""
-    for python in dict.fromkeys(o.python for o in (before, after) if o.python):
-        notes.append(f"{VERIFIED_UNDER}{python}")
+    """Say which imports could not be resolved and were stood in (on both sides alike, so
+    the comparison still holds; a value taken from one would be a stand-in's)."""
     names = sorted(set(before.stood_in) | set(after.stood_in))
     if names:
         notes.append("stood in (not found when loading; the same permissive stand-in on both "

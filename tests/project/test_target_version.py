@@ -87,3 +87,35 @@ def test_the_repository_says_which_robot(tmp_path):
     plain.mkdir()
     assert (target_for([plain], None).version, target_for([plain], None).flavour) == (
         (3, 10), None)
+
+
+AMENT_PYTHON = """<?xml version="1.0"?>
+<package format="3">
+  <name>lab_skills</name>
+  <version>0.1.0</version>
+  <description>skills</description>
+  <maintainer email="lab@example.org">lab</maintainer>
+  <license>MIT</license>
+  <export>
+    <build_type>ament_python</build_type>
+  </export>
+</package>
+"""
+
+
+def test_an_ament_python_package_in_a_subfolder_is_named_as_the_run_names_files(
+        tmp_path, monkeypatch):
+    """Issue 43: an ament_python package says what it is by its build type alone; the note
+    names its manifest relative to the working directory, and asks for what the run did
+    not look for (a ROS 2 robot's Python) rather than for a PATH entry."""
+    from ezmigrate.project.target import target_for, verified_with
+
+    (tmp_path / "src" / "lab_skills").mkdir(parents=True)
+    (tmp_path / "src" / "lab_skills" / "package.xml").write_text(AMENT_PYTHON)
+    monkeypatch.chdir(tmp_path)
+    target = target_for([tmp_path], None)
+    assert (target.flavour, target.python) == ("ros2", "3.10")
+    assert target.why.startswith("src/lab_skills/package.xml is a ")
+    line = verified_with(None, target)
+    if not line.split(" (")[0].endswith("3.10"):
+        assert "pass --python naming a python3.10" in line and "PATH" not in line
