@@ -107,8 +107,56 @@ def unknown_predicates(scene: Scene, index: OntologyIndex) -> list[WorldFinding]
     return found
 
 
+DECLARATIONS_PATTERN = "ontology-declarations-*.json"
+"""The entries of the ontology cache (``cache``) that keep one file's ``Declarations``:
+a ``check`` run need not parse the files of an unchanged ontology again to check them."""
+
+
 def _declarations(path: Path) -> Declarations:
-    """The reference axioms of one file, and the classes and properties it declares."""
+    """The reference axioms of one file, and the classes and properties it declares; kept
+    in the ontology cache by the file's bytes and the runtime's code (JSON, checked field
+    by field when read: a damaged or foreign entry is parsed again)."""
+    import hashlib
+    import json
+
+    from . import cache
+
+    data = path.read_bytes()
+    key = hashlib.sha256(b"declarations\0" + cache._code_digest().encode() + b"\0" + data)
+    entry = cache.default_cache_dir() / DECLARATIONS_PATTERN.replace("*", key.hexdigest())
+    try:
+        kept = _checked(json.loads(entry.read_text(encoding="utf-8")))
+    except (OSError, ValueError):
+        kept = None
+    if kept is not None:
+        return kept
+    found = _parsed_declarations(path)
+    triples, classes, properties = found
+    cache._store(entry, json.dumps({"triples": triples, "classes": sorted(classes),
+                                    "properties": sorted(properties)}).encode("utf-8"),
+                 DECLARATIONS_PATTERN)
+    return found
+
+
+def _checked(data: object) -> Declarations | None:
+    """Kept declarations, or None when ``data`` is not what ``_declarations`` wrote."""
+    if not isinstance(data, dict):
+        return None
+    triples, classes, properties = (data.get(k) for k in ("triples", "classes",
+                                                           "properties"))
+    if not (isinstance(triples, list) and all(
+            isinstance(t, list) and len(t) == 3 and all(isinstance(x, str) for x in t)
+            for t in triples)):
+        return None
+    if not all(isinstance(v, list) and all(isinstance(x, str) for x in v)
+               for v in (classes, properties)):
+        return None
+    return ([(t[0], t[1], t[2]) for t in triples], set(classes),  # type: ignore[arg-type]
+            set(properties))  # type: ignore[arg-type]
+
+
+def _parsed_declarations(path: Path) -> Declarations:
+    """``_declarations`` of one file, parsed with rdflib."""
     from .parsing import OntologyFile, format_for, parse_ontology_file, read_ontology_files
 
     [entry] = read_ontology_files([OntologyFile(path, format_for(path))])

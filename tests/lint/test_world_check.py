@@ -363,3 +363,31 @@ def test_skiros2s_own_core_ontology_gives_no_warning() -> None:
     assert {(f.code, f.subject.rpartition("#")[2]) for f in found} == {
         ("EZ410", "NavigationExe"), ("EZ410", "VelocityX"), ("EZ410", "VelocityY"),
         ("EZ410", "VelocityZ")}
+
+
+def test_an_ontology_file_is_parsed_once_and_a_damaged_kept_reading_is_parsed_again(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The declarations of a file are kept by its bytes in the ontology cache: the second
+    check does not parse it, and a kept entry that is not what was written is ignored."""
+    from ezskiros_runtime.ontology import consistency
+    from ezskiros_runtime.ontology.index import bundled_ontology_path
+    from ezskiros_runtime.ontology.load import load_index
+
+    monkeypatch.setenv("EZSKIROS_CACHE_DIR", str(tmp_path / "cache"))
+    lab = tmp_path / "lab.ttl"
+    lab.write_text(LAB_OWL, encoding="utf-8")
+    index = load_index([bundled_ontology_path(), lab])
+    parsed: list[Path] = []
+    real = consistency._parsed_declarations
+
+    def noted(path: Path) -> object:
+        parsed.append(path)
+        return real(path)
+
+    monkeypatch.setattr(consistency, "_parsed_declarations", noted)
+    first = consistency.ontology_findings([lab], index)
+    assert parsed == [lab] and first
+    assert consistency.ontology_findings([lab], index) == first and parsed == [lab]
+    for kept in (tmp_path / "cache").glob(consistency.DECLARATIONS_PATTERN):
+        kept.write_text('{"triples": [["only two", "items"]]}', encoding="utf-8")
+    assert consistency.ontology_findings([lab], index) == first and parsed == [lab, lab]

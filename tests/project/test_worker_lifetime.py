@@ -18,39 +18,12 @@ import sys
 from pathlib import Path
 
 import pytest
+from process_tree import descendants, ends
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "pidfd_open") or not Path("/proc").is_dir(),
                                 reason="needs Linux's /proc and pidfd_open")
-
-
-def _descendants(pid: int) -> set[int]:
-    found: set[int] = set()
-    todo = [pid]
-    while todo:
-        for task in Path(f"/proc/{todo.pop()}/task").glob("*/children"):
-            with contextlib.suppress(OSError):
-                children = {int(c) for c in task.read_text().split()} - found
-                todo += children
-                found |= children
-    return found
-
-
-def _ends(pid: int, seconds: float = 30) -> bool:
-    try:
-        handle = os.pidfd_open(pid)
-    except ProcessLookupError:
-        return True
-    try:
-        if select.select([handle], [], [], seconds)[0]:
-            return True
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-        return state in ("Z", "X")
-    except OSError:
-        return True
-    finally:
-        os.close(handle)
 
 
 def _held(args: list[str], point: str, repo: Path, hold: Path) -> subprocess.Popen[bytes]:
@@ -82,11 +55,11 @@ def test_no_worker_outlives_a_killed_run(tmp_path: Path, args: list[str], point:
     hold.mkdir()
     process = _held(args, point, repo, hold)
     try:
-        family = _descendants(process.pid)
+        family = descendants(process.pid)
         assert family, "the run has workers at this point"
         process.send_signal(signal.SIGKILL)
         process.wait()
-        assert [pid for pid in family if not _ends(pid)] == []
+        assert [pid for pid in family if not ends(pid)] == []
     finally:
         with contextlib.suppress(OSError):
             process.kill()

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import contextlib
 import os
-import select
 import signal
 import socket
 import subprocess
@@ -23,6 +22,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from process_tree import descendants, ends
 
 from ezmigrate.verify.sandbox import refusal, worker_environment
 
@@ -137,36 +137,6 @@ def test_a_loaded_module_is_held(tmp_path: Path) -> None:
         os.close(reader)
 
 
-def _descendants(pid: int) -> set[int]:
-    found: set[int] = set()
-    todo = [pid]
-    while todo:
-        current = todo.pop()
-        for task in Path(f"/proc/{current}/task").glob("*/children"):
-            with contextlib.suppress(OSError):
-                children = {int(c) for c in task.read_text().split()}
-                todo += list(children - found)
-                found |= children
-    return found
-
-
-def _gone(pid: int, seconds: float) -> bool:
-    """Whether ``pid`` ended within ``seconds`` (a bound on failure, not a race)."""
-    try:
-        handle = os.pidfd_open(pid)
-    except ProcessLookupError:
-        return True
-    try:
-        if select.select([handle], [], [], seconds)[0]:
-            return True
-        status = Path(f"/proc/{pid}/stat").read_text().split()[2]
-        return status in ("Z", "X")
-    except OSError:
-        return True
-    finally:
-        os.close(handle)
-
-
 @pytest.mark.skipif(not hasattr(os, "pidfd_open"), reason="needs pidfd_open")
 def test_no_worker_outlives_a_killed_rewrite(tmp_path: Path) -> None:
     gate = tmp_path / "gate"
@@ -183,11 +153,11 @@ def test_no_worker_outlives_a_killed_rewrite(tmp_path: Path) -> None:
                                stderr=subprocess.DEVNULL)
     try:
         os.close(os.open(gate, os.O_RDONLY))  # returns once the module is being loaded
-        family = _descendants(process.pid)
+        family = descendants(process.pid)
         assert family, "the load runs in a worker of rewrite"
         process.send_signal(signal.SIGKILL)
         process.wait()
-        alive = [pid for pid in family if not _gone(pid, 30)]
+        alive = [pid for pid in family if not ends(pid, 30)]
         assert alive == [], f"left running after rewrite was killed: {alive}"
     finally:
         with contextlib.suppress(OSError):
