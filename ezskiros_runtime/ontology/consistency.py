@@ -119,11 +119,12 @@ def _declarations(path: Path) -> Declarations:
     import hashlib
     import json
 
-    from . import cache
+    # the submodule itself: ``from . import cache`` would ask the package for a prefix
+    from .cache import _code_digest, _store, default_cache_dir
 
     data = path.read_bytes()
-    key = hashlib.sha256(b"declarations\0" + cache._code_digest().encode() + b"\0" + data)
-    entry = cache.default_cache_dir() / DECLARATIONS_PATTERN.replace("*", key.hexdigest())
+    key = hashlib.sha256(b"declarations\0" + _code_digest().encode() + b"\0" + data)
+    entry = default_cache_dir() / DECLARATIONS_PATTERN.replace("*", key.hexdigest())
     try:
         kept = _checked(json.loads(entry.read_text(encoding="utf-8")))
     except (OSError, ValueError):
@@ -132,9 +133,9 @@ def _declarations(path: Path) -> Declarations:
         return kept
     found = _parsed_declarations(path)
     triples, classes, properties = found
-    cache._store(entry, json.dumps({"triples": triples, "classes": sorted(classes),
-                                    "properties": sorted(properties)}).encode("utf-8"),
-                 DECLARATIONS_PATTERN)
+    _store(entry, json.dumps({"triples": triples, "classes": sorted(classes),
+                              "properties": sorted(properties)}).encode("utf-8"),
+           DECLARATIONS_PATTERN)
     return found
 
 

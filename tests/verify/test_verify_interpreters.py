@@ -205,7 +205,7 @@ def test_a_repositorys_own_interpreters_are_never_run(tmp_path):
         assert str(repo / "tools") not in run.stderr + run.stdout
         if command[0] != "check":  # both searches were made, and found nothing
             assert f"({sys.executable}), ontology read with" in run.stderr, run.stderr
-            assert "put python3.8 on PATH" in run.stderr
+            assert "no python3.8 was found on PATH's absolute entries" in run.stderr
             assert "no newer Python on PATH or in pyenv's versions folder" in run.stderr
     # the control: the same scripts in a folder outside the repository are found and run
     outside = tmp_path / "outside"
