@@ -683,7 +683,7 @@ def compound_pass(read: list[tuple[Candidate, bytes]],
     from ezskiros_runtime.compound.library import SkillIndex
 
     from ..compound.analysis import add_descriptions, analyse
-    from ..compound.repository import scan_repository
+    from ..compound.repository import description_of, scan_repository
 
     skills = SkillIndex.with_standard_library()
     library = library_candidates(list(libraries))
@@ -698,6 +698,11 @@ def compound_pass(read: list[tuple[Candidate, bytes]],
         skills.add_description(info)
     add_descriptions(skills, results, [(c, o.models) for c, o in loaded if o.loaded],
                      "repository")
+    for candidate, outcome in loaded:  # read in part from its syntax: the type exists,
+        for name, line, _ in outcome.unread:  # its keys are not known
+            if name not in skills.descriptions:
+                skills.add_description(description_of(name, None, "repository",
+                                                      str(candidate.path), line))
     return analyse(read, skills, index, pool, library, trees, around), skills
 
 

@@ -113,3 +113,39 @@ class Plain(SkillDescription):
     assert shapes["Looping"].endswith("is a loop")
     assert "gripper_conditions" in shapes["Helped"] and ".helpers" in shapes["Helped"]
     assert [m["name"] for m in read.models] == ["Plain"]
+
+
+def test_a_description_read_in_part_is_still_a_type_compound_skills_may_name(
+        tmp_path: Path) -> None:
+    """A class whose ``description`` comes from a base of another module is not read, but
+    it is a description all the same (loading it made one): a tree naming it is no
+    "unknown child type" error."""
+    import subprocess
+    import sys
+
+    pkg = tmp_path / "repo" / "pkg"
+    pkg.mkdir(parents=True)
+    (pkg / "__init__.py").write_text("")
+    (pkg / "base.py").write_text(
+        "from ezskiros_runtime import SkillDescription\n"
+        "from ezskiros_runtime.ontology import skiros\n\n\n"
+        "class Pick(SkillDescription):\n"
+        "    def description(self, Object: skiros.Product):\n        pass\n")
+    (pkg / "more.py").write_text(
+        "from ezskiros_runtime.ontology import skiros\n"
+        "from .base import Pick\n\n\nclass FastPick(Pick):\n    pass\n")
+    (pkg / "tasks.py").write_text(
+        "from skiros2_common.core.abstract_skill import SkillDescription\n"
+        "from skiros2_skill.core.skill import SkillBase\n\n\n"
+        "class Tidy(SkillDescription):\n    def createDescription(self):\n        pass\n\n\n"
+        "class tidy(SkillBase):\n    def createDescription(self):\n"
+        "        self.setDescription(Tidy(), self.__class__.__name__)\n\n"
+        "    def expand(self, skill):\n"
+        "        skill(self.skill(\"FastPick\", \"\"), self.skill(\"SlowPick\", \"\"))\n")
+    subprocess.run(["git", "init", "-q", str(tmp_path / "repo")], check=True)
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", "check", "--no-cache",
+                          "--exit-zero", "--output-format", "json", "--select", "EZ301",
+                          "."], cwd=tmp_path / "repo", capture_output=True, text=True,
+                         timeout=300, check=False)
+    unknown = [d["message"] for d in json.loads(run.stdout)]
+    assert len(unknown) == 1 and "'SlowPick'" in unknown[0], run.stdout + run.stderr
