@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import ast
 import importlib
+import operator
 import types
 import typing
 from collections.abc import Callable, Iterator
@@ -40,6 +41,10 @@ _BUILTIN_TYPES: dict[str, Any] = {t.__name__: t for t in
 _LITERAL_TYPES = (int, float, complex, str, bytes, bool, type(None))
 _TYPING = (typing.List, typing.Dict)  # noqa: UP006 - the objects, not annotations
 """``typing``'s aliases, which annotations of the robot's Python 3.8 subscript."""
+_COMPARISONS: dict[type, Callable[[Any, Any], Any]] = {
+    ast.Eq: operator.eq, ast.NotEq: operator.ne, ast.Lt: operator.lt, ast.LtE: operator.le,
+    ast.Gt: operator.gt, ast.GtE: operator.ge}
+"""The comparisons the DSL's property conditions are written with (``F.Open == False``)."""
 _MAX_LITERAL = 10_000
 """Longest string or collection the interpreter builds (``"x" * 10**9`` is refused)."""
 
@@ -204,9 +209,9 @@ class _Module:
     def _assign(self, node: ast.Assign | ast.AnnAssign) -> None:
         targets = node.targets if isinstance(node, ast.Assign) else [node.target]
         try:
-            value = _Evaluator(self.names, None).value(node.value) \
+            value = _Evaluator(self.names).value(node.value) \
                 if node.value is not None else None
-        except (Unreadable, Exception):
+        except Exception:  # Unreadable included: a name not read
             value = _Opaque("", f"line {node.lineno}")
         for target in targets:
             if isinstance(target, ast.Name):
@@ -224,8 +229,8 @@ class _Module:
                 bases.append(local)
                 continue
             try:
-                bases.append(_Evaluator(self.names, None).value(base))
-            except (Unreadable, Exception):
+                bases.append(_Evaluator(self.names).value(base))
+            except Exception:  # Unreadable included: a name not read
                 bases.append(_Opaque(ast.unparse(base), f"line {node.lineno}"))
         klass = _Class(node, bases)
         self.names[node.name] = klass
@@ -242,7 +247,7 @@ class _Module:
         """Evaluate an annotation as ``def`` does at import: a runtime error there (an
         unknown class of a known prefix) fails the whole module, as it would loading it."""
         try:
-            _Evaluator(self.names, None).value(annotation)
+            _Evaluator(self.names).value(annotation)
         except Unreadable:
             return  # decided later, when the class is read
         except Exception as exc:
@@ -315,21 +320,23 @@ class _Module:
         except Exception as exc:  # what instantiating the class raises: a class error
             result.errors.append(_class_error(name, line, exc, None))
 
+    def _owner(self, func: ast.FunctionDef) -> str:
+        """The name of the class that defines ``func`` (a base's, when inherited)."""
+        return next(name for name, klass in self.classes.items() if func in klass.node.body)
+
     def _trace(self, name: str, func: ast.FunctionDef) -> _Traced:
         """Steps (1), (2) and (5) of the lowering order on the syntax of ``func``."""
         from ezskiros_runtime.dsl.check_context import Trace
         from ezskiros_runtime.dsl.checking import run_checks
-        from ezskiros_runtime.dsl.parameters import NO_DEFAULT, spec_of
+        from ezskiros_runtime.dsl.parameters import NO_DEFAULT, spec_of, star_parameters
         from ezskiros_runtime.dsl.symbols import Symbol
 
-        evaluator = _Evaluator(self.names, None)
+        evaluator = _Evaluator(self.names)
         specs = []
         lines: dict[str, int] = {}
         arguments = func.args
         if arguments.vararg is not None or arguments.kwarg is not None:
-            raise DescriptionError(
-                f"{func.name}: *args / **kwargs are not skill parameters; declare every "
-                "parameter explicitly")
+            raise star_parameters(f"{self._owner(func)}.{func.name}")
         for arg, default, keyword_only in _with_defaults(arguments)[1:]:
             annotation = None if arg.annotation is None else \
                 evaluator.annotation(arg.annotation)
@@ -363,22 +370,14 @@ class _Traced:
         """The model SkiROS2's own calls would build (``lower_all`` on the legacy backend),
         or the exception instantiating the class would raise."""
         from ezskiros_runtime.dsl.backend import legacy_backend
-        from ezskiros_runtime.dsl.lowering import lower_all
+        from ezskiros_runtime.dsl.lowering import lower_checked
         from ezskiros_runtime.legacy.extract import model_of
 
-        errors = [f for f in self.findings if f.severity == "error"]
         backend = legacy_backend()
-        trace = self.trace
+        trace, findings = self.trace, self.findings
 
         def create(instance: Any) -> None:
-            try:
-                lower_all(instance, trace.specs, trace.recorded, backend)
-            except Exception as exc:
-                if errors:
-                    from ezskiros_runtime.diagnostics import SkillTypeError
-
-                    raise SkillTypeError(errors) from exc
-                raise
+            lower_checked(instance, trace.specs, trace.recorded, findings, backend)
 
         klass = type(trace.skill, (backend.SkillDescription,), {"createDescription": create})
         return dict(model_of(klass()).with_location(path, line).to_json())
@@ -409,7 +408,7 @@ class _Body:
         return self.recorded
 
     def _statement(self, node: ast.stmt) -> None:
-        evaluator = _Evaluator(self.names, self.self_name)
+        evaluator = _Evaluator(self.names)
         if isinstance(node, ast.Pass):
             return
         if isinstance(node, ast.AugAssign) and isinstance(node.op, ast.Add) \
@@ -440,9 +439,8 @@ class _Body:
 class _Evaluator:
     """Expressions over literals and the runtime's objects; anything else is ``Unreadable``."""
 
-    def __init__(self, names: dict[str, Any], self_name: str | None) -> None:
+    def __init__(self, names: dict[str, Any]) -> None:
         self.names = names
-        self.self_name = self_name
 
     def annotation(self, node: ast.expr) -> Any:
         """An annotation: a string one is parsed and evaluated as an expression, in the
@@ -534,14 +532,10 @@ class _Evaluator:
             raise Unreadable(node, "a chained comparison")
         left, right = self.value(node.left), self.value(node.comparators[0])
         _trusted(left, node)
-        op = node.ops[0]
-        operators: dict[type, Callable[[Any, Any], Any]] = {
-            ast.Eq: lambda a, b: a == b, ast.NotEq: lambda a, b: a != b,
-            ast.Lt: lambda a, b: a < b, ast.LtE: lambda a, b: a <= b,
-            ast.Gt: lambda a, b: a > b, ast.GtE: lambda a, b: a >= b}
-        if type(op) not in operators:
+        compare = _COMPARISONS.get(type(node.ops[0]))
+        if compare is None:
             raise Unreadable(node, shape_of(node))
-        return operators[type(op)](left, right)
+        return compare(left, right)
 
     def _List(self, node: ast.List) -> list[Any]:
         return [self.value(e) for e in self._sized(node.elts, node)]
@@ -722,17 +716,20 @@ def _relocate(node: ast.AST, at: ast.AST) -> None:
             child.lineno = getattr(at, "lineno", 0)
 
 
+_SHAPES: dict[type, str] = {
+    ast.For: "a loop", ast.While: "a loop", ast.If: "a branch (if)",
+    ast.Try: "a try statement", ast.With: "a with statement",
+    ast.Expr: "an expression statement (a call)", ast.Return: "a return",
+    ast.Lambda: "a lambda", ast.ListComp: "a comprehension",
+    ast.GeneratorExp: "a generator", ast.IfExp: "a conditional expression",
+    ast.BoolOp: "a boolean operator (and/or)", ast.Assign: "an assignment",
+    ast.AnnAssign: "an assignment", ast.AugAssign: "an assignment",
+    ast.FunctionDef: "a function definition", ast.Call: "a call"}
+
+
 def shape_of(node: ast.AST) -> str:
     """A statement or expression the reading does not evaluate, as a reader would name it."""
-    names = {ast.For: "a loop", ast.While: "a loop", ast.If: "a branch (if)",
-             ast.Try: "a try statement", ast.With: "a with statement",
-             ast.Expr: "an expression statement (a call)", ast.Return: "a return",
-             ast.Lambda: "a lambda", ast.ListComp: "a comprehension",
-             ast.GeneratorExp: "a generator", ast.IfExp: "a conditional expression",
-             ast.BoolOp: "a boolean operator (and/or)", ast.Assign: "an assignment",
-             ast.AnnAssign: "an assignment", ast.AugAssign: "an assignment",
-             ast.FunctionDef: "a function definition", ast.Call: "a call"}
-    for kind, name in names.items():
+    for kind, name in _SHAPES.items():
         if isinstance(node, kind):
             return name
     return f"a {type(node).__name__} the static reading does not evaluate"

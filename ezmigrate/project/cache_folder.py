@@ -12,8 +12,9 @@ key or write an entry: its sandbox covers the cache folder with an empty file sy
 (``verify/sandbox``); where the system refuses that sandbox, the key is made anew when the
 run ends, so whatever the loaded code learnt of it is worth nothing.
 
-Entries older than ``MAX_AGE`` days are removed, and the oldest go when the folder holds
-more than ``MAX_BYTES``; a read-only cache folder keeps nothing, with the same results.
+Entries unused for ``MAX_AGE`` are removed, and the oldest go when the folder holds more
+than ``MAX_BYTES`` (looked at once an hour at most); a read-only cache folder keeps
+nothing, with the same results.
 """
 
 from __future__ import annotations
@@ -34,6 +35,8 @@ MAX_AGE = 30 * 24 * 3600
 """An entry nobody read for this long (seconds) is removed."""
 MAX_BYTES = 512 * 1024 * 1024
 """Past this size the oldest entries are removed."""
+PRUNE_EVERY = 3600
+"""Seconds between two prunings of a cache root (``Store.prune``)."""
 _SIGNATURE = 64  # hexadecimal SHA-256 on the entry's first line
 
 
@@ -108,10 +111,21 @@ class Store:
         except OSError:
             return
 
-    def prune(self, now: float | None = None) -> None:
-        """Remove the entries of the whole cache root not used for ``MAX_AGE``, then the
-        oldest while the root holds more than ``MAX_BYTES``."""
-        prune(self.folder.parent.parent, now)
+    def prune(self) -> None:
+        """``prune`` the whole cache root, at most once every ``PRUNE_EVERY`` seconds (its
+        walk lists every entry of every project: not work for each run)."""
+        root = self.folder.parent.parent
+        stamp = root / "pruned"
+        try:
+            if time.time() - stamp.stat().st_mtime < PRUNE_EVERY:
+                return
+        except OSError:
+            pass  # never pruned yet
+        prune(root)
+        try:
+            stamp.touch()
+        except OSError:
+            return
 
 
 def digests_of(paths: Iterable[str]) -> dict[str, str] | None:
@@ -140,7 +154,8 @@ def _digest(path: str) -> str | None:
 
 
 def prune(root: Path, now: float | None = None) -> None:
-    """``Store.prune`` of the cache ``root``."""
+    """Remove the entries of the cache ``root`` not used for ``MAX_AGE``, then the oldest
+    while it holds more than ``MAX_BYTES``."""
     now = time.time() if now is None else now
     entries: list[tuple[float, int, Path]] = []
     for folder, _, files in os.walk(root / "projects"):

@@ -462,7 +462,7 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
                 loadable.append(candidate)
     data_of = {c.path: data for c, data in read}
     if not trace:
-        outcomes = [_read_ezskiros(c.path, data_of[c.path], index) for c in loadable]
+        outcomes = _read_ezskiros([(c.path, data_of[c.path]) for c in loadable], index)
     else:
         if loadable and progress is not None:
             progress(f"loading {len(loadable)} EzSkiROS files")
@@ -536,26 +536,25 @@ def _run(candidates: list[Candidate], outcome: CheckOutcome, index: OntologyInde
     return outcome
 
 
-def _read_ezskiros(path: Path, data: bytes, index: OntologyIndex | None) -> LoadOutcome:
-    """What loading an EzSkiROS file would give, read from its syntax
+def _read_ezskiros(files: list[tuple[Path, bytes]], index: OntologyIndex | None
+                   ) -> list[LoadOutcome]:
+    """What loading each EzSkiROS file would give, read from its syntax against ``index``
     (``lint/ezskiros_static``): ``check`` runs no code of the repository unless told
     (``--trace``)."""
     from ezskiros_runtime.ontology import use_ontology
 
     from ..lint.ezskiros_static import read_ezskiros_statically
-    from ..lint.newer_fstrings import older_spelling
     from ..verify.protocol import LoadOutcome
-    from .file_facts import parse
+    from .file_facts import parse, respelt
 
-    if index is not None:
-        use_ontology(index)
-    tree = parse(data)
-    if tree is None:  # Python 3.12's f-strings, respelt for this Python's ast
-        older = older_spelling(data)
-        tree = parse(older) if older is not None else None
-    if tree is None:  # the static pass has reported why (EZ905)
-        return LoadOutcome("ok")
-    return read_ezskiros_statically(tree, str(path)).outcome()
+    if index is not None and files:
+        use_ontology(index)  # the ontology the runtime's checks look names up in
+    outcomes = []
+    for path, data in files:
+        tree = parse(data) or respelt(data)
+        outcomes.append(LoadOutcome("ok") if tree is None  # the static pass said why
+                        else read_ezskiros_statically(tree, str(path)).outcome())
+    return outcomes
 
 
 @dataclass

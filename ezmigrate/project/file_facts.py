@@ -139,9 +139,15 @@ def _newer_syntax(relative: str, data: bytes) -> FileResult | Declined:
     """The plain reading of a file that ``ast`` refused only for Python 3.12's f-strings
     (``older_spelling``: the same tree, read from bytes this Python parses); everything
     else ``check`` takes of the file stays as for a file ``ast`` cannot read."""
-    older = older_spelling(data) if RUNTIME_MARKER not in data else None
-    tree = parse(older) if older is not None else None
+    tree = respelt(data) if RUNTIME_MARKER not in data else None
     return read_plain(data, relative, tree) if tree is not None else Declined()
+
+
+def respelt(data: bytes) -> ast.Module | None:
+    """The syntax tree of a module ``ast`` refuses only for Python 3.12's f-strings, read
+    from the same code respelt for this Python (``older_spelling``); None otherwise."""
+    older = older_spelling(data)
+    return parse(older) if older is not None else None
 
 
 def _implementation(tree: ast.Module | None, data: bytes) -> ModuleFacts | None:

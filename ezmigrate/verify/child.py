@@ -74,42 +74,43 @@ def load(job: LoadJob) -> LoadOutcome:
     return outcome
 
 
-_OPENED: list[list[str]] = []
-"""Where the audit hook (``_watch_opens``) notes the files the current load opens."""
+_RECORDING: list[list[str]] = []
+"""The files the load under way has opened (one list while a load runs, none otherwise:
+the worker's own files, between loads, are nobody's)."""
+_WATCHED: list[bool] = []
 
 
 def _watch_opens() -> None:
     """Note every file a load opens (Python's ``open`` audit event: imports through
     ``importlib`` and data files alike), but the interpreter's and libraries' own: what a
-    kept load depends on besides the file (``load_cache``). Installed once per process."""
-    if _OPENED:
+    kept load depends on besides the file (``load_cache``). Installed once per process
+    (an audit hook cannot be removed); it notes nothing outside a load."""
+    if _WATCHED:
         return
-    _OPENED.append([])
+    _WATCHED.append(True)
     skipped = tuple(os.path.join(os.path.realpath(p), "") for p in
                     {sys.prefix, sys.base_prefix, sys.exec_prefix}
                     | {str(Path(__file__).resolve().parents[2])})
 
     def hook(event: str, args: tuple) -> None:  # type: ignore[type-arg,unused-ignore]
-        if event == "open" and _OPENED and isinstance(args[0], (str, bytes, os.PathLike)) \
+        if event == "open" and _RECORDING and isinstance(args[0], (str, bytes, os.PathLike)) \
                 and (len(args) < 2 or args[1] is None or "r" in str(args[1])):
             path = os.path.realpath(os.fsdecode(args[0]))
             if not path.startswith(skipped) and os.path.isfile(path):
-                _OPENED[-1].append(path)
+                _RECORDING[0].append(path)
 
     sys.addaudithook(hook)
-
-
-def reads(since: int) -> list[str]:
-    """The files opened since ``since`` (an index into the current list), in order."""
-    return list(dict.fromkeys(_OPENED[-1][since:])) if _OPENED else []
 
 
 def _load_one(job: LoadJob) -> LoadOutcome:
     """``load`` for one file, with the files it opened noted in the outcome (``read``)."""
     _watch_opens()
-    start = len(_OPENED[-1])
-    outcome = _loaded(job)
-    outcome.read = [p for p in reads(start) if p != os.path.realpath(job.path)]
+    _RECORDING[:] = [[]]
+    try:
+        outcome = _loaded(job)
+    finally:
+        opened, _RECORDING[:] = _RECORDING[0], []
+    outcome.read = [p for p in dict.fromkeys(opened) if p != os.path.realpath(job.path)]
     return outcome
 
 

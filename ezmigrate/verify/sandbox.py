@@ -76,14 +76,21 @@ def private_home() -> str:
     return _HOME[0]
 
 
-_SAID: list[str | None] = []
+_PROBED: list[str | None] = []
+_SAID: list[bool] = []
 
 
 def refusal() -> str | None:
     """Why this system does not hold a child (``contain``), asked once per run of a probe
     child; None when it does."""
-    if _SAID:
-        return _SAID[0]
+    if not _PROBED:
+        _PROBED.append(_probe() if sys.platform.startswith("linux") else "not Linux")
+    return _PROBED[0]
+
+
+def _probe() -> str | None:
+    """``contain`` tried in a forked child, which reports and leaves."""
+    _libc()  # loaded before the fork: the child of a threaded process must not dlopen
     read, write = os.pipe()
     pid = os.fork()
     if pid == 0:  # the probe: report, and leave without running anything of the parent's
@@ -95,18 +102,17 @@ def refusal() -> str | None:
     with os.fdopen(read, "rb") as stream:
         answer = stream.read().decode("utf-8", "replace")
     os.waitpid(pid, 0)
-    _SAID.append(None if answer == "-" else answer or "the probe died")
-    return _SAID[0]
+    return None if answer == "-" else answer or "the probe died"
 
 
 def say_if_not_held() -> None:
-    """Say once per run, on stderr, when loaded modules run without namespaces."""
+    """Say once per run, on stderr, when loaded modules run without namespaces (and make
+    the cache's key anew when the run ends: ``_spoil_keys``)."""
     if _SAID:
         return
-    reason = refusal() if sys.platform.startswith("linux") else "not Linux"
+    _SAID.append(True)
+    reason = refusal()
     if reason is not None:
-        if not _SAID:
-            _SAID.append(reason)
         atexit.register(_spoil_keys, hidden_folders(os.environ))
         sys.stderr.write(f"ezmigrate: loaded modules run without a network, file and process "
                          f"sandbox here ({reason}): they can reach the network, and a "

@@ -280,6 +280,9 @@ class _Checker:
             self._reach_walk, (frozenset(), NOTHING_TAKEN))
         self.writes: _Writes | None = None
         self.hints: dict[str, str | None] = {}
+        self.undefined = frozenset(n.subject for n, _ in self.nodes if isinstance(n, CallProblem)
+                                   and n.kind == "processor-undefined")
+        """Processors the module defines nowhere (EZ317): not judged again as a fork's."""
 
     def add(self, kind: str, line: int, message: str, child: str = "",
             suggestion: str | None = None, severity: str | None = None) -> None:
@@ -300,10 +303,8 @@ class _Checker:
         return self.found
 
     def _processor(self, name: str, line: int) -> None:
-        undefined = {n.subject for n, _ in self.nodes
-                     if isinstance(n, CallProblem) and n.kind == "processor-undefined"}
         for part in name.replace(")", "").split("("):
-            if part and part not in UPSTREAM_PROCESSORS and part not in undefined:
+            if part and part not in UPSTREAM_PROCESSORS and part not in self.undefined:
                 where = ELSEWHERE.get(part)
                 self.add("processor-not-upstream", line,
                          f"processor {part} is not on SkiROS2's master and ros2 branches; it "

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
+from ..diagnostics import Finding, SkillTypeError
 from .backend import Backend
 from .collectors import Recorded
 from .conditions import Cond
@@ -87,5 +88,20 @@ def lower_all(description: Any, specs: Iterable[ParamSpec], recorded: Iterable[R
         lower_condition(description, record.which, record.condition)
 
 
-__all__ = ["ADDERS", "build_condition", "lower_all", "lower_condition", "lower_param",
-           "param_value"]
+def lower_checked(description: Any, specs: Iterable[ParamSpec],
+                  recorded: Iterable[Recorded], findings: Iterable[Finding],
+                  backend: Backend) -> None:
+    """``lower_all``, where a failure of the backend on a description the early checks
+    already found errors in raises those errors (``SkillTypeError``) instead: SkiROS2
+    itself rejects some bad defaults ([] or mixed lists) with a less helpful message."""
+    try:
+        lower_all(description, specs, recorded, backend)
+    except Exception as exc:
+        errors = [f for f in findings if f.severity == "error"]
+        if errors:
+            raise SkillTypeError(errors) from exc
+        raise
+
+
+__all__ = ["ADDERS", "build_condition", "lower_all", "lower_checked", "lower_condition",
+           "lower_param", "param_value"]

@@ -93,6 +93,14 @@ def _spec(name: str, ann: ParamAnnotation, default: Any, keyword_only: bool) -> 
                      description=ann.description, mismatch=mismatch, keyword_only=keyword_only)
 
 
+def star_parameters(qualname: str) -> DescriptionError:
+    """The error of a ``description`` (``qualname``: ``Pick.description``) that takes
+    ``*args`` or ``**kwargs``: whether traced or read from its syntax (``ezmigrate
+    check``), the same words."""
+    return DescriptionError(f"{qualname}: *args / **kwargs are not skill parameters; "
+                            "declare every parameter explicitly")
+
+
 def spec_of(name: str, annotation: Any, default: Any, keyword_only: bool) -> ParamSpec:
     """One parameter from its evaluated annotation and default (``_EMPTY`` for none): what
     ``evaluate_signature`` does per parameter, for a caller that evaluated them itself
@@ -153,9 +161,7 @@ def _raw_parameters(func: Callable[..., Any]) -> list[tuple[str, Any, bool]]:
     if code is None:
         raise DescriptionError(f"description must be a plain function, got {func!r}")
     if code.co_flags & (inspect.CO_VARARGS | inspect.CO_VARKEYWORDS):
-        raise DescriptionError(
-            f"{func.__qualname__}: *args / **kwargs are not skill parameters; declare every "
-            "parameter explicitly")
+        raise star_parameters(func.__qualname__)
     positional = code.co_varnames[:code.co_argcount]
     keyword = code.co_varnames[code.co_argcount:code.co_argcount + code.co_kwonlyargcount]
     defaults = getattr(func, "__defaults__", None) or ()
@@ -189,4 +195,5 @@ def call_arguments(specs: tuple[ParamSpec, ...], symbols: dict[str, Any]
     return args, kwargs
 
 
-__all__ = ["NO_DEFAULT", "ParamSpec", "call_arguments", "evaluate_signature", "spec_of"]
+__all__ = ["NO_DEFAULT", "ParamSpec", "call_arguments", "evaluate_signature", "spec_of",
+           "star_parameters"]

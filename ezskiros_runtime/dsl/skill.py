@@ -15,13 +15,13 @@ from __future__ import annotations
 import sys
 from typing import Any
 
-from ..diagnostics import DescriptionError, Finding, SkillTypeError
+from ..diagnostics import DescriptionError, Finding
 from .backend import Backend, select_backend
 from .check_context import Trace
 from .checking import report, run_checks
 from .collectors import CollectorSlot
 from .conditions import Cond
-from .lowering import lower_all, lower_condition
+from .lowering import lower_checked, lower_condition
 from .symbols import Symbol
 from .tracing import find_description, trace
 
@@ -64,16 +64,9 @@ class SkillDescription(_Base):
             return
         traced = trace(self, func)
         self._ez_trace = traced
-        # Checked before lowering, reported after generateDefParams (step 5): SkiROS2 itself
-        # rejects some bad defaults ([] or mixed lists) with a less helpful message.
+        # Checked before lowering, reported after generateDefParams (step 5)
         self.findings = run_checks(traced)
-        try:
-            lower_all(self, traced.specs, traced.recorded, BACKEND)
-        except Exception as exc:
-            errors = [f for f in self.findings if f.severity == "error"]
-            if errors:
-                raise SkillTypeError(errors) from exc
-            raise
+        lower_checked(self, traced.specs, traced.recorded, self.findings, BACKEND)
 
     def param(self, key: str) -> Symbol:
         """The symbol of any key, declared or not: ``self.param("Target Location")``."""
