@@ -56,7 +56,7 @@ def floor(root: Path) -> float:
 
 def core(root: Path, jobs: int) -> tuple[float, int, int]:
     """Seconds of ``run_check`` (warm), skills seen, findings before selection."""
-    from ezmigrate.project.check import run_check
+    from ezmigrate.checking.pipeline import run_check
     from ezmigrate.verify.pool import PoolConfig
     from ezskiros_runtime.ontology.index import bundled_ontology_path
     from ezskiros_runtime.ontology.load import load_index

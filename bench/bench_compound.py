@@ -5,7 +5,7 @@ primitive implementations, and four compound skills over them (trees of four to 
 children with remaps and specifies, some under processor nodes); in each module one
 compound builds its tree in a loop, so only tracing reads it (a sandboxed child per
 module). ``check``'s core (``run_check``, warm) is timed with the compound analysis and
-without it (``check._compound`` replaced by a no-op), interleaved, median of the rounds.
+without it (``CheckSettings(compounds=False)``), interleaved, median of the rounds.
 
     .venv/bin/python bench/bench_compound.py --runs 5
 """
@@ -86,14 +86,15 @@ def generate(root: Path, modules: int = 50, seed: int = 0) -> tuple[int, int]:
 
 
 def _time(root: Path, jobs: int, compounds: bool) -> tuple[float, int]:
-    from ezmigrate.project.check import run_check
+    from ezmigrate.checking.pipeline import run_check
+    from ezmigrate.checking.run import CheckSettings
     from ezmigrate.verify.pool import PoolConfig
     from ezskiros_runtime.ontology.index import bundled_ontology_path
     from ezskiros_runtime.ontology.load import load_index
 
     index = load_index([bundled_ontology_path()])
     start = time.perf_counter()
-    outcome = run_check([root], index, PoolConfig(workers=jobs), compounds=compounds)
+    outcome = run_check([root], index, PoolConfig(workers=jobs), CheckSettings(compounds=compounds))
     seconds = time.perf_counter() - start
     return seconds, sum(1 for d in outcome.diagnostics if d.code.startswith("EZ3"))
 

@@ -26,11 +26,15 @@ MAY_IMPORT: dict[str, frozenset[str]] = {
     "lint": frozenset({"files", "report", "codemod", "verify"}),
     "compound": frozenset({"files", "report", "codemod", "verify", "lint"}),
     "project": frozenset({"files", "report", "codemod", "verify", "lint", "compound"}),
-    "cli": frozenset({"files", "report", "codemod", "verify", "lint", "compound", "project"}),
+    "cache": frozenset({"files", "report", "verify", "lint", "project"}),
+    "checking": frozenset({"files", "report", "codemod", "verify", "lint", "compound",
+                           "project", "cache"}),
+    "cli": frozenset({"files", "report", "codemod", "verify", "lint", "compound", "project",
+                      "cache", "checking"}),
 }
 """Which rooms of ``ezmigrate`` a room may import (besides itself, the runtime and the
-package's ``__version__``): commands → project → compound → lint → codemod and verify →
-report and files."""
+package's ``__version__``): commands → checking → cache → project → compound → lint →
+codemod and verify → report and files."""
 
 TOP_LEVEL = {"ezmigrate", "ezmigrate.__main__"}
 """The only modules outside a room: the version, and the entry point that gates Python."""

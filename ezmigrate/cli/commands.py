@@ -31,7 +31,6 @@ from ..report.diffs import unified_diff
 from ..report.reports import (
     MarkdownOptions,
     Summary,
-    counted,
     json_report,
     markdown_report,
     newer_python_lines,
@@ -302,11 +301,14 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
     compounds: list[str] = []
     scenes: list[str] = []
     if report is not None and report.suffix.lower() == ".md":
-        from ..project.check import compound_report, scene_report
+        from ..checking.compound import compound_report
+        from ..checking.pipeline import scene_report
+        from ..checking.run import CheckSettings
 
         compounds = compound_report(
-            [(m.candidate, m.original, m.result) for m in outcome.migrated], index,
-            pool, options.skill_libraries, paths, options.exclude)
+            [(m.candidate, m.original, m.result) for m in outcome.migrated], index, pool,
+            CheckSettings(exclude=options.exclude, skill_libraries=options.skill_libraries),
+            paths)
         scenes = scene_report(paths, options.exclude, index)
     _finish(results, report, request.writes, check, strict,
             outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
@@ -332,7 +334,7 @@ def _cache_dir(paths: Sequence[Path], options: Options, named: Path | None) -> P
     first path, else the working directory."""
     from ezskiros_runtime.ontology.discovery import enclosing_project
 
-    from ..project.cache_folder import ENVIRONMENT, cache_root, project_folder
+    from ..cache.cache_folder import ENVIRONMENT, cache_root, project_folder
 
     if named is not None:  # the sandbox hides it from loaded code (``hidden_folders``)
         os.environ[ENVIRONMENT] = str(named.resolve())
@@ -535,28 +537,23 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     """
     from ezskiros_runtime.ontology.vendored import shared_rules
 
-    from ..lint.select import Selection, SelectorError, apply, parse_selectors
-    from ..project.check import checked_files, needs_trees, run_check
+    from ..checking.command import Conclusion, conclude, subject
+    from ..checking.discover import checked_files
+    from ..checking.pipeline import needs_trees, run_check
+    from ..checking.run import CheckSettings
+    from ..lint.select import Selection, SelectorError, parse_selectors
     from .output_formats import STATISTICS
 
     if statistics and output_format not in STATISTICS:
         raise click.UsageError(f"--statistics has no {output_format} form (it has "
                                f"{' and '.join(STATISTICS)}): drop one of the two options")
-    paths = paths or (Path("."),)
-    shown_as: dict[str, str] = {}  # the stdin file's private copy -> the name it stands for
-    roots: Sequence[Path] = paths
-    anchor = paths[0]
-    if [str(p) for p in paths] == ["-"]:
-        from ..project.stdin import stdin_file, stdin_roots
-
-        if fix or show_diff:
-            raise click.UsageError("--fix and --diff work on files, not on stdin")
-        copy = stdin_file(stdin_filename, sys.stdin.buffer.read())
-        shown_as[str(copy)] = str(stdin_filename) if stdin_filename else "-"
-        paths, roots, anchor = (copy,), stdin_roots(stdin_filename), stdin_filename or Path.cwd()
-    options = _options(anchor, CommandLine(
+    stdin = [str(p) for p in paths] == ["-"]
+    if stdin and (fix or show_diff):
+        raise click.UsageError("--fix and --diff work on files, not on stdin")
+    of = subject(paths, sys.stdin.buffer.read() if stdin else None, stdin_filename)
+    options = _options(of.anchor, CommandLine(
         exclude=exclude, jobs=jobs, timeout=timeout, python=python, select=select or None,
-        ignore=ignore, extend_select=extend_select), roots)
+        ignore=ignore, extend_select=extend_select), of.roots)
     try:
         selection = Selection(
             select=None if options.select is None else parse_selectors(options.select,
@@ -565,48 +562,31 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
             extend_select=parse_selectors(options.extend_select, "--extend-select"))
     except SelectorError as error:
         raise click.UsageError(str(error)) from None
-    compounds = needs_trees(selection.codes())
-    cache_dir = None if no_cache else _cache_dir(paths, options, cache_folder)
     with shared_rules():  # the four searches of the repository share their answers
-        discovered = checked_files(list(paths), options.exclude, include_vendored)
-        index, ontology_files, _ = _load_index(ontology, anchor, roots, options)
+        discovered = checked_files(list(of.paths), options.exclude, include_vendored)
+        index, ontology_files, _ = _load_index(ontology, of.anchor, of.roots, options)
         pool = options.pool(ontology_files)
         progress = (lambda line: click.echo(f"ezmigrate: {printable(line)}", err=True)) \
             if sys.stderr.isatty() and not quiet else None
-        outcome = run_check(list(paths), index, pool, options.exclude, progress,
-                            options.skill_libraries, compounds=compounds,
-                            world=_world_run(paths, options, scene),
-                            include_vendored=include_vendored, cache_dir=cache_dir,
-                            launch=_launch(anchor, launch_file, quiet), trace=trace,
-                            discovered=discovered)
-    for note in outcome.notes:
-        click.echo(f"ezmigrate: {printable(note)}", err=True)
-    found = [replace(d, path=shown_as.get(d.path) or shown_path(d.path))  # as cwd sees it
-             for d in apply(outcome.diagnostics, outcome.sources, selection)]
-    if fix or show_diff:
-        from ..project.fixes import apply_fixes
-
-        writes = fix and not show_diff
-        fixes = apply_fixes(found, paths, write=writes)
-        for diff in fixes.diffs:
-            echo_diff(diff)
-        for refused in fixes.refused:
-            click.echo(f"ezmigrate: {printable(refused)}", err=True)
-        if fixes.fixed or writes:
-            click.echo(f"ezmigrate: {'fixed' if writes else 'would fix'} "
-                       f"{counted(fixes.fixed, 'finding')} in {counted(fixes.files, 'file')}",
-                       err=True)
-        found = fixes.remaining
-        if show_diff:
-            sys.exit(EXIT_ATTENTION if fixes.fixed else EXIT_OK)
-    shown = [d for d in found if d.severity == "error"] if quiet else found
-    _echo_findings(shown, output_format, statistics)
-    errors = sum(1 for d in found if d.severity == "error")
-    if not quiet:
-        click.echo(f"ezmigrate: {counted(outcome.files, 'file')} checked, "
-                   f"{counted(outcome.skills, 'skill')}, {counted(errors, 'error')}, "
-                   f"{counted(len(found) - errors, 'other finding')}", err=True)
-    sys.exit(EXIT_OK if exit_zero or not errors else EXIT_ATTENTION)
+        outcome = run_check(list(of.paths), index, pool, CheckSettings(
+            exclude=options.exclude, include_vendored=include_vendored,
+            skill_libraries=options.skill_libraries,
+            compounds=needs_trees(selection.codes()), trace=trace,
+            cache_dir=None if no_cache else _cache_dir(of.paths, options, cache_folder),
+            world=_world_run(of.paths, options, scene),
+            launch=_launch(of.anchor, launch_file, quiet), progress=progress,
+            discovered=discovered))
+    done = conclude(outcome, of, Conclusion(
+        selection, "diff" if show_diff else "fix" if fix else None, quiet, exit_zero))
+    for diff in done.diffs:
+        echo_diff(diff)
+    for message in done.messages:
+        click.echo(f"ezmigrate: {printable(message)}", err=True)
+    if done.findings:
+        _echo_findings(done.shown, output_format, statistics)
+    if done.summary is not None:
+        click.echo(f"ezmigrate: {done.summary}", err=True)
+    sys.exit(done.exit_code)
 
 
 def _echo_findings(found: list[Any], output_format: str, statistics: bool) -> None:
@@ -625,7 +605,7 @@ def _launch(anchor: Path, chosen: Path | None, quiet: bool) -> Any:
     on stderr with what it sets."""
     from ezskiros_runtime.ontology.discovery import enclosing_project
 
-    from ..project.launch import project_launch
+    from ..checking.launch import project_launch
 
     root = anchor if anchor.is_dir() else enclosing_project(anchor)
     if root is None:  # a file alone: no launch file around it is its robot's, unless named

@@ -120,7 +120,7 @@ def say_if_not_held() -> None:
 
 
 def _spoil_keys(folders: list[str]) -> None:
-    """Remove the cache's signing key (``project/cache_folder``) from ``folders`` once the
+    """Remove the cache's signing key (``cache/cache_folder``) from ``folders`` once the
     run is over: code loaded without the sandbox may have read it, and the next run makes
     a new one, so every entry signed with the old key is a miss."""
     for folder in folders:

@@ -15,8 +15,8 @@ import sys
 import textwrap
 from pathlib import Path
 
+from ezmigrate.checking.reading_pool import TAKES_ON
 from ezmigrate.codemod.core.lazy_cst import cst
-from ezmigrate.project.reading_pool import TAKES_ON
 
 HEADER = """\
 from skiros2_common.core.abstract_skill import SkillDescription

@@ -11,8 +11,9 @@ from pathlib import Path
 
 import pytest
 
+from ezmigrate.checking.pipeline import run_check
+from ezmigrate.checking.run import CheckSettings
 from ezmigrate.lint.diagnostic import Diagnostic
-from ezmigrate.project.check import run_check
 from ezmigrate.verify.pool import PoolConfig
 
 MODULE = '''\
@@ -42,7 +43,7 @@ def ez3(tmp_path: Path, body: str) -> list[Diagnostic]:
     path = tmp_path / "task.py"
     path.write_text(MODULE.format(body=textwrap.indent(textwrap.dedent(body).strip(),
                                                        " " * 8)), encoding="utf-8")
-    outcome = run_check([path], None, PoolConfig(workers=1), trace=True)
+    outcome = run_check([path], None, PoolConfig(workers=1), CheckSettings(trace=True))
     return [d for d in outcome.diagnostics if d.code.startswith("EZ3")]
 
 
@@ -150,12 +151,14 @@ def test_a_specify_of_what_modify_description_adds_is_dropped(tmp_path: Path):
     ``self.addParam`` never declares it there (EZ307)."""
     (tmp_path / "wrapper").mkdir()
     (tmp_path / "wrapper" / "paint.py").write_text(MODIFIED.format(owner="skill"))
-    found = run_check([tmp_path / "wrapper"], None, PoolConfig(workers=1), trace=True).diagnostics
+    found = run_check([tmp_path / "wrapper"], None, PoolConfig(workers=1),
+                      CheckSettings(trace=True)).diagnostics
     [late] = [d for d in found if d.code.startswith("EZ3")]
     assert (late.code, late.severity) == ("EZ319", "warning") and "'Pressure'" in late.message
     (tmp_path / "itself").mkdir()
     (tmp_path / "itself" / "paint.py").write_text(MODIFIED.format(owner="self"))
-    found = run_check([tmp_path / "itself"], None, PoolConfig(workers=1), trace=True).diagnostics
+    found = run_check([tmp_path / "itself"], None, PoolConfig(workers=1),
+                      CheckSettings(trace=True)).diagnostics
     [dropped] = [d for d in found if d.code.startswith("EZ3")]
     assert dropped.code == "EZ307" and "'Pressure'" in dropped.message
     assert "modifyDescription to itself" in dropped.message
@@ -237,7 +240,7 @@ def test_a_remap_onto_a_key_modify_description_adds_depends_on_the_label(
     every node of its description (issue 30, a lab's navigate_and_open_doors)."""
     path = tmp_path / "tour.py"
     path.write_text(TWO_IMPLEMENTATIONS.replace("LABEL", label), encoding="utf-8")
-    outcome = run_check([path], None, PoolConfig(workers=1), trace=True)
+    outcome = run_check([path], None, PoolConfig(workers=1), CheckSettings(trace=True))
     assert codes([d for d in outcome.diagnostics if d.code.startswith("EZ3")]) == expected
 
 

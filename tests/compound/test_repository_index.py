@@ -12,10 +12,10 @@ import subprocess
 import textwrap
 from pathlib import Path
 
+from ezmigrate.checking.pipeline import run_check
 from ezmigrate.compound.repository import recover_classes
 from ezmigrate.files.discover import repository_root
 from ezmigrate.lint.diagnostic import Diagnostic
-from ezmigrate.project.check import run_check
 from ezmigrate.verify.pool import PoolConfig
 
 HEADER = """\

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ezmigrate.checking.pipeline import run_check
 from ezmigrate.lint.diagnostic import Diagnostic
-from ezmigrate.project.check import run_check
 from ezmigrate.verify.pool import PoolConfig
 
 TASK = '''\

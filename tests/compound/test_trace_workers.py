@@ -10,9 +10,10 @@ from pathlib import Path
 
 import pytest
 
+from ezmigrate.checking.pipeline import run_check
+from ezmigrate.checking.run import CheckSettings
 from ezmigrate.compound import analysis, tracing
 from ezmigrate.compound.tracing import TRACED_PER_WORKER, trace_workers
-from ezmigrate.project.check import run_check
 from ezmigrate.verify import pool as pool_module
 from ezmigrate.verify.pool import PoolConfig
 from ezmigrate.verify.protocol import LoadJob
@@ -47,7 +48,7 @@ def test_one_worker_per_so_many_files_at_most_the_pools(count, workers, expected
 def test_a_few_trees_are_traced_by_one_worker(tmp_path: Path, monkeypatch):
     _three_trees(tmp_path)
     spawned = _spawns_noted(monkeypatch)
-    outcome = run_check([tmp_path], None, PoolConfig(workers=2), trace=True)
+    outcome = run_check([tmp_path], None, PoolConfig(workers=2), CheckSettings(trace=True))
     traced = sorted(Path(d.path).name for d in outcome.diagnostics if d.code == "EZ309")
     assert traced == ["task0.py", "task1.py", "task2.py"]  # each tree traced, mistake found
     assert len(spawned) == 1
@@ -83,7 +84,7 @@ def test_the_trees_to_trace_are_traced_in_one_go(tmp_path: Path, monkeypatch):
         return real(jobs, *rest, **named)  # type: ignore[arg-type]
 
     monkeypatch.setattr(analysis, "trace_all", noted)
-    outcome = run_check([tmp_path], None, PoolConfig(workers=2), trace=True)
+    outcome = run_check([tmp_path], None, PoolConfig(workers=2), CheckSettings(trace=True))
     assert asked == [["task0.py", "task1.py", "task2.py"]]
     traced = sorted(Path(d.path).name for d in outcome.diagnostics if d.code == "EZ309")
     assert traced == ["task0.py", "task1.py", "task2.py"]

@@ -16,8 +16,8 @@ from pathlib import Path
 
 import pytest
 
+from ezmigrate.checking.launch import launch_files
 from ezmigrate.files.discover import discover
-from ezmigrate.project.launch import launch_files
 from ezskiros_runtime.ontology.discovery import discover as discover_ontology
 from ezskiros_runtime.ontology.vendored import VendoredRule, holds_only_skiros2, upstream_package
 

@@ -8,9 +8,9 @@ import sys
 import textwrap
 from pathlib import Path
 
+from ezmigrate.checking.pipeline import run_check
 from ezmigrate.lint.diagnostic import Diagnostic
 from ezmigrate.lint.select import Selection, apply
-from ezmigrate.project.check import run_check
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.load import load_index
 

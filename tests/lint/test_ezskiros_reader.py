@@ -13,10 +13,11 @@ from pathlib import Path
 import pytest
 from process_log import log_calls, logged
 
+from ezmigrate.checking.pipeline import run_check
+from ezmigrate.checking.run import CheckSettings
 from ezmigrate.codemod.migrate import Settings, migrate
 from ezmigrate.lint.ezskiros_reader import read_ezskiros
 from ezmigrate.project import runner
-from ezmigrate.project.check import run_check
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.load import load_index
 
@@ -100,10 +101,10 @@ def test_check_parses_no_such_file_with_libcst(tmp_path: Path, monkeypatch) -> N
     log = tmp_path / "migrated.log"
     log_calls(monkeypatch, runner, "migrate_file", log, lambda relative, *_: relative)
     index = load_index()
-    outcome = run_check([repo], index, PoolConfig(workers=2), trace=False)
+    outcome = run_check([repo], index, PoolConfig(workers=2), CheckSettings(trace=False))
     assert outcome.files >= 10 and logged(log) == []
-    monkeypatch.setattr("ezmigrate.project.file_facts.read_ezskiros", lambda *_: None)
-    codemod = run_check([repo], index, PoolConfig(workers=2), trace=False)
+    monkeypatch.setattr("ezmigrate.checking.file_facts.read_ezskiros", lambda *_: None)
+    codemod = run_check([repo], index, PoolConfig(workers=2), CheckSettings(trace=False))
     assert len(logged(log)) >= 10 and codemod.diagnostics == outcome.diagnostics
 
 

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from check_support import cli, legacy
 
-from ezmigrate.project.launch import read_launch
+from ezmigrate.checking.launch import read_launch
 
 SKILL = legacy('self.addParam("Part", Element("lab:Widget"), ParamTypes.Required)')
 OWL = """\
@@ -142,7 +142,7 @@ def test_a_ros2_launch_file_is_read_statically_where_its_values_are_literals(tmp
 
 
 def test_find_resolves_to_a_ros_package_of_the_repository():
-    from ezmigrate.project.launch import project_launch
+    from ezmigrate.checking.launch import project_launch
 
     package = Path(__file__).resolve().parents[2] / "fixtures" / "noetic_package"
     launch, note = project_launch(package)

@@ -17,11 +17,11 @@ from pathlib import Path
 
 import pytest
 
+from ezmigrate.checking import file_facts
+from ezmigrate.checking.pipeline import run_check
 from ezmigrate.files.discover import Candidate
 from ezmigrate.lint.newer_fstrings import older_spelling
 from ezmigrate.lint.plain_reader import Declined
-from ezmigrate.project import file_facts
-from ezmigrate.project.check import run_check
 from ezmigrate.report.results import FileResult
 from ezmigrate.verify.interpreters import find_python
 from ezmigrate.verify.pool import PoolConfig

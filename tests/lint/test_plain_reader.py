@@ -14,12 +14,14 @@ from pathlib import Path
 import pytest
 from bench_generator import generator
 
+from ezmigrate.checking import file_facts
+from ezmigrate.checking import per_file as check
+from ezmigrate.checking.per_file import legacy_diagnostics as _legacy
+from ezmigrate.checking.pipeline import run_check
 from ezmigrate.codemod.migrate import Settings, migrate
 from ezmigrate.files.prefilter import may_hold_descriptions
 from ezmigrate.lint.diagnostic import Positions
 from ezmigrate.lint.plain_reader import Declined, read_plain
-from ezmigrate.project import check, file_facts
-from ezmigrate.project.check import _legacy, run_check
 from ezmigrate.report.results import FileResult
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.index import bundled_ontology_path

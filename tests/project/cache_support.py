@@ -15,7 +15,7 @@ def user_cache(repo: Path) -> Path:
 
 def entries(repo: Path) -> Path:
     """The folder of ``repo``'s entries in ``user_cache``."""
-    from ezmigrate.project.cache_folder import project_folder
+    from ezmigrate.cache.cache_folder import project_folder
 
     return project_folder(user_cache(repo), repo)
 

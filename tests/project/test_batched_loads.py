@@ -10,7 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from ezmigrate.project.check import run_check
+from ezmigrate.checking.pipeline import run_check
+from ezmigrate.checking.run import CheckSettings
 from ezmigrate.verify import pool as pool_module
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.load import load_index
@@ -40,9 +41,9 @@ def repo(tmp_path: Path) -> Path:
 def test_batches_find_what_one_child_per_file_finds(repo: Path,
                                                     monkeypatch: pytest.MonkeyPatch) -> None:
     index = load_index()
-    batched = run_check([repo], index, PoolConfig(workers=2), compounds=False)
+    batched = run_check([repo], index, PoolConfig(workers=2), CheckSettings(compounds=False))
     monkeypatch.setattr(pool_module, "BATCH", 1)  # every file in a child of its own
-    alone = run_check([repo], index, PoolConfig(workers=2), compounds=False)
+    alone = run_check([repo], index, PoolConfig(workers=2), CheckSettings(compounds=False))
     assert batched.diagnostics == alone.diagnostics
     assert batched.skills == alone.skills
     said = {(Path(d.path).name, d.code) for d in batched.diagnostics}

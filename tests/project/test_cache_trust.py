@@ -14,8 +14,8 @@ from pathlib import Path
 
 from cache_support import check_json, entries
 
-from ezmigrate.project.cache_folder import MAX_AGE, Store, prune, user_key
-from ezmigrate.project.outcome_cache import OUTCOMES
+from ezmigrate.cache.cache_folder import MAX_AGE, Store, prune, user_key
+from ezmigrate.cache.outcome_cache import OUTCOMES
 
 ROOT = Path(__file__).resolve().parents[2]
 

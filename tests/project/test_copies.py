@@ -20,13 +20,13 @@ import pytest
 from bench_generator import generator
 from process_log import log_calls, logged
 
+from ezmigrate.checking import reading_pool
+from ezmigrate.checking.file_facts import file_facts
+from ezmigrate.checking.pipeline import run_check
 from ezmigrate.compound.analysis import TreeFacts
 from ezmigrate.files.discover import Candidate
 from ezmigrate.files.prefilter import by_text
 from ezmigrate.lint.plain_reader import Declined
-from ezmigrate.project import reading_pool
-from ezmigrate.project.check import run_check
-from ezmigrate.project.file_facts import file_facts
 from ezmigrate.report.results import FileResult
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.compound.model import CompoundModel

@@ -16,13 +16,14 @@ from pathlib import Path
 
 import pytest
 
+from ezmigrate.cache.cache_folder import Store, project_folder, user_key
+from ezmigrate.cache.facts_cache import PACK, FactsCache
+from ezmigrate.cache.facts_codec import CodecError, decode, encode
+from ezmigrate.checking import reading_pool
+from ezmigrate.checking.pipeline import run_check
+from ezmigrate.checking.run import CheckSettings
 from ezmigrate.lint.diagnostic import Diagnostic
-from ezmigrate.project import reading_pool
 from ezmigrate.project import settle as settle_module
-from ezmigrate.project.cache_folder import Store, project_folder, user_key
-from ezmigrate.project.check import run_check
-from ezmigrate.project.facts_cache import PACK, FactsCache
-from ezmigrate.project.facts_codec import CodecError, decode, encode
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.index import bundled_ontology_path
 from ezskiros_runtime.ontology.load import load_index
@@ -133,7 +134,7 @@ def _run(repo: Path, cached: bool) -> list[Diagnostic]:
     scene_module._KNOWN.clear()  # each run as a new process starts: nothing parsed yet
     index = load_index([bundled_ontology_path()])
     outcome = run_check([repo], index, PoolConfig(workers=1),
-                        cache_dir=_folder(repo) if cached else None)
+                        CheckSettings(cache_dir=_folder(repo) if cached else None))
     return outcome.diagnostics
 
 
@@ -200,7 +201,7 @@ def test_the_codec_makes_nothing_but_our_own_readings(tmp_path: Path) -> None:
     marker = tmp_path / "ran.marker"
     for forged in ({"c": "os:system", "f": {}},
                    {"c": "pathlib:Path", "f": {"_raw_paths": [str(marker)]}},
-                   {"c": "ezmigrate.project.facts_codec:decode", "f": {}},
+                   {"c": "ezmigrate.cache.facts_codec:decode", "f": {}},
                    {"c": "ezmigrate.lint.diagnostic:Diagnostic", "f": {"__class__": 1}}):
         with pytest.raises(CodecError):
             decode(json.loads(json.dumps(forged)))

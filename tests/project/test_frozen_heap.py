@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from ezmigrate.project import reading_pool
-from ezmigrate.project.check import run_check
+from ezmigrate.checking import reading_pool
+from ezmigrate.checking.pipeline import run_check
 from ezmigrate.verify.pool import PoolConfig
 
 LEGACY = """\

@@ -11,7 +11,7 @@ from pathlib import Path
 from cache_support import check_json
 from cache_support import entries as cache_entries
 
-from ezmigrate.project.load_cache import LoadCache, cached_loads
+from ezmigrate.cache.load_cache import LoadCache, cached_loads
 from ezmigrate.verify.protocol import LoadJob, LoadOutcome
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"

@@ -14,7 +14,7 @@ from pathlib import Path
 
 from cache_support import check_json, entries
 
-from ezmigrate.project.outcome_cache import OUTCOMES
+from ezmigrate.cache.outcome_cache import OUTCOMES
 
 TRACED = '''\
 import pathlib

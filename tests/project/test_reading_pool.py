@@ -13,9 +13,10 @@ import pytest
 from bench_generator import generator
 from process_log import log_calls, logged
 
+from ezmigrate.checking import reading_pool
+from ezmigrate.checking.pipeline import run_check
 from ezmigrate.files.discover import Candidate, discover
-from ezmigrate.project import reading_pool, runner
-from ezmigrate.project.check import run_check
+from ezmigrate.project import runner
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.index import bundled_ontology_path
 from ezskiros_runtime.ontology.load import load_index

@@ -32,10 +32,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..lint.plain_reader import Declined
+from ..project.lifetime import exit_with_parent
+from ..project.runner import own_reading
 from ..report.results import FileResult
 from .file_facts import FileFacts, file_facts
-from .lifetime import exit_with_parent
-from .runner import own_reading
 
 if TYPE_CHECKING:
     from ezskiros_runtime.world.scene import Scene

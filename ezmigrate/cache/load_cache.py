@@ -21,10 +21,10 @@ import sys
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 
+from ..project.cross_file import module_name
+from ..project.import_scan import import_words
 from ..verify.protocol import LoadJob, LoadOutcome
 from .cache_folder import Store, digests_of, unchanged
-from .cross_file import module_name
-from .import_scan import import_words
 from .outcome_cache import code_digest
 
 CACHED = frozenset({"ok", "import-error", "syntax", "exit"})

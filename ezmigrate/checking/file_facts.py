@@ -26,8 +26,8 @@ from ..files.prefilter import marker_is_identifier
 from ..lint.ezskiros_reader import read_ezskiros
 from ..lint.newer_fstrings import older_spelling
 from ..lint.plain_reader import Declined, read_plain
+from ..project.cross_file import RUNTIME_MARKER
 from ..report.results import FileResult
-from .cross_file import RUNTIME_MARKER
 from .implementation_code import ModuleFacts, module_facts
 
 

@@ -1,0 +1,110 @@
+"""Stage 1, discover: the run's files and scenes, the launch file's start scene, and
+whether the outcome cache answers the run whole.
+
+Then the run is set up for reading: the compound pass's ``Trees`` (when an EZ3 code is
+selected), the facts cache and the reading pool. The pool forks its workers when the files
+are read, before any thread starts.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..cache.outcome_cache import OutcomeCache, read_all, run_key
+from ..files.discover import Discovery, library_candidates, start_discovery
+from ..lint.scene_search import SCENE_SUFFIX, WorldRun, scene_files
+from .launch import with_init_scene
+from .run import CheckOutcome, CheckRun
+
+
+def checked_files(paths: list[Path], exclude: tuple[str, ...] = (),
+                  include_vendored: bool = False) -> Discovery:
+    """The files ``check`` reads under ``paths`` (scenes named there are scenes), being
+    discovered: the command starts this before it searches for the ontology, the launch
+    file and the scenes, which it does while git says what it ignores."""
+    return start_discovery([p for p in paths if p.suffix != SCENE_SUFFIX], exclude,
+                           include_vendored=include_vendored)
+
+
+def _text(data: bytes) -> str:
+    return data.decode("utf-8", errors="replace")
+
+
+def _kept(run: CheckRun) -> None:
+    """Look the run up in the outcome cache (runs over folders with a cache only: a run
+    over named files also reads the repository around them, which the key would have to
+    read too); a hit answers the run."""
+    settings, world, launch = run.settings, run.world, run.settings.launch
+    if settings.cache_dir is None or not run.paths or not all(p.is_dir() for p in run.paths):
+        return
+    files = read_all([*(c.path for c in run.candidates), *world.scenes,
+                      *([launch.path] if launch is not None else [])])
+    if files is None:
+        return
+    files += [(str(c.path), data) for c, data in library_candidates(list(settings.skill_libraries))]
+    run.kept_key = run_key(files, {
+        "ontology": run.index.fingerprint if run.index is not None else "",
+        "interpreter": run.pool.python or "", "timeout": run.pool.timeout,
+        "single_valued": list(world.single_valued) if world.single_valued is not None
+        else None, "start_scene": str(world.start_scene or ""),
+        "launch": sorted(launch.values.items()) if launch is not None else None,
+        "compounds": settings.compounds, "trace": settings.trace,
+        "paths": [str(p) for p in run.paths]})
+    hit = OutcomeCache(settings.cache_dir).get(run.kept_key)
+    if hit is None:
+        return
+    read = {str(c.path) for c in run.candidates} | {str(p) for p in world.scenes}
+    sources = {path: _text(data) for path, data in files if path in read}
+    run.outcome = CheckOutcome(files=hit["files"], skills=hit["skills"],
+                               diagnostics=hit["diagnostics"], sources=sources,
+                               notes=hit["notes"])
+    run.done = True
+
+
+def _prepare(run: CheckRun) -> None:
+    """The compound pass's ``Trees``, the facts cache and the reading pool of a run the
+    cache did not answer."""
+    from ..codemod.settings import Settings
+    from ..compound.analysis import Trees
+    from .reading_pool import ReadingPool
+
+    settings, launch = run.settings, run.settings.launch
+    if settings.progress is not None:
+        settings.progress(f"checking {len(run.candidates)} files")
+    if settings.compounds:
+        listed = launch.listed("skill_list") if launch is not None else None
+        run.trees = Trees(named=tuple(run.paths), exclude=settings.exclude,
+                          launched=frozenset(listed) if listed is not None else None,
+                          libraries=frozenset(launch.listed("libraries_list") or ())
+                          if launch is not None else frozenset(), trace=settings.trace)
+    if run.kept_key is not None and settings.cache_dir is not None:
+        from ..cache.facts_cache import FactsCache, seed_scenes
+
+        # the readings of each file by content: for runs over folders, as the whole run's
+        # cache (a run over named files would keep only their entries and drop the others)
+        run.facts_cache = FactsCache.open(settings.cache_dir)
+        if run.facts_cache is not None:
+            run.scenes_cached = seed_scenes(run.facts_cache, run.world.scenes)
+    run.reader = ReadingPool(run.pool.workers, Settings(index=run.index),
+                             idle=_checks_after_reading)
+
+
+def _checks_after_reading() -> None:
+    """Import the checks that run once the files are read (legacy descriptions, the world
+    model, the robot's vocabulary): 20 ms of a run's main process, spent while it waits for
+    the reading workers' last chunks instead of after them."""
+    from ..lint import legacy, robot_vocabulary, world_model  # noqa: F401
+
+
+def run(run: CheckRun) -> None:
+    """Discover the files and scenes; answer from the cache or set the run up to read."""
+    settings = run.settings
+    world = settings.world or WorldRun(scenes=tuple(scene_files(run.paths, settings.exclude)))
+    run.world = with_init_scene(world, settings.launch)
+    discovery = settings.discovered or checked_files(run.paths, settings.exclude,
+                                                     settings.include_vendored)
+    run.candidates, notes = discovery.result()
+    run.outcome = CheckOutcome(files=len(run.candidates), notes=notes)
+    _kept(run)
+    if not run.done:
+        _prepare(run)

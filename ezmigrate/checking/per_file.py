@@ -1,0 +1,145 @@
+"""Stage 3, per-file checks: what each file says on its own.
+
+A legacy description gets the runtime's early checks on what the read stage found it to
+declare, and the checks only legacy code needs (``lint/legacy.py``). An EzSkiROS file is
+read from its syntax (``lint/ezskiros_static``: no code of the repository runs), or under
+``--trace`` loaded in the sandbox (``verify``), and reports the runtime's own findings.
+Every finding gets its catalogue code (``ezskiros_runtime.codes``); selection and
+suppression come later (``lint/select.py``), so every stage reports everything.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from ..lint.diagnostic import Diagnostic, Positions, diagnostic
+from ..report.results import FileResult
+from .run import CheckRun
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.ontology.index import OntologyIndex
+
+    from ..verify.protocol import LoadOutcome
+
+UNRESOLVED_LOAD = {"timeout": "info", "memory": "info", "crashed": "info"}
+"""Loads that failed on the sandbox's limits, not on the module: nothing is known of it."""
+KEPT_FROM_CODEMOD = frozenset({"description-in-options", "options-ignored"})
+"""Codemod findings ``check`` keeps; the others are found again by the runtime's checks."""
+
+
+def legacy_diagnostics(path: str, result: FileResult, positions: Positions,
+                       index: OntologyIndex | None) -> list[Diagnostic]:
+    """The findings of one file's legacy descriptions, as the read stage found them."""
+    from ..lint.legacy import legacy_hits  # a run its cache answers needs none of this
+
+    found: list[Diagnostic] = []
+    if result.error:
+        found.append(diagnostic(path, positions, result.error_kind, result.error_line or 0,
+                                result.error.splitlines()[0]))
+    for skill in result.skills:
+        if skill.status == "converted":
+            found.append(diagnostic(path, positions, "not-migrated", skill.line,
+                                    "legacy description not migrated yet (run `ezmigrate "
+                                    "rewrite`)", skill.name))
+            for f in skill.findings:
+                if f.kind in KEPT_FROM_CODEMOD:
+                    found.append(diagnostic(path, positions, f.kind, f.line or skill.line,
+                                            f.message, skill.name))
+            if skill.static is not None:
+                for hit in legacy_hits(skill.name, path, skill.static, index):
+                    found.append(diagnostic(path, positions, hit.kind, hit.line or skill.line,
+                                            hit.message, skill.name, hit.fix, param=hit.param,
+                                            term=hit.term, term_is_class=hit.term_is_class))
+        elif skill.status == "skipped":
+            reason = (skill.reason or "").splitlines()[0] if skill.reason else ""
+            found.append(diagnostic(path, positions, "kept-legacy", skill.line,
+                                    f"legacy description kept, not checked: {reason}",
+                                    skill.name))
+    return found
+
+
+def read_ezskiros(files: list[tuple[Path, bytes]], index: OntologyIndex | None
+                  ) -> list[LoadOutcome]:
+    """What loading each EzSkiROS file would give, read from its syntax against ``index``
+    (``lint/ezskiros_static``): ``check`` runs no code of the repository unless told
+    (``--trace``)."""
+    from ezskiros_runtime.ontology import use_ontology
+
+    from ..lint.ezskiros_static import read_ezskiros_statically
+    from ..verify.protocol import LoadOutcome
+    from .file_facts import parse, respelt
+
+    if index is not None and files:
+        use_ontology(index)  # the ontology the runtime's checks look names up in
+    outcomes = []
+    for path, data in files:
+        tree = parse(data) or respelt(data)
+        outcomes.append(LoadOutcome("ok") if tree is None  # the read stage said why
+                        else read_ezskiros_statically(tree, str(path)).outcome())
+    return outcomes
+
+
+def _loaded(run: CheckRun) -> list[LoadOutcome]:
+    """The EzSkiROS files loaded in the sandbox (``--trace``), each load kept by the file
+    and every file it opened (``load_cache``)."""
+    from ..cache.load_cache import LoadCache, cached_loads
+    from ..verify.pool import BATCH, job_for, run_batched
+
+    if run.loadable and run.settings.progress is not None:
+        run.settings.progress(f"loading {len(run.loadable)} EzSkiROS files")
+    cache_dir, pool = run.settings.cache_dir, run.pool
+    cache = None if cache_dir is None else LoadCache.for_run(
+        cache_dir, [(str(c.path), data) for c, data in run.read],
+        run.index.fingerprint if run.index is not None else "", pool.python)
+    return cached_loads([job_for(c.path, None, c.root) for c in run.loadable],
+                        [run.data_of(c) for c in run.loadable],
+                        lambda jobs: run_batched(jobs, pool, BATCH,
+                                                 alone=lambda found: not found.loaded),
+                        cache)
+
+
+def _load_diagnostics(run: CheckRun) -> list[Diagnostic]:
+    """The findings of the EzSkiROS files as read (or loaded)."""
+    found: list[Diagnostic] = []
+    # a legacy class the read stage kept (EZ902) in a file that is loaded because another
+    # class in it was migrated: its findings are the read stage's, as before the migration
+    kept = {(str(c.path), s.name) for c, r in run.results for s in r.skills
+            if s.status == "skipped"}
+    for candidate, loaded in zip(run.loadable, run.loads, strict=True):
+        path = str(candidate.path)
+        where = Positions(run.outcome.sources[path])
+        if not loaded.loaded:
+            found.append(diagnostic(path, where, "unloadable", loaded.line or 0,
+                                    f"{loaded.status}: {loaded.message}",
+                                    severity=UNRESOLVED_LOAD.get(loaded.status)))
+            continue
+        run.outcome.skills += len(loaded.models)
+        found += [diagnostic(path, where, "not-read-statically", line,
+                             f"description not read without running the module: {shape}; "
+                             "it is not checked (check --trace loads it in the sandbox)", name)
+                  for name, line, shape in loaded.unread if shape]
+        found += [diagnostic(path, where, "description", error.line or 0, error.message,
+                             error.name)
+                  for error in loaded.errors if (path, error.name) not in kept]
+        found += [diagnostic(path, where, f.kind, f.line or 0, f.message, f.skill,
+                             f"Did you mean {f.suggestions[0]}?" if f.suggestions else None,
+                             f.severity if f.severity == "info" else None, f.param,
+                             f.actual, f.actual is not None and f.relation is None)
+                  for f in loaded.findings]
+    return found
+
+
+def run(run: CheckRun) -> None:
+    """Each file's own findings: its legacy descriptions', then its EzSkiROS ones'."""
+    for candidate, result in run.results:
+        if result.error or result.skills:
+            path = str(candidate.path)
+            run.diagnostics.extend(legacy_diagnostics(
+                path, result, Positions(run.outcome.sources[path]), run.index))
+    if run.settings.trace:
+        run.loads = _loaded(run)
+    else:
+        run.loads = read_ezskiros([(c.path, run.data_of(c)) for c in run.loadable], run.index)
+    run.outcome.read = sorted({path for loaded in run.loads for path in loaded.read})
+    run.diagnostics.extend(_load_diagnostics(run))
