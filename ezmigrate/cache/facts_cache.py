@@ -41,8 +41,11 @@ class FactsCache:
     def __init__(self, store: Store) -> None:
         self._store = store
         self._old: dict[str, Any] = self._load()
+        """Entries as the pack holds them (JSON data), decoded when a run asks for one."""
         self._used: dict[str, Any] = {}
-        self._added = False
+        self._kept_raw: dict[str, Any] = {}
+        """Entries of the pack this run used unchanged: written back as they were read."""
+        self._added: dict[str, Any] = {}
 
     @classmethod
     def open(cls, folder: Path) -> FactsCache | None:
@@ -60,24 +63,33 @@ class FactsCache:
         return digest.hexdigest()
 
     def get(self, key: str) -> Any | None:
+        """The entry of ``key``; None when there is none, or it does not decode."""
         if key in self._used:
             return self._used[key]
-        found = self._old.get(key)
-        if found is not None:
-            self._used[key] = found
+        raw = self._old.get(key)
+        if raw is None:
+            return None
+        try:
+            found = decode(raw)
+        except (ValueError, TypeError, RecursionError, AttributeError):
+            return None  # CodecError is a ValueError: a corrupt entry is a miss
+        self._used[key] = found
+        self._kept_raw[key] = raw
         return found
 
     def put(self, key: str, value: Any) -> None:
         self._used[key] = value
-        self._added = True
+        self._kept_raw.pop(key, None)
+        self._added[key] = value
 
     def save(self) -> None:
-        """Write the entries this run used (unchanged ones included); an entry that holds
-        something not of ours (``CodecError``) is not kept."""
+        """Write the entries this run used (unchanged ones as they were read: only what
+        this run added is encoded); an entry that holds something not of ours
+        (``CodecError``) is not kept."""
         if not self._added and self._used.keys() == self._old.keys():
             return  # nothing new: the file on disk says it already
-        kept = {}
-        for key, value in self._used.items():
+        kept = {key: raw for key, raw in self._kept_raw.items() if key in self._used}
+        for key, value in self._added.items():
             try:
                 kept[key] = encode(value)
             except (CodecError, RecursionError):
@@ -90,10 +102,9 @@ class FactsCache:
             return {}
         try:
             data = json.loads(payload)
-            return {str(k): decode(v) for k, v in data.items()} \
-                if isinstance(data, dict) else {}
-        except (ValueError, TypeError, RecursionError, AttributeError):
-            return {}  # CodecError is a ValueError
+        except (ValueError, RecursionError):
+            return {}
+        return {str(k): v for k, v in data.items()} if isinstance(data, dict) else {}
 
 
 def seed_scenes(cache: FactsCache, paths: Iterable[Path]) -> set[Path]:

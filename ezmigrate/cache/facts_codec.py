@@ -95,6 +95,25 @@ def _list(data: Any) -> list[Any]:
 
 def _instance(name: str, fields: dict[str, Any]) -> Any:
     """An object of our own class ``name`` with ``fields`` set, its constructor not run."""
+    kind, allowed = _class(name)
+    value: Any = object.__new__(kind)
+    for key, item in fields.items():
+        if not isinstance(key, str) or (allowed is not None and key not in allowed):
+            raise CodecError(f"{name} has no field {key!r}")
+        object.__setattr__(value, key, decode(item))
+    return value
+
+
+_CLASSES: dict[str, tuple[type, frozenset[str] | None]] = {}
+"""Each class an entry named, found once per process (a pack names a few dozen classes in
+ten thousand objects)."""
+
+
+def _class(name: str) -> tuple[type, frozenset[str] | None]:
+    """Our own class ``name`` (``module:qualname``) and its fields (None: not a dataclass)."""
+    found = _CLASSES.get(name)
+    if found is not None:
+        return found
     module_name, _, qualname = name.partition(":")
     if not name.startswith(OWN) or not qualname:
         raise CodecError(f"not a class of ours: {name}")
@@ -109,11 +128,7 @@ def _instance(name: str, fields: dict[str, Any]) -> Any:
         kind = getattr(kind, part, None)
     if not isinstance(kind, type) or kind.__module__ != module_name:
         raise CodecError(f"not a class of ours: {name}")
-    value: Any = object.__new__(kind)
-    allowed = {f.name for f in dataclasses.fields(kind)} if dataclasses.is_dataclass(kind) \
-        else None
-    for key, item in fields.items():
-        if not isinstance(key, str) or (allowed is not None and key not in allowed):
-            raise CodecError(f"{name} has no field {key!r}")
-        object.__setattr__(value, key, decode(item))
-    return value
+    allowed = frozenset(f.name for f in dataclasses.fields(kind)) \
+        if dataclasses.is_dataclass(kind) else None
+    _CLASSES[name] = (kind, allowed)
+    return kind, allowed

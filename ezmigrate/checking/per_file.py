@@ -10,6 +10,7 @@ suppression come later (``lint/select.py``), so every stage reports everything.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -20,6 +21,7 @@ from .run import CheckRun
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
+    from ..cache.facts_cache import FactsCache
     from ..verify.protocol import LoadOutcome
 
 UNRESOLVED_LOAD = {"timeout": "info", "memory": "info", "crashed": "info"}
@@ -29,14 +31,21 @@ KEPT_FROM_CODEMOD = frozenset({"description-in-options", "options-ignored"})
 
 
 def legacy_diagnostics(path: str, result: FileResult, positions: Positions,
-                       index: OntologyIndex | None) -> list[Diagnostic]:
-    """The findings of one file's legacy descriptions, as the read stage found them."""
+                       index: OntologyIndex | None, libraries: Iterable[str] = ()
+                       ) -> list[Diagnostic]:
+    """The findings of one file's legacy descriptions, as the read stage found them
+    (``libraries``: the launch file's ``libraries_list``)."""
     from ..lint.legacy import legacy_hits  # a run its cache answers needs none of this
 
     found: list[Diagnostic] = []
     if result.error:
+        message, severity = result.error.splitlines()[0], None
+        if result.error_kind == "unreadable":  # issue 42: EZ905 by where the file lives
+            from ..lint.skill_library import unreadable_severity
+
+            severity, message = unreadable_severity(path, message, libraries)
         found.append(diagnostic(path, positions, result.error_kind, result.error_line or 0,
-                                result.error.splitlines()[0]))
+                                message, severity=severity))
     for skill in result.skills:
         if skill.status == "converted":
             found.append(diagnostic(path, positions, "not-migrated", skill.line,
@@ -59,11 +68,12 @@ def legacy_diagnostics(path: str, result: FileResult, positions: Positions,
     return found
 
 
-def read_ezskiros(files: list[tuple[Path, bytes]], index: OntologyIndex | None
-                  ) -> list[LoadOutcome]:
+def read_ezskiros(files: list[tuple[Path, bytes]], index: OntologyIndex | None,
+                  cache: FactsCache | None = None) -> list[LoadOutcome]:
     """What loading each EzSkiROS file would give, read from its syntax against ``index``
     (``lint/ezskiros_static``): ``check`` runs no code of the repository unless told
-    (``--trace``)."""
+    (``--trace``). ``cache`` keeps each reading by the ontology's fingerprint and the
+    file's path and bytes (a reading depends on nothing else: no import is followed)."""
     from ezskiros_runtime.ontology import use_ontology
 
     from ..lint.ezskiros_static import read_ezskiros_statically
@@ -72,11 +82,19 @@ def read_ezskiros(files: list[tuple[Path, bytes]], index: OntologyIndex | None
 
     if index is not None and files:
         use_ontology(index)  # the ontology the runtime's checks look names up in
+    fingerprint = index.fingerprint if index is not None else ""
     outcomes = []
     for path, data in files:
+        key = None if cache is None else cache.key("ezskiros", fingerprint, str(path), data)
+        found = None if cache is None or key is None else cache.get(key)
+        if isinstance(found, LoadOutcome):
+            outcomes.append(found)
+            continue
         tree = parse(data) or respelt(data)
         outcomes.append(LoadOutcome("ok") if tree is None  # the read stage said why
                         else read_ezskiros_statically(tree, str(path)).outcome())
+        if cache is not None and key is not None:
+            cache.put(key, outcomes[-1])
     return outcomes
 
 
@@ -132,14 +150,17 @@ def _load_diagnostics(run: CheckRun) -> list[Diagnostic]:
 
 def run(run: CheckRun) -> None:
     """Each file's own findings: its legacy descriptions', then its EzSkiROS ones'."""
+    launch = run.settings.launch  # issue 42: its libraries_list decides EZ905's severity
+    libraries = (launch.listed("libraries_list") if launch is not None else None) or ()
     for candidate, result in run.results:
         if result.error or result.skills:
             path = str(candidate.path)
             run.diagnostics.extend(legacy_diagnostics(
-                path, result, Positions(run.outcome.sources[path]), run.index))
+                path, result, Positions(run.outcome.sources[path]), run.index, libraries))
     if run.settings.trace:
         run.loads = _loaded(run)
     else:
-        run.loads = read_ezskiros([(c.path, run.data_of(c)) for c in run.loadable], run.index)
+        run.loads = read_ezskiros([(c.path, run.data_of(c)) for c in run.loadable], run.index,
+                                  run.facts_cache)
     run.outcome.read = sorted({path for loaded in run.loads for path in loaded.read})
     run.diagnostics.extend(_load_diagnostics(run))

@@ -50,6 +50,7 @@ def needs_trees(codes: Iterable[str]) -> bool:
     checks, EZ105 and EZ209 (judged by what the trees pass to their children:
     ``uninferable``) and the checks inside implementations (``implementation_code``)."""
     return any(code.startswith("EZ3") or code in (UNINFERABLE, UNKNOWN, *IMPLEMENTATION)
+               or code == "EZ110"  # issue 42: no-set-description, read with the trees
                for code in codes)
 
 

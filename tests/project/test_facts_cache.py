@@ -11,6 +11,7 @@ not ours, is a miss.
 from __future__ import annotations
 
 import json
+import shutil
 import subprocess
 from pathlib import Path
 
@@ -19,6 +20,7 @@ import pytest
 from ezmigrate.cache.cache_folder import Store, project_folder, user_key
 from ezmigrate.cache.facts_cache import PACK, FactsCache
 from ezmigrate.cache.facts_codec import CodecError, decode, encode
+from ezmigrate.cache.outcome_cache import OUTCOMES
 from ezmigrate.checking import reading_pool
 from ezmigrate.checking.pipeline import run_check
 from ezmigrate.checking.run import CheckSettings
@@ -193,6 +195,28 @@ def test_a_pack_signed_with_another_key_is_a_miss(repo: Path, own_key: Path,
     stranger.write(PACK, pack.read_bytes().split(b"\n", 1)[1])
     assert FactsCache.open(_folder(repo))._old == {}  # type: ignore[union-attr]
     assert _run(repo, cached=True) == _run(repo, cached=False)  # the run reads everything
+
+
+def test_a_corrupt_entry_of_a_signed_pack_is_a_miss_for_its_file_alone(
+        repo: Path, own_key: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Entries are decoded when a run asks for them: one that does not decode (here, it
+    names a class outside our packages, in a pack signed with our own key) is read again,
+    and the others are still taken from the pack."""
+    first = _run(repo, cached=True)
+    mine = FactsCache.open(_folder(repo))
+    assert mine is not None
+    entries = dict(mine._old)
+    [spoiled] = [k for k, v in entries.items()
+                 if str(v.get("c")).endswith(":FileFacts") and "plain.py" in json.dumps(v)]
+    entries[spoiled] = {"c": "os:system", "f": {}}
+    key = user_key(own_key)
+    assert key is not None
+    Store(_folder(repo), key).write(
+        PACK, json.dumps(entries).encode("utf-8"))
+    shutil.rmtree(_folder(repo) / OUTCOMES)  # the whole run is not answered at once
+    reads = Reads(monkeypatch)
+    assert _run(repo, cached=True) == first
+    assert reads.parsed == ["plain.py"]  # the spoiled entry's file alone
 
 
 def test_the_codec_makes_nothing_but_our_own_readings(tmp_path: Path) -> None:
