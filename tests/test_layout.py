@@ -29,11 +29,13 @@ MAY_IMPORT: dict[str, frozenset[str]] = {
     "cache": frozenset({"files", "report", "verify", "lint", "project"}),
     "checking": frozenset({"files", "report", "codemod", "verify", "lint", "compound",
                            "project", "cache"}),
+    "server": frozenset({"files", "report", "codemod", "verify", "lint", "compound",
+                         "project", "cache", "checking"}),
     "cli": frozenset({"files", "report", "codemod", "verify", "lint", "compound", "project",
-                      "cache", "checking"}),
+                      "cache", "checking", "server"}),
 }
 """Which rooms of ``ezmigrate`` a room may import (besides itself, the runtime and the
-package's ``__version__``): commands → checking → cache → project → compound → lint →
+package's ``__version__``): commands → server → checking → cache → project → compound → lint →
 codemod and verify → report and files."""
 
 TOP_LEVEL = {"ezmigrate", "ezmigrate.__main__"}

@@ -35,7 +35,8 @@ def _kept(run: CheckRun) -> None:
     over named files also reads the repository around them, which the key would have to
     read too); a hit answers the run."""
     settings, world, launch = run.settings, run.world, run.settings.launch
-    if settings.cache_dir is None or not run.paths or not all(p.is_dir() for p in run.paths):
+    if settings.cache_dir is None or settings.overlay or not run.paths \
+            or not all(p.is_dir() for p in run.paths):
         return
     files = read_all([*(c.path for c in run.candidates), *world.scenes,
                       *([launch.path] if launch is not None else [])])

@@ -76,6 +76,13 @@ def plan_fixes(found: Sequence[Diagnostic]) -> list[FileFix]:
     return fixes
 
 
+def fixed_text(text: str, found: Sequence[Diagnostic]) -> str | None:
+    """``text`` (an editor's buffer) with the fixable findings of ``found`` fixed; None
+    when none is."""
+    fix = _fix_file("", text.encode("utf-8"), [d for d in found if d.code in FIXABLE])
+    return None if fix is None else fix.after.decode("utf-8")
+
+
 def _fix_file(path: str, data: bytes, diagnostics: list[Diagnostic]) -> FileFix | None:
     try:
         encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)

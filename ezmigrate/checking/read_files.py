@@ -41,9 +41,11 @@ class FileReadings:
 
 
 def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache | None,
-               reader: ReadingPool | None) -> FileReadings:
+               reader: ReadingPool | None, overlay: Mapping[Path, bytes] | None = None
+               ) -> FileReadings:
     """Read and parse each candidate once; ``compounds``: parse files that may hold a
-    compound skill too. Files without a description are read, never parsed."""
+    compound skill too; ``overlay``: text standing for some files' bytes (by resolved
+    path). Files without a description are read, never parsed."""
     from ..compound.repository import SCAN_WHEN
     from ..files.prefilter import by_text
     from .file_facts import FileFacts, file_facts
@@ -53,8 +55,9 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
     read: list[tuple[Candidate, bytes | None]] = []
     missing: list[tuple[Candidate, bytes, bool | None, str | None]] = []
     for candidate in candidates:
+        data: bytes | None = overlay.get(candidate.path.resolve()) if overlay else None
         try:
-            data: bytes | None = candidate.path.read_bytes()
+            data = candidate.path.read_bytes() if data is None else data
         except OSError:
             data = None  # the codemod reports why it cannot be read
         read.append((candidate, data))
@@ -245,7 +248,8 @@ def run(run: CheckRun) -> None:
         if run.settings.progress is not None else Progress(len(run.candidates), active=False)
     if run.reader is not None:
         run.reader.parse_scenes([s for s in run.world.scenes if s not in run.scenes_cached])
-    readings = read_facts(run.candidates, run.trees is not None, run.facts_cache, run.reader)
+    readings = read_facts(run.candidates, run.trees is not None, run.facts_cache, run.reader,
+                          run.settings.overlay)
     if run.trees is not None:
         for candidate, data, found in readings.files:
             if found is not None and data is not None:

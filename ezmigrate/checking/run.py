@@ -8,7 +8,7 @@ is what the caller decides; ``CheckOutcome`` is what the caller gets back.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -55,6 +55,9 @@ class CheckSettings:
     """Where a progress message goes (a terminal's stderr), or None."""
     discovered: Discovery | None = None
     """The paths' files, already being discovered (``pipeline.checked_files``)."""
+    overlay: Mapping[Path, bytes] = field(default_factory=dict)
+    """Text that stands for a file's bytes on disk, by resolved path: an editor's unsaved
+    buffer, checked as typed and never written. A run with one is never kept."""
 
 
 @dataclass

@@ -17,8 +17,9 @@ from .run import CheckRun
 def run(run: CheckRun) -> None:
     """The skill index, when the run reads trees and a file defines a compound skill or
     implements a description."""
-    if run.trees is None or not any(b"expand" in data or b"setDescription" in data
-                                    for _, data in run.read):
+    if run.trees is None or not (run.trees.undescribed  # issue 42: EZ110 needs the index
+                                 or any(b"expand" in data or b"setDescription" in data
+                                        for _, data in run.read)):
         return
     from ezskiros_runtime.compound.library import SkillIndex
 

@@ -6,7 +6,7 @@ decision is taken here. `options` and `config` resolve the settings a command ru
 (the command line over ``[tool.ezmigrate]``); `output_formats` renders
 ``check``'s findings for machines (JSON, SARIF, GitHub, JUnit); `terminal` decides
 colour (a terminal, ``NO_COLOR``, ``--color``) and colours diffs and findings; `rules_doc` with
-`rules_precision` writes docs/rules.md from the catalogue. May import `checking`,
-`cache`, `project`, `compound`, `lint`, `codemod`, `verify`, `report` and `files`; only
+`rules_precision` writes docs/rules.md from the catalogue. May import `server`,
+`checking`, `cache`, `project`, `compound`, `lint`, `codemod`, `verify`, `report` and `files`; only
 ``ezmigrate.__main__`` imports this room.
 """

@@ -541,7 +541,6 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     from ..checking.discover import checked_files
     from ..checking.pipeline import needs_trees, run_check
     from ..checking.run import CheckSettings
-    from ..lint.select import Selection, SelectorError, parse_selectors
     from .output_formats import STATISTICS
 
     if statistics and output_format not in STATISTICS:
@@ -554,14 +553,7 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     options = _options(of.anchor, CommandLine(
         exclude=exclude, jobs=jobs, timeout=timeout, python=python, select=select or None,
         ignore=ignore, extend_select=extend_select), of.roots)
-    try:
-        selection = Selection(
-            select=None if options.select is None else parse_selectors(options.select,
-                                                                       options.select_from),
-            ignore=parse_selectors(options.ignore, "--ignore"),
-            extend_select=parse_selectors(options.extend_select, "--extend-select"))
-    except SelectorError as error:
-        raise click.UsageError(str(error)) from None
+    selection = _selection(options)
     with shared_rules():  # the four searches of the repository share their answers
         discovered = checked_files(list(of.paths), options.exclude, include_vendored)
         index, ontology_files, _ = _load_index(ontology, of.anchor, of.roots, options)
@@ -587,6 +579,21 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
     if done.summary is not None:
         click.echo(f"ezmigrate: {done.summary}", err=True)
     sys.exit(done.exit_code)
+
+
+def _selection(options: Options) -> Any:
+    """The codes a run reports (``lint/select.py``), from the resolved settings; a
+    selector that names no code is a usage error."""
+    from ..lint.select import Selection, SelectorError, parse_selectors
+
+    try:
+        return Selection(
+            select=None if options.select is None else parse_selectors(options.select,
+                                                                       options.select_from),
+            ignore=parse_selectors(options.ignore, "--ignore"),
+            extend_select=parse_selectors(options.extend_select, "--extend-select"))
+    except SelectorError as error:
+        raise click.UsageError(str(error)) from None
 
 
 def _echo_findings(found: list[Any], output_format: str, statistics: bool) -> None:
@@ -640,6 +647,33 @@ def _world_run(paths: tuple[Path, ...], options: Options, scene: Path | None) ->
             raise click.BadParameter(str(error), param_hint="'--scene'") from None
     return WorldRun(single_valued=options.single_valued,
                     scenes=tuple(scene_files(list(paths), options.exclude)), start_scene=scene)
+
+
+@main.command()
+@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
+              help="Ontology file or folder (repeatable); default: as check finds it.")
+@click.option("--stdio", is_flag=True, help="Talk over stdin and stdout (the default).")
+def server(ontology: tuple[Path, ...], stdio: bool) -> None:
+    """Serve an editor over the Language Server Protocol: check's findings as you type,
+    hover, completion and go-to-definition on ontology terms, and quick fixes.
+
+    No code of the workspace runs; an unsaved buffer is checked as typed, never written.
+    """
+    from ..checking.pipeline import needs_trees
+    from ..checking.run import CheckSettings
+    from ..server.protocol import serve
+    from ..server.workspace import Workspace
+
+    def open_workspace(root: Path) -> Workspace:
+        options = _options(root, CommandLine(), [root])
+        index, files, _ = _load_index(ontology, root, [root], options)
+        selection = _selection(options)
+        return Workspace(root, index, replace(options.pool(files), workers=1), CheckSettings(
+            exclude=options.exclude, skill_libraries=options.skill_libraries,
+            compounds=needs_trees(selection.codes()),
+            world=_world_run((root,), options, None)), selection)
+
+    serve(open_workspace)
 
 
 @main.command()

@@ -1,0 +1,46 @@
+"""A workspace as ``check`` understands a repository, and its findings for one buffer.
+
+The settings, the ontology (the workspace's ``owl/`` folders or what is configured), the
+selection and suppressions are resolved once, when the editor opens the workspace, by
+the same rules as ``check`` (the command line builds the ``Workspace``). A buffer is
+checked through ``check``'s own pipeline with its text standing for the file's bytes
+(``CheckSettings.overlay``): never written, no code of the repository run.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from ..checking.pipeline import run_check
+from ..checking.run import CheckSettings
+from ..lint.diagnostic import Diagnostic
+from ..lint.select import Selection, apply
+
+if TYPE_CHECKING:
+    from ezskiros_runtime.ontology.index import OntologyIndex
+
+    from ..verify.pool_config import PoolConfig
+
+
+@dataclass
+class Workspace:
+    """What every request of one editor session shares."""
+
+    root: Path
+    index: OntologyIndex | None
+    pool: PoolConfig
+    settings: CheckSettings
+    """``check``'s settings for the workspace (no cache: a buffer is not a file)."""
+    selection: Selection
+
+    def diagnose(self, path: Path, text: str) -> list[Diagnostic]:
+        """``check``'s findings for ``path`` with ``text`` as its content, selected and
+        suppressed as ``check`` would (``# ezskiros: ignore[...]``)."""
+        data = text.encode("utf-8")
+        settings = replace(self.settings, overlay={path.resolve(): data})
+        outcome = run_check([path], self.index, self.pool, settings)
+        sources = {**outcome.sources, str(path): text}
+        return [d for d in apply(outcome.diagnostics, sources, self.selection)
+                if Path(d.path).resolve() == path.resolve()]
