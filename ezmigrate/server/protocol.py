@@ -67,7 +67,9 @@ def _lsp_diagnostic(d: Diagnostic) -> lsp.Diagnostic:
 
 def publish(server: EzServer, uri: str) -> None:
     """Check the document at ``uri`` as it stands in the editor and publish the findings."""
-    server.pending.pop(uri, None)
+    waiting = server.pending.pop(uri, None)
+    if waiting is not None:
+        waiting.cancel()  # a save or an open while a change waits: check once
     if server.ws is None:
         return
     document = server.workspace.get_text_document(uri)

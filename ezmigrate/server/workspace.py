@@ -9,10 +9,11 @@ checked through ``check``'s own pipeline with its text standing for the file's b
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..checking.discover import checked_files
 from ..checking.pipeline import run_check
 from ..checking.run import CheckSettings
 from ..lint.diagnostic import Diagnostic
@@ -21,6 +22,7 @@ from ..lint.select import Selection, apply
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
 
+    from ..files.discover import Discovery
     from ..verify.pool_config import PoolConfig
 
 
@@ -34,12 +36,19 @@ class Workspace:
     settings: CheckSettings
     """``check``'s settings for the workspace (no cache: a buffer is not a file)."""
     selection: Selection
+    discovered: dict[Path, Discovery] = field(default_factory=dict)
+    """Each checked path's discovery (is it excluded, ignored by git, vendored?), made once
+    per session: asking git costs a process per keystroke otherwise."""
 
     def diagnose(self, path: Path, text: str) -> list[Diagnostic]:
         """``check``'s findings for ``path`` with ``text`` as its content, selected and
         suppressed as ``check`` would (``# ezskiros: ignore[...]``)."""
         data = text.encode("utf-8")
-        settings = replace(self.settings, overlay={path.resolve(): data})
+        if path not in self.discovered:
+            self.discovered[path] = checked_files([path], self.settings.exclude,
+                                                  self.settings.include_vendored)
+        settings = replace(self.settings, overlay={path.resolve(): data},
+                           discovered=self.discovered[path])
         outcome = run_check([path], self.index, self.pool, settings)
         sources = {**outcome.sources, str(path): text}
         return [d for d in apply(outcome.diagnostics, sources, self.selection)
