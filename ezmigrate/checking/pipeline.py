@@ -28,8 +28,14 @@ STAGES = (discover, read_files, per_file, skill_index, compound, world, judgemen
 
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
               settings: CheckSettings | None = None) -> CheckOutcome:
-    """Every finding of ``paths`` against ``index`` (before selection and suppression),
-    with the heap the run started with frozen (``frozen_heap``)."""
+    """Every finding of ``paths`` against ``index`` (before selection and suppression)."""
+    return check_run(paths, index, pool, settings).outcome
+
+
+def check_run(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
+              settings: CheckSettings | None = None) -> CheckRun:
+    """The run through every stage, with what each found (the editor's server reads the
+    skill index of it), with the heap the run started with frozen (``frozen_heap``)."""
     from ..project.frozen_heap import frozen_heap
 
     run = CheckRun(list(paths), index, pool, settings or CheckSettings())
@@ -42,7 +48,7 @@ def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     finally:
         if run.reader is not None:
             run.reader.close()
-    return run.outcome
+    return run
 
 
 def needs_trees(codes: Iterable[str]) -> bool:

@@ -22,7 +22,7 @@ from pygls.uris import to_fs_path
 
 from .. import __version__
 from ..lint.diagnostic import Diagnostic
-from . import terms
+from . import skills, terms
 from .workspace import Workspace
 
 DEBOUNCE = 0.25
@@ -123,6 +123,13 @@ def build(open_workspace: Callable[[Path], Workspace]) -> EzServer:
 
     @server.feature(lsp.TEXT_DOCUMENT_HOVER)
     def hover(ls: EzServer, params: lsp.HoverParams) -> lsp.Hover | None:
+        child = _child(ls, params.text_document.uri, params.position)
+        if child is not None and ls.ws is not None and ls.ws.skills is not None:
+            said = skills.hover_text(ls.ws.skills, child)
+            if said is not None:
+                return lsp.Hover(lsp.MarkupContent(lsp.MarkupKind.Markdown, said),
+                                 lsp.Range(lsp.Position(params.position.line, child.start),
+                                           lsp.Position(params.position.line, child.end)))
         term = _term(ls, params.text_document.uri, params.position)
         if term is None or ls.ws is None or ls.ws.index is None:
             return None
@@ -133,6 +140,12 @@ def build(open_workspace: Callable[[Path], Workspace]) -> EzServer:
 
     @server.feature(lsp.TEXT_DOCUMENT_DEFINITION)
     def definition(ls: EzServer, params: lsp.DefinitionParams) -> lsp.Location | None:
+        child = _child(ls, params.text_document.uri, params.position)
+        if child is not None and ls.ws is not None and ls.ws.skills is not None:
+            declared = skills.definition(ls.ws.skills, child)
+            if declared is not None:
+                at = lsp.Position(max(declared[1] - 1, 0), 0)
+                return lsp.Location(Path(declared[0]).resolve().as_uri(), lsp.Range(at, at))
         term = _term(ls, params.text_document.uri, params.position)
         where = None if term is None else terms.definition(ls.term_notes(), term)
         if where is None:
@@ -141,11 +154,19 @@ def build(open_workspace: Callable[[Path], Workspace]) -> EzServer:
         return lsp.Location(Path(where.path).as_uri(), lsp.Range(at, at))
 
     @server.feature(lsp.TEXT_DOCUMENT_COMPLETION,
-                    lsp.CompletionOptions(trigger_characters=[".", ":", '"']))
+                    lsp.CompletionOptions(trigger_characters=[".", ":", '"', "'"]))
     def completion(ls: EzServer, params: lsp.CompletionParams) -> lsp.CompletionList:
         if ls.ws is None or ls.ws.index is None:
             return lsp.CompletionList(is_incomplete=False, items=[])
         document = ls.workspace.get_text_document(params.text_document.uri)
+        child = skills.child_at(document.source, params.position.line,
+                                params.position.character)
+        if child is not None and ls.ws.skills is not None:
+            return lsp.CompletionList(is_incomplete=False, items=[
+                lsp.CompletionItem(label=label, detail=detail,
+                                   kind=lsp.CompletionItemKind.Module if child.kind == "type"
+                                   else lsp.CompletionItemKind.Value)
+                for label, detail in skills.completions(ls.ws.skills, child)])
         found = terms.completions(ls.ws.index, document.source, params.position.line,
                                   params.position.character)
         return lsp.CompletionList(is_incomplete=False, items=[
@@ -158,6 +179,11 @@ def build(open_workspace: Callable[[Path], Workspace]) -> EzServer:
         return _actions(ls, params)
 
     return server
+
+
+def _child(ls: EzServer, uri: str, position: lsp.Position) -> skills.ChildAt | None:
+    document = ls.workspace.get_text_document(uri)
+    return skills.child_at(document.source, position.line, position.character)
 
 
 def _term(ls: EzServer, uri: str, position: lsp.Position) -> terms.Term | None:
@@ -186,6 +212,7 @@ def _actions(ls: EzServer, params: lsp.CodeActionParams) -> list[lsp.CodeAction]
             diagnostics=[_lsp_diagnostic(d)],
             edit=lsp.WorkspaceEdit(changes={uri: [lsp.TextEdit(
                 lsp.Range(end, end), f"  # ezskiros: ignore[{d.code}]")]})))
+    actions += _migration(ls, uri, document.source, params.range.start.line)
     after = fixed_text(document.source, here)
     if after is not None and after != document.source:
         whole = lsp.Range(lsp.Position(0, 0), lsp.Position(len(lines), 0))
@@ -194,6 +221,26 @@ def _actions(ls: EzServer, params: lsp.CodeActionParams) -> list[lsp.CodeAction]
             is_preferred=True, diagnostics=[_lsp_diagnostic(d) for d in here],
             edit=lsp.WorkspaceEdit(changes={uri: [lsp.TextEdit(whole, after)]})))
     return actions
+
+
+def _migration(ls: EzServer, uri: str, text: str, line: int) -> list[lsp.CodeAction]:
+    """"Migrate NAME to EzSkiROS" for the description class under the cursor: an edit of
+    the whole module, or disabled with the reason ``rewrite`` gives."""
+    from .migration import class_at, migrate_class
+
+    name = class_at(text, line)
+    if name is None or ls.ws is None:
+        return []
+    path = to_fs_path(uri) or uri
+    done = migrate_class(text, name, str(path), ls.ws.index)
+    title = f"Migrate {name} to EzSkiROS"
+    if done.text is None:
+        return [lsp.CodeAction(title=title, kind=lsp.CodeActionKind.RefactorRewrite,
+                               disabled=lsp.CodeActionDisabled(done.refused or "refused"))]
+    whole = lsp.Range(lsp.Position(0, 0), lsp.Position(len(text.splitlines()) + 1, 0))
+    return [lsp.CodeAction(title=title, kind=lsp.CodeActionKind.RefactorRewrite,
+                           edit=lsp.WorkspaceEdit(changes={uri: [lsp.TextEdit(whole,
+                                                                              done.text)]}))]
 
 
 def serve(open_workspace: Callable[[Path], Workspace], **_: Any) -> None:

@@ -14,12 +14,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..checking.discover import checked_files
-from ..checking.pipeline import run_check
+from ..checking.pipeline import check_run
 from ..checking.run import CheckSettings
 from ..lint.diagnostic import Diagnostic
 from ..lint.select import Selection, apply
 
 if TYPE_CHECKING:
+    from ezskiros_runtime.compound.library import SkillIndex
     from ezskiros_runtime.ontology.index import OntologyIndex
 
     from ..files.discover import Discovery
@@ -36,6 +37,9 @@ class Workspace:
     settings: CheckSettings
     """``check``'s settings for the workspace (no cache: a buffer is not a file)."""
     selection: Selection
+    skills: SkillIndex | None = None
+    """The skill index of the last check (every description a tree may name): hover,
+    completion and definition of child skills read it."""
     discovered: dict[Path, Discovery] = field(default_factory=dict)
     """Each checked path's discovery (is it excluded, ignored by git, vendored?), made once
     per session: asking git costs a process per keystroke otherwise."""
@@ -49,7 +53,10 @@ class Workspace:
                                                   self.settings.include_vendored)
         settings = replace(self.settings, overlay={path.resolve(): data},
                            discovered=self.discovered[path])
-        outcome = run_check([path], self.index, self.pool, settings)
+        run = check_run([path], self.index, self.pool, settings)
+        outcome = run.outcome
+        if run.skill_index is not None:
+            self.skills = run.skill_index
         sources = {**outcome.sources, str(path): text}
         return [d for d in apply(outcome.diagnostics, sources, self.selection)
                 if Path(d.path).resolve() == path.resolve()]

@@ -39,10 +39,40 @@ class Place(SkillDescription):
 '''
 
 
+COMPOUND = '''\
+from skiros2_skill.core.skill import SkillDescription, SkillBase, Sequential
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+
+
+class Fetch(SkillDescription):
+    def createDescription(self):
+        self.addParam("Object", Element("skiros:Product"), ParamTypes.Required)
+
+
+class fetch(SkillBase):
+    def createDescription(self):
+        self.setDescription(Fetch(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill.setProcessor(Sequential())
+        skill(
+            self.skill("Pick", "pick", specify={"Speed": 0.2}),
+        )
+
+
+class pick(SkillBase):
+    def createDescription(self):
+        self.setDescription(Pick(), self.__class__.__name__)
+'''
+
+
 def _workspace(root: Path) -> Path:
     (root / "pkg").mkdir(parents=True)
+    (root / "package.xml").write_text("<package><name>ws</name></package>\n")
     (root / "pkg" / "pick.py").write_text(LEGACY)
     (root / "pkg" / "place.py").write_text(MARKER_MODULE)
+    (root / "pkg" / "fetch.py").write_text(COMPOUND)
     return root / "pkg" / "pick.py"
 
 
@@ -218,3 +248,55 @@ def test_a_client_that_hangs_up_abruptly_leaves_no_server_behind(tmp_path: Path)
     finally:
         if server.poll() is None:
             server.kill()
+
+
+@pytest.mark.asyncio
+async def test_a_child_skill_has_hover_completion_and_a_definition(
+        client: LanguageClient, tmp_path: Path) -> None:
+    path = tmp_path / "ws" / "pkg" / "fetch.py"
+    await _open(client, path, COMPOUND)
+    row = next(n for n, text in enumerate(COMPOUND.splitlines()) if '"Pick"' in text)
+    line = COMPOUND.splitlines()[row]
+    at = lsp.Position(row, line.index('"Pick"') + 2)
+    hover = await client.text_document_hover_async(lsp.HoverParams(
+        lsp.TextDocumentIdentifier(path.as_uri()), at))
+    assert hover is not None
+    shown = hover.contents.value  # type: ignore[union-attr]
+    assert "**Pick**" in shown and "`Place`" in shown and "`Speed`" in shown
+    where = await client.text_document_definition_async(lsp.DefinitionParams(
+        lsp.TextDocumentIdentifier(path.as_uri()), at))
+    assert isinstance(where, lsp.Location) and where.uri.endswith("/pkg/pick.py")
+    assert "class Pick" in LEGACY.splitlines()[where.range.start.line]
+    typed = line.index('"Pick"') + 3  # in "Pi|ck"
+    found = await client.text_document_completion_async(lsp.CompletionParams(
+        lsp.TextDocumentIdentifier(path.as_uri()), lsp.Position(row, typed)))
+    assert found is not None
+    labels = [i.label for i in (found.items if isinstance(found, lsp.CompletionList) else found)]
+    assert "Pick" in labels and all(label.startswith("Pi") for label in labels)
+    key = line.index('"Speed"') + 2  # in "Sp|eed"
+    found = await client.text_document_completion_async(lsp.CompletionParams(
+        lsp.TextDocumentIdentifier(path.as_uri()), lsp.Position(row, key)))
+    assert found is not None
+    keys = [i.label for i in (found.items if isinstance(found, lsp.CompletionList) else found)]
+    assert keys == ["Speed"]
+
+
+@pytest.mark.asyncio
+async def test_migrate_this_skill_rewrites_the_class_under_the_cursor_and_passes_check(
+        client: LanguageClient, tmp_path: Path) -> None:
+    path = tmp_path / "ws" / "pkg" / "pick.py"
+    text = LEGACY.replace("skiros:Lcoation", "skiros:Location").replace(
+        'ParamTypes.Optional, "how fast"', 'ParamTypes.Optional, [], "how fast"')
+    await _open(client, path, text)
+    actions = await client.text_document_code_action_async(lsp.CodeActionParams(
+        lsp.TextDocumentIdentifier(path.as_uri()),
+        lsp.Range(lsp.Position(8, 0), lsp.Position(8, 0)), lsp.CodeActionContext([])))
+    assert actions is not None
+    [migrate] = [a for a in actions if isinstance(a, lsp.CodeAction)
+                 and a.title == "Migrate Pick to EzSkiROS"]
+    assert migrate.disabled is None and migrate.edit is not None
+    migrated = _applied(text, list(migrate.edit.changes[path.as_uri()]))  # type: ignore[index]
+    assert "createDescription" not in migrated and "skiros.Location" in migrated
+    after = await _open(client, path, migrated)
+    assert not [d for d in after if d.severity == lsp.DiagnosticSeverity.Error]
+    assert path.read_text() == LEGACY  # the editor applies it; nothing was written
