@@ -33,6 +33,18 @@ if TYPE_CHECKING:
     from .implementation_code import ModuleFacts
 
 
+@dataclass
+class Memo:
+    """What a caller that checks again and again (the editor's server) keeps between runs:
+    the repository around a named file, scanned once until the caller says a file was
+    saved (``clear``). ``check`` runs once and keeps none."""
+
+    repository: dict[tuple[str, ...], RepositoryScan] = field(default_factory=dict)
+
+    def clear(self) -> None:
+        self.repository.clear()
+
+
 @dataclass(frozen=True)
 class CheckSettings:
     """How a run is set up, beyond its paths, ontology and workers."""
@@ -55,6 +67,7 @@ class CheckSettings:
     """Where a progress message goes (a terminal's stderr), or None."""
     discovered: Discovery | None = None
     """The paths' files, already being discovered (``pipeline.checked_files``)."""
+    memo: Memo | None = None
     overlay: Mapping[Path, bytes] = field(default_factory=dict)
     """Text that stands for a file's bytes on disk, by resolved path: an editor's unsaved
     buffer, checked as typed and never written. A run with one is never kept."""

@@ -12,6 +12,7 @@ runs.
 from __future__ import annotations
 
 import asyncio
+import os
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -25,8 +26,9 @@ from ..lint.diagnostic import Diagnostic
 from . import skills, terms
 from .workspace import Workspace
 
-DEBOUNCE = 0.25
-"""Seconds of quiet after a change before the buffer is checked."""
+DEBOUNCE = float(os.environ.get("EZMIGRATE_SERVER_DEBOUNCE", "0.25"))
+"""Seconds of quiet after a change before the buffer is checked (``bench_server.py`` sets
+0 to time the check itself)."""
 SEVERITY = {"error": lsp.DiagnosticSeverity.Error, "warning": lsp.DiagnosticSeverity.Warning,
             "info": lsp.DiagnosticSeverity.Information}
 
@@ -102,7 +104,14 @@ def build(open_workspace: Callable[[Path], Workspace]) -> EzServer:
 
     @server.feature(lsp.TEXT_DOCUMENT_DID_SAVE)
     def did_save(ls: EzServer, params: lsp.DidSaveTextDocumentParams) -> None:
+        """The saved file, then every other open one: a save may change what crosses
+        files (a description a tree names, an implementation's label)."""
+        if ls.ws is not None:
+            ls.ws.saved()
         publish(ls, params.text_document.uri)
+        for uri in list(ls.found):
+            if uri != params.text_document.uri:
+                publish(ls, uri)
 
     @server.feature(lsp.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(ls: EzServer, params: lsp.DidChangeTextDocumentParams) -> None:

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 from ..checking.discover import checked_files
 from ..checking.pipeline import check_run
-from ..checking.run import CheckSettings
+from ..checking.run import CheckSettings, Memo
 from ..lint.diagnostic import Diagnostic
 from ..lint.select import Selection, apply
 
@@ -40,9 +40,16 @@ class Workspace:
     skills: SkillIndex | None = None
     """The skill index of the last check (every description a tree may name): hover,
     completion and definition of child skills read it."""
+    memo: Memo = field(default_factory=Memo)
+    """The repository around each checked file, scanned once until a save (``saved``)."""
     discovered: dict[Path, Discovery] = field(default_factory=dict)
     """Each checked path's discovery (is it excluded, ignored by git, vendored?), made once
     per session: asking git costs a process per keystroke otherwise."""
+
+    def saved(self) -> None:
+        """A file was saved: what crosses files (the skill index's repository, scenes
+        against descriptions) is read again on the next check."""
+        self.memo.clear()
 
     def diagnose(self, path: Path, text: str) -> list[Diagnostic]:
         """``check``'s findings for ``path`` with ``text`` as its content, selected and
@@ -52,7 +59,7 @@ class Workspace:
             self.discovered[path] = checked_files([path], self.settings.exclude,
                                                   self.settings.include_vendored)
         settings = replace(self.settings, overlay={path.resolve(): data},
-                           discovered=self.discovered[path])
+                           discovered=self.discovered[path], memo=self.memo)
         run = check_run([path], self.index, self.pool, settings)
         outcome = run.outcome
         if run.skill_index is not None:

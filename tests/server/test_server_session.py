@@ -300,3 +300,29 @@ async def test_migrate_this_skill_rewrites_the_class_under_the_cursor_and_passes
     after = await _open(client, path, migrated)
     assert not [d for d in after if d.severity == lsp.DiagnosticSeverity.Error]
     assert path.read_text() == LEGACY  # the editor applies it; nothing was written
+
+
+@pytest.mark.asyncio
+async def test_a_save_refreshes_what_crosses_files_in_every_open_document(
+        client: LanguageClient, tmp_path: Path) -> None:
+    """The repository around a file is read once until a save: renaming the description
+    a tree names, on disk, changes nothing until that file is saved; then the tree's
+    file, open beside it, is checked again and names the missing type."""
+    fetch = tmp_path / "ws" / "pkg" / "fetch.py"
+    before = await _open(client, fetch, COMPOUND)
+    assert not [d for d in before if d.code == "EZ301"]
+    pick = tmp_path / "ws" / "pkg" / "pick.py"
+    renamed = LEGACY.replace("class Pick(", "class Grab(")
+    pick.write_text(renamed)
+    client.text_document_did_change(lsp.DidChangeTextDocumentParams(
+        lsp.VersionedTextDocumentIdentifier(uri=fetch.as_uri(), version=2),
+        [lsp.TextDocumentContentChangeWholeDocument(text=COMPOUND + "\n")]))
+    await client.wait_for_notification(lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+    assert not [d for d in client.diagnostics[fetch.as_uri()] if d.code == "EZ301"]
+    await _open(client, pick, renamed)
+    client.text_document_did_save(lsp.DidSaveTextDocumentParams(
+        lsp.TextDocumentIdentifier(uri=pick.as_uri())))
+    while not [d for d in client.diagnostics.get(fetch.as_uri(), []) if d.code == "EZ301"]:
+        await client.wait_for_notification(lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+    [missing] = [d for d in client.diagnostics[fetch.as_uri()] if d.code == "EZ301"]
+    assert "Pick" in missing.message
