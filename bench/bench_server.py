@@ -112,10 +112,11 @@ def _did_open(client: Client, path: Path, text: str) -> None:
 
 
 def _history(repo: Path) -> tuple[Path, list[str]]:
-    """The skill file of ``repo`` with the most versions in git, and those versions."""
+    """The file of ``repo`` declaring parameters (``addParam``) with the most versions in
+    git, and those versions."""
     best: tuple[int, Path] | None = None
     for path in repo.rglob("*.py"):
-        if b"createDescription" not in path.read_bytes():
+        if b"addParam" not in path.read_bytes():
             continue
         relative = path.relative_to(repo)
         count = len(subprocess.run(["git", "-C", str(repo), "log", "--format=%H", "--",
@@ -144,12 +145,12 @@ def _p95(values: list[float]) -> float:
 
 
 def _term_positions(text: str) -> list[tuple[int, int]]:
-    """Positions inside ``"prefix:Term"`` strings of ``text``."""
+    """Positions inside ``"prefix:Term"`` strings of ``text`` (either quote)."""
     import re
 
     found = []
     for number, row in enumerate(text.splitlines()):
-        for match in re.finditer(r'"[a-z]+:[A-Za-z]+"', row):
+        for match in re.finditer(r"""(["'])[a-z]+:[A-Za-z]+\1""", row):
             found.append((number, match.start() + 3))
     return found
 
