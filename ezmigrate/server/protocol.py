@@ -151,7 +151,7 @@ def build(open_workspace: Callable[[Path], Workspace]) -> EzServer:
     def definition(ls: EzServer, params: lsp.DefinitionParams) -> lsp.Location | None:
         child = _child(ls, params.text_document.uri, params.position)
         if child is not None and ls.ws is not None and ls.ws.skills is not None:
-            declared = skills.definition(ls.ws.skills, child)
+            declared = skills.definition(ls.ws.skills, child, ls.ws.root)
             if declared is not None:
                 at = lsp.Position(max(declared[1] - 1, 0), 0)
                 return lsp.Location(Path(declared[0]).resolve().as_uri(), lsp.Range(at, at))

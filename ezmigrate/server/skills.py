@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
@@ -97,9 +98,30 @@ def completions(skills: SkillIndex, child: ChildAt) -> list[tuple[str, str]]:
             if key.startswith(child.typed)]
 
 
-def definition(skills: SkillIndex, child: ChildAt) -> tuple[str, int] | None:
-    """``(path, 1-based line)`` of the child's description class."""
+def definition(skills: SkillIndex, child: ChildAt, root: Path) -> tuple[str, int] | None:
+    """``(path, 1-based line)`` of the child's description class, or of the
+    implementation class a label names (the class of that name in the workspace: SkiROS2
+    labels an implementation by its class name unless it says otherwise)."""
+    if child.kind == "label" and child.label:
+        return _class_in(root, child.label)
     info = skills.descriptions.get(child.type)
     if info is None or not info.path or child.kind != "type":
         return None
     return info.path, info.line
+
+
+def _class_in(root: Path, name: str) -> tuple[str, int] | None:
+    """The first ``class NAME`` of the workspace's Python files."""
+    from ..files.discover import discover
+
+    pattern = re.compile(rf"^class\s+{re.escape(name)}\b", re.MULTILINE)
+    found, _ = discover([root])
+    for candidate in found:
+        try:
+            text = candidate.path.read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        match = pattern.search(text)
+        if match is not None:
+            return str(candidate.path), text.count("\n", 0, match.start()) + 1
+    return None

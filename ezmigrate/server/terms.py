@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -184,6 +184,30 @@ def completions(index: OntologyIndex, text: str, line: int, character: int
         return found
     if match.group(3) is None:
         return []
-    kinds = {_local(iri): info.kind for iri, info in index.properties.items()}
-    return [Completion(local, kind) for local, kind in sorted(kinds.items())
-            if local.startswith(typed)]
+    cls = _annotated_class(index, text, prefix)
+    kinds: dict[str, tuple[str, int]] = {}
+    for iri, info in index.properties.items():
+        tier = _admits(index, cls, info.domains)
+        if tier < kinds.get(_local(iri), ("", 3))[1]:
+            kinds[_local(iri)] = (info.kind, tier)
+    ordered = sorted(kinds.items(), key=lambda item: (item[1][1], item[0]))
+    return [Completion(local, kind) for local, (kind, _) in ordered if local.startswith(typed)]
+
+
+def _annotated_class(index: OntologyIndex, text: str, name: str) -> str | None:
+    """The class IRI a parameter ``name`` is annotated with in ``text``
+    (``Gripper: rparts.GripperEffector``, also inside ``INFERRED[...]`` and the like)."""
+    found = re.search(rf"\b{re.escape(name)}\s*:\s*(?:[A-Z_]+\[)*([A-Za-z_]\w*)\.([A-Za-z_]\w*)",
+                      text)
+    if found is None or found.group(1) not in index.prefixes:
+        return None
+    iri = index.prefixes[found.group(1)] + found.group(2)
+    return iri if index.is_class(iri) else None
+
+
+def _admits(index: OntologyIndex, cls: str | None, domains: tuple[Any, ...]) -> int:
+    """How a property's domain takes the parameter's class, best first: 0 admits it by
+    name, 1 has no domain (or the class is not known), 2 excludes it."""
+    if cls is None or not domains:
+        return 1
+    return 0 if any(index.satisfies(cls, domain) for domain in domains) else 2
