@@ -32,6 +32,7 @@ if TYPE_CHECKING:
         LIST,
         OPTIONAL,
         REQUIRED,
+        Annotated,
         Consume,
         Lock,
         Output,
@@ -43,9 +44,9 @@ if TYPE_CHECKING:
 
 _EXPORTS: dict[str, str] = {
     "SkillDescription": "dsl.skill",
-    **dict.fromkeys(("INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "LIST", "Lock",
-                     "Consume",
-                     "Unspecify", "RespectType", "Output"), "dsl.markers"),
+    **dict.fromkeys(("INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "LIST",
+                     "Annotated", "Lock", "Consume", "Unspecify", "RespectType", "Output"),
+                    "dsl.markers"),
     "abstract": "dsl.conditions",
     "any_of": "dsl.conditions",
     "check": "dsl.checking",
@@ -93,6 +94,7 @@ __all__ = [
     "LIST",
     "OPTIONAL",
     "REQUIRED",
+    "Annotated",
     "CompoundSkillError",
     "Consume",
     "DescriptionError",

@@ -42,6 +42,19 @@ from ..verify.interpreters import never_search, version_of
 from .config import ConfigError, load_project_config
 from .options import CommandLine, Options
 from .output_formats import printable
+from .shared_options import (
+    DEBUG,
+    EXCLUDE,
+    IGNORE_LABELS,
+    IGNORE_ORDER,
+    INCLUDE_VENDORED,
+    JOBS,
+    ONTOLOGY,
+    PYTHON,
+    STDIN_FILENAME,
+    TIMEOUT,
+    report_option,
+)
 from .terminal import coloured_text, echo_diff, wants_colour
 
 EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
@@ -166,6 +179,9 @@ def _report_path(path: Path | None) -> Path | None:
     return path
 
 
+REPORT: Any = report_option(_report_path)
+
+
 def _write_report(path: Path, results: list[FileResult], options: MarkdownOptions) -> None:
     markdown = path.suffix.lower() == ".md"
     text = scrub(markdown_report(results, options) if markdown
@@ -196,41 +212,30 @@ def main() -> None:
                 type=click.Path(path_type=Path, allow_dash=True, exists=True))
 @click.option("--dry-run", is_flag=True, help="Write nothing; print a unified diff per file.")
 @click.option("--check", is_flag=True, help="Write nothing; exit 1 if any file would change.")
-@click.option("--report", type=click.Path(path_type=Path, dir_okay=False, allow_dash=True),
-              callback=lambda _ctx, _param, value: _report_path(value),
-              help="Write a report: Markdown for .md, JSON for .json (- for JSON on stdout).")
-@click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
-@click.option("--include-vendored", is_flag=True,
-              help="Also go into vendored copies of SkiROS2's own packages (skiros2_common, "
-                   "skiros2_std_skills, ...), which are skipped with a note by default.")
-@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
-              help="Ontology file or folder (repeatable).")
-@click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
+@REPORT
+@EXCLUDE
+@INCLUDE_VENDORED
+@ONTOLOGY
+@JOBS
 @click.option("--output-dir", type=click.Path(path_type=Path, file_okay=False),
               help="Write migrated copies here instead of in place, each at its path "
                    "relative to the PATH it was found under; a second file with the same "
                    "relative path (c1/x.py and c2/x.py) is refused, and the run exits 1.")
 @click.option("--verify/--no-verify", default=True, show_default=True,
               help="Load both versions and demand equivalence before writing.")
-@click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file when verifying.")
-@click.option("--python", "python", metavar="PATH",
-              help="Load files with this interpreter when verifying (default: this one, and "
-                   "for syntax newer than it the oldest newer python3.X that compiles it, "
-                   "from PATH's absolute entries outside the checked paths, else from "
-                   "pyenv's versions).")
-@click.option("--ignore-order", is_flag=True, help="Verification ignores declaration order.")
-@click.option("--ignore-labels", is_flag=True, help="Verification ignores condition labels.")
+@TIMEOUT
+@PYTHON
+@IGNORE_ORDER
+@IGNORE_LABELS
 @click.option("--color/--no-color", default=None, help="Colour diffs (default: on a terminal).")
-@click.option("--stdin-filename", type=click.Path(path_type=Path, dir_okay=False),
-              help="With PATH '-': the file stdin stands for (as ruff's flag): its project's "
-                   "configuration, ontology and robot apply, and messages name it.")
+@STDIN_FILENAME
 @click.option("--strict", is_flag=True,
               help="Exit 1 also when a skill was skipped with a reason (default: only for "
                    "--check with changes, failed verification, or unprocessable files).")
 @click.option("--package-xml/--no-package-xml", default=True, show_default=True,
               help="Declare the runtime (<exec_depend>) in the package.xml of each ROS "
                    "package whose files were migrated.")
-@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+@DEBUG
 def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | None,
             exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
             output_dir: Path | None, verify: bool, timeout: float | None, python: str | None,
@@ -401,22 +406,15 @@ def _finish(results: list[FileResult], report: Path | None, writes: bool, check:
 @main.command()
 @click.argument("before", type=click.Path(path_type=Path, exists=True))
 @click.argument("after", type=click.Path(path_type=Path, exists=True))
-@click.option("--report", type=click.Path(path_type=Path, dir_okay=False, allow_dash=True),
-              callback=lambda _ctx, _param, value: _report_path(value),
-              help="Write a report: Markdown for .md, JSON for .json (- for JSON on stdout).")
-@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
-              help="Ontology file or folder (repeatable).")
-@click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
-@click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
-@click.option("--python", "python", metavar="PATH",
-              help="Load files with this interpreter when verifying (default: this one, and "
-                   "for syntax newer than it the oldest newer python3.X that compiles it, "
-                   "from PATH's absolute entries outside the checked paths, else from "
-                   "pyenv's versions).")
-@click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
-@click.option("--ignore-order", is_flag=True, help="Declaration order does not matter.")
-@click.option("--ignore-labels", is_flag=True, help="Condition labels do not matter.")
-@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+@REPORT
+@ONTOLOGY
+@JOBS
+@TIMEOUT
+@PYTHON
+@EXCLUDE
+@IGNORE_ORDER
+@IGNORE_LABELS
+@DEBUG
 def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path, ...],
            jobs: int | None, timeout: float | None, python: str | None,
            exclude: tuple[str, ...],
@@ -470,11 +468,8 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 @main.command()
 @click.argument("paths", nargs=-1,
                 type=click.Path(path_type=Path, allow_dash=True, exists=True))
-@click.option("--stdin-filename", type=click.Path(path_type=Path, dir_okay=False),
-              help="With PATH '-': the file stdin stands for (as ruff's flag): its project's "
-                   "configuration and ontology apply, and findings name it.")
-@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
-              help="Ontology file or folder (repeatable).")
+@STDIN_FILENAME
+@ONTOLOGY
 @click.option("--select", multiple=True, metavar="CODES",
               help="Report only these codes or prefixes (EZ2,EZ901; replaces the default).")
 @click.option("--ignore", multiple=True, metavar="CODES", help="Do not report these codes.")
@@ -489,17 +484,11 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
 @click.option("--diff", "show_diff", is_flag=True,
               help="Print the diff --fix would apply and write nothing (exit 1 if any).")
 @click.option("--exit-zero", is_flag=True, help="Exit 0 even when errors were found.")
-@click.option("--jobs", "-j", type=click.IntRange(min=1), help="Parallel workers.")
-@click.option("--timeout", type=click.FloatRange(min=0.1), help="Seconds per file (default 20).")
-@click.option("--python", "python", metavar="PATH",
-              help="Load files with this interpreter when verifying (default: this one, and "
-                   "for syntax newer than it the oldest newer python3.X that compiles it, "
-                   "from PATH's absolute entries outside the checked paths, else from "
-                   "pyenv's versions).")
-@click.option("--exclude", multiple=True, metavar="GLOB", help="Skip matching paths.")
-@click.option("--include-vendored", is_flag=True,
-              help="Also go into vendored copies of SkiROS2's own packages (skiros2_common, "
-                   "skiros2_std_skills, ...), which are skipped with a note by default.")
+@JOBS
+@TIMEOUT
+@PYTHON
+@EXCLUDE
+@INCLUDE_VENDORED
 @click.option("--trace/--no-trace", "trace", default=False,
               help="Run repository code, for repositories you trust: load EzSkiROS files "
                    "whose descriptions the syntax cannot give, and trace compound skills "
@@ -520,7 +509,7 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
               help="The SkiROS2 launch file the robot starts with (.launch or .launch.py): "
                    "its workspace_dir, init_scene and skill_list are used (default: the "
                    "only one in the repository).")
-@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+@DEBUG
 def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str, ...],
           ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
           statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
@@ -650,8 +639,7 @@ def _world_run(paths: tuple[Path, ...], options: Options, scene: Path | None) ->
 
 
 @main.command()
-@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
-              help="Ontology file or folder (repeatable); default: as check finds it.")
+@ONTOLOGY
 @click.option("--stdio", is_flag=True, help="Talk over stdin and stdout (the default).")
 def server(ontology: tuple[Path, ...], stdio: bool) -> None:
     """Serve an editor over the Language Server Protocol: check's findings as you type,
@@ -678,11 +666,10 @@ def server(ontology: tuple[Path, ...], stdio: bool) -> None:
 
 @main.command()
 @click.argument("file", type=click.Path(path_type=Path, exists=True, dir_okay=False))
-@click.option("--ontology", multiple=True, type=click.Path(path_type=Path, exists=True),
-              help="Ontology file or folder (repeatable).")
+@ONTOLOGY
 @click.option("--markdown", is_flag=True,
               help="Print the Markdown section (findings and a fenced diagram) instead.")
-@click.option("--debug", is_flag=True, help="Show tracebacks of internal errors.")
+@DEBUG
 def scene(file: Path, ontology: tuple[Path, ...], markdown: bool, debug: bool) -> None:
     """Draw the spatial tree of the world-model scene FILE as a Mermaid flowchart.
 

@@ -3,7 +3,8 @@
 Import the public names from ``ezskiros_runtime``; this package stays empty so that importing
 one piece (say, the markers) never chooses a backend. Where things live, in lowering order:
 
-- ``markers``: ``INFERRED``/``OPTIONAL``/``REQUIRED``, ``ELEMENT``, ``KEY``, the options;
+- ``markers``: ``INFERRED``/``OPTIONAL``/``REQUIRED``, ``Annotated``, ``ELEMENT``, ``KEY``,
+  ``DESC``, the options;
 - ``parameters``: the ``description`` signature as ``addParam`` specs (step 1);
 - ``symbols``, ``conditions``, ``collectors``, ``tracing``: running the body on symbols and
   recording every ``+=`` with its file and line (step 2);

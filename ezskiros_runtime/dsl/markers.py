@@ -111,33 +111,90 @@ class Kind:
         if not items:
             raise DescriptionError(f"{self._marker}[...] needs the parameter type first")
         first, rest = items[0], items[1:]
-        if isinstance(first, (str, DESC, Option, KEY, Kind, ParamAnnotation)):
+        if not _is_type_item(first):
             raise DescriptionError(
                 f"{self._marker}[...]: the first item must be the type (an OWL class, "
                 f"ELEMENT(...), or a Python type), got {first!r}")
-        description: str | None = None
-        options: list[str] = []
-        key: str | None = None
-        for item in rest:
-            if isinstance(item, (str, DESC)):
-                text = item.text if isinstance(item, DESC) else item
-                if description is not None:
-                    raise DescriptionError(
-                        f"{self._marker}[...] has two descriptions: {description!r} and "
-                        f"{text!r}")
-                description = text
-            elif isinstance(item, Option):
-                options.append(item.name)
-            elif isinstance(item, KEY):
-                if key is not None:
-                    raise DescriptionError(f"{self._marker}[...] has two KEY(...) items")
-                key = item.key
-            else:
-                raise DescriptionError(
-                    f"{self._marker}[...]: unexpected item {item!r}; after the type come a "
-                    f"description (DESC(...)), options ({', '.join(OPTION_NAMES)}) and KEY(...)")
-        return ParamAnnotation(self.kind, first, description or "", tuple(options), key)
+        description, options, key = _items(self._marker, rest, None, (), None)
+        return ParamAnnotation(self.kind, first, description or "", options, key)
 
+
+def _is_type_item(item: Any) -> bool:
+    """Whether an annotation item can be the parameter's type (not a description, option,
+    key or kind marker)."""
+    return not isinstance(item, (str, DESC, Option, KEY, Kind, ParamAnnotation, AnnotatedForm))
+
+
+def _items(marker: str, items: tuple[Any, ...], description: str | None,
+           options: tuple[str, ...], key: str | None
+           ) -> tuple[str | None, tuple[str, ...], str | None]:
+    """The description, options and key that ``items`` add to those given (the items after
+    the type, in ``KIND[...]`` or ``Annotated[...]``)."""
+    found = list(options)
+    for item in items:
+        if isinstance(item, (str, DESC)):
+            text = item.text if isinstance(item, DESC) else item
+            if description is not None:
+                raise DescriptionError(
+                    f"{marker}[...] has two descriptions: {description!r} and {text!r}")
+            description = text
+        elif isinstance(item, Option):
+            found.append(item.name)
+        elif isinstance(item, KEY):
+            if key is not None:
+                raise DescriptionError(f"{marker}[...] has two KEY(...) items")
+            key = item.key
+        else:
+            raise DescriptionError(
+                f"{marker}[...]: unexpected item {item!r}; after the type come a "
+                f"description (DESC(...)), options ({', '.join(OPTION_NAMES)}) and KEY(...)")
+    return description, tuple(found), key
+
+
+class AnnotatedForm:
+    """``Annotated[A, items...]``: the annotation ``A`` with more items after its type, the
+    spelling that keeps strings (``DESC("...")``, ``KEY("...")``, ``ELEMENT("...")``) out of
+    the parts of an annotation that linters parse.
+
+    pyflakes (flake8's F rules) reads every string literal inside an annotation as a forward
+    reference (F722, F821), except in the items after the first of a subscript named
+    ``Annotated`` and inside ``Literal[...]``; ruff reads strings that are call arguments
+    as values. So ``Annotated[skiros.Product, DESC("The object")]`` is
+    ``REQUIRED[skiros.Product, DESC("The object")]``, ``Annotated[OPTIONAL[float],
+    DESC("m/s")]`` is ``OPTIONAL[float, DESC("m/s")]``, and when ``A`` is a bare kind marker
+    the first item, if it is a type, is the type: ``Annotated[INFERRED, ELEMENT(":Cam"),
+    Lock]`` is ``INFERRED[ELEMENT(":Cam"), Lock]``.
+
+    This is the DSL's own form, not ``typing.Annotated``: Python 3.8 (ROS Noetic) has none,
+    and ``typing.Annotated`` refuses a kind marker as its first item before Python 3.11.
+    """
+
+    def __repr__(self) -> str:
+        return "Annotated"
+
+    def __getitem__(self, items: Any) -> ParamAnnotation:
+        items = items if isinstance(items, tuple) else (items,)
+        if len(items) < 2:
+            raise DescriptionError(
+                "Annotated[...] needs the annotation and at least one item after it, e.g. "
+                "Annotated[skiros.Product, DESC(\"...\")]")
+        head, rest = items[0], items[1:]
+        if isinstance(head, (str, DESC, Option, KEY, AnnotatedForm)):
+            raise DescriptionError(
+                f"Annotated[...]: the first item must be the annotation (a type, a kind "
+                f"marker or KIND[...]), got {head!r}")
+        annotation = parse_annotation(head)
+        tp = annotation.type
+        if tp is None and _is_type_item(rest[0]):
+            tp, rest = rest[0], rest[1:]
+        description, options, key = _items(
+            "Annotated", rest, annotation.description or None, annotation.options,
+            annotation.key)
+        return ParamAnnotation(annotation.kind, tp, description or "", options, key)
+
+
+Annotated = AnnotatedForm()
+"""``Annotated[A, items...]``: see ``AnnotatedForm``."""
 
 INFERRED = Kind("INFERRED", "Inferred")
 OPTIONAL = Kind("OPTIONAL", "Optional")
@@ -158,6 +215,9 @@ def parse_annotation(annotation: Any) -> ParamAnnotation:
         return ParamAnnotation(annotation.kind)
     if annotation is None:
         return ParamAnnotation("Required")
+    if isinstance(annotation, AnnotatedForm):
+        raise DescriptionError("a bare Annotated needs the annotation and its items: "
+                               "Annotated[skiros.Product, DESC(\"...\")]")
     if isinstance(annotation, (Option, KEY, DESC, str)):
         raise DescriptionError(
             f"annotation {annotation!r} needs a kind marker, e.g. REQUIRED[float, ...]")
@@ -173,6 +233,8 @@ __all__ = [
     "OPTIONAL",
     "OPTION_NAMES",
     "REQUIRED",
+    "Annotated",
+    "AnnotatedForm",
     "Consume",
     "ElementType",
     "Kind",

@@ -33,15 +33,15 @@ def test_verbatim_element_strings_and_unknown_vocabulary():
         '        self.addParam("C", Element(), ParamTypes.Required)\n'
         '        self.addParam("D", Element("scalable:Ur5"), ParamTypes.Required)\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, ELEMENT
+from ezskiros_runtime import SkillDescription, Annotated, REQUIRED, ELEMENT
 
 
 class S(SkillDescription):
     def description(self,
-                    A: ELEMENT(":Location"),
-                    B: ELEMENT("Location"),
+                    A: Annotated[REQUIRED, ELEMENT(":Location")],
+                    B: Annotated[REQUIRED, ELEMENT("Location")],
                     C: ELEMENT(),
-                    D: ELEMENT("scalable:Ur5")):
+                    D: Annotated[REQUIRED, ELEMENT("scalable:Ur5")]):
         pass
 ''')
     spelled = [f.message for f in result.skills[0].findings if f.kind == "element-type-spelling"]
@@ -104,7 +104,7 @@ def test_options_description_and_the_fourth_positional_quirk():
         '        self.addParam("Mass", float, ParamTypes.Required, description="kg")\n'
         '        self.addParam("Force", 1.0, ParamTypes.Optional, "newton")\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, OPTIONAL, REQUIRED, DESC, Lock, Consume
+from ezskiros_runtime import SkillDescription, Annotated, OPTIONAL, REQUIRED, DESC, Lock, Consume
 from ezskiros_runtime.ontology import skiros
 
 
@@ -112,8 +112,8 @@ class S(SkillDescription):
     def description(self,
                     Cam: REQUIRED[skiros.Location, Lock, Consume],
                     *,
-                    Speed: OPTIONAL[float, DESC("m/s")] = 0.5,
-                    Mass: REQUIRED[float, DESC("kg")],
+                    Speed: Annotated[OPTIONAL[float], DESC("m/s")] = 0.5,
+                    Mass: Annotated[float, DESC("kg")],
                     Force: OPTIONAL[float] = 1.0):  # newton
         pass
 ''')
@@ -168,16 +168,16 @@ def test_keys_that_are_not_identifiers_get_a_key_escape():
         '        self.addParam("2nd", 1, ParamTypes.Optional)\n'
         '        self.addPreCondition(self.getRelationCond("fromContain2nd", "skiros:contain", "from", "2nd", True))\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, OPTIONAL, REQUIRED, KEY
+from ezskiros_runtime import SkillDescription, Annotated, OPTIONAL, KEY
 from ezskiros_runtime.ontology import skiros
 
 
 class S(SkillDescription):
     def description(self,
                     *,
-                    On_Off: REQUIRED[bool, KEY("On/Off")] = True,
-                    from_: REQUIRED[skiros.Location, KEY("from")],
-                    _2nd: OPTIONAL[int, KEY("2nd")] = 1):
+                    On_Off: Annotated[bool, KEY("On/Off")] = True,
+                    from_: Annotated[skiros.Location, KEY("from")],
+                    _2nd: Annotated[OPTIONAL[int], KEY("2nd")] = 1):
         self.pre_conditions += from_.contain(_2nd)
 ''')
 
@@ -187,13 +187,13 @@ def test_keys_python_would_mangle_in_a_class_get_a_key_escape():
     assert_migrates(case(
         '        self.addParam("__tool", Element("skiros:Product"), ParamTypes.Required)\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, REQUIRED, KEY
+from ezskiros_runtime import SkillDescription, Annotated, KEY
 from ezskiros_runtime.ontology import skiros
 
 
 class S(SkillDescription):
     def description(self,
-                    tool: REQUIRED[skiros.Product, KEY("__tool")]):
+                    tool: Annotated[skiros.Product, KEY("__tool")]):
         pass
 ''')
 
@@ -220,14 +220,14 @@ def test_redeclared_key_with_options_keeps_both_declarations():
         '        self.addParam("Arm", Element("skiros:Location"), ParamTypes.Required, [ParamOptions.Lock])\n'
         '        self.addParam("Arm", Element("skiros:Product"), ParamTypes.Required)\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, REQUIRED, KEY, Lock
+from ezskiros_runtime import SkillDescription, Annotated, REQUIRED, KEY, Lock
 from ezskiros_runtime.ontology import skiros
 
 
 class S(SkillDescription):
     def description(self,
                     Arm: REQUIRED[skiros.Location, Lock],
-                    Arm_2: REQUIRED[skiros.Product, KEY("Arm")]):
+                    Arm_2: Annotated[skiros.Product, KEY("Arm")]):
         pass
 ''')
 
@@ -239,12 +239,12 @@ def test_module_constants_keep_their_name_and_get_their_type():
     ), '''\
 SPEED = 0.5
 UNKNOWN = compute()
-from ezskiros_runtime import SkillDescription, OPTIONAL, DESC
+from ezskiros_runtime import SkillDescription, Annotated, OPTIONAL, DESC  # noqa: E402
 
 
 class S(SkillDescription):
     def description(self,
-                    Speed: OPTIONAL[float, DESC("m/s")] = SPEED,
+                    Speed: Annotated[OPTIONAL[float], DESC("m/s")] = SPEED,
                     Other: OPTIONAL = UNKNOWN):
         pass
 ''')
@@ -279,13 +279,13 @@ def test_identifier_keys_keep_their_own_name_before_made_up_ones_take_it():
         '        self.addParam("Target Location", Element("skiros:Location"), ParamTypes.Required)\n'
         '        self.addParam("Target_Location", Element("skiros:Location"), ParamTypes.Required)\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, REQUIRED, KEY
+from ezskiros_runtime import SkillDescription, Annotated, KEY
 from ezskiros_runtime.ontology import skiros
 
 
 class S(SkillDescription):
     def description(self,
-                    Target_Location_2: REQUIRED[skiros.Location, KEY("Target Location")],
+                    Target_Location_2: Annotated[skiros.Location, KEY("Target Location")],
                     Target_Location: skiros.Location):
         pass
 ''')
@@ -299,13 +299,13 @@ def test_module_constants_as_keys_and_descriptions_resolve_like_constant_values(
     ), '''\
 KEY_NAME = "Target"
 WHERE = "where to go"
-from ezskiros_runtime import SkillDescription, REQUIRED, DESC
-from ezskiros_runtime.ontology import skiros
+from ezskiros_runtime import SkillDescription, Annotated, DESC  # noqa: E402
+from ezskiros_runtime.ontology import skiros  # noqa: E402
 
 
 class S(SkillDescription):
     def description(self,
-                    Target: REQUIRED[skiros.Location, DESC(WHERE)]):
+                    Target: Annotated[skiros.Location, DESC(WHERE)]):
         self.pre_conditions += Target.contain(self.param("B")).named("c")
 ''')
 
@@ -329,12 +329,12 @@ def test_a_description_held_in_a_local_is_written_as_its_value():
         '        unit = "m/s"\n'
         '        self.addParam("Speed", 0.5, ParamTypes.Optional, [], unit)\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, OPTIONAL, DESC
+from ezskiros_runtime import SkillDescription, Annotated, OPTIONAL, DESC
 
 
 class S(SkillDescription):
     def description(self,
-                    Speed: OPTIONAL[float, DESC("m/s")] = 0.5):
+                    Speed: Annotated[OPTIONAL[float], DESC("m/s")] = 0.5):
         pass
 ''')
 
@@ -352,13 +352,13 @@ def test_findings_point_at_the_add_param_or_condition_that_causes_them():
         '        self.addParam("B", Element("skiros:Nope"), ParamTypes.Required)\n'
         '        self.addPreCondition(self.getRelationCond("c", "skiros:nothere", "A", "W", True))\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, ELEMENT
+from ezskiros_runtime import SkillDescription, Annotated, REQUIRED, ELEMENT
 
 
 class S(SkillDescription):
     def description(self,
-                    A: ELEMENT("Location"),
-                    B: ELEMENT("skiros:Nope")):
+                    A: Annotated[REQUIRED, ELEMENT("Location")],
+                    B: Annotated[REQUIRED, ELEMENT("skiros:Nope")]):
         self.pre_conditions += A.relation("skiros:nothere", self.param("W")).named("c")
 ''')
     lines = {(f.kind, f.message.split("'")[-2]): f.line for f in result.skills[0].findings}

@@ -109,7 +109,7 @@ def test_legacy_submodules_imported_as_modules_resolve(imports: str):
     result = migrate(source)
     assert [(s.name, s.status, s.reason) for s in result.skills] == [
         ("Navigate", "converted", None)]
-    assert 'Target: ELEMENT("skiros:Location")' in str(result.new_source)
+    assert 'Target: Annotated[REQUIRED, ELEMENT("skiros:Location")]' in str(result.new_source)
     assert "skiros2_common" not in str(result.new_source)  # the module imports are unused
 
 

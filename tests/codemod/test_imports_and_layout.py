@@ -69,7 +69,7 @@ def test_crlf_tabs_bom_cookie_and_missing_final_newline_are_kept():
     assert isinstance(out, bytes)
     assert out.startswith(b"\xef\xbb\xbf")
     assert b"\r\n" in out and b"\n" not in out.replace(b"\r\n", b"")
-    assert b"\tdef description(self,\r\n\t                A: skiros.Location):\r\n" in out
+    assert b"\tdef description(\r\n\t\t\tself,\r\n\t\t\tA: skiros.Location):\r\n" in out
     assert not out.endswith(b"\n")
     latin = ("# -*- coding: latin-1 -*-\n# Größe\n" + LEGACY).encode("latin-1")
     out = migrate(latin, settings(), "y.py").new_source

@@ -3,8 +3,11 @@
 Labs gate pull requests on ruff or flake8 with their default rules. A migration that adds
 findings fails their CI, and the fixes those tools offer can change what a skill means:
 ruff's unsafe E712 fix turns ``(X.Reachable == True)`` into ``X.Reachable``. So ruff with
-its default rules reads every ``fixtures/legacy`` file and the codemod's output for it, and
-no rule may count more afterwards.
+its default rules and flake8 with its own (pycodestyle's E and W, pyflakes' F, mccabe's C90)
+read every ``fixtures/legacy`` file and the codemod's output for it, and no rule may count
+more afterwards. flake8 is the stricter reader of the two: pyflakes parses every string in
+an annotation as a forward reference (F722), and pycodestyle lets no ``sys.path`` change
+come before an import (E402).
 """
 
 from __future__ import annotations
@@ -35,6 +38,16 @@ def ruff_counts(folder: Path) -> Counter[str]:
     return Counter(finding["code"] or "syntax-error" for finding in json.loads(proc.stdout))
 
 
+def flake8_counts(folder: Path) -> Counter[str]:
+    """Findings per code of flake8 with its defaults, ignoring any configuration around
+    ``folder`` (``--isolated``)."""
+    proc = subprocess.run(
+        [sys.executable, "-m", "flake8", "--isolated", "--exit-zero", "--format", "%(code)s",
+         str(folder)], capture_output=True, text=True, check=False, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    return Counter(proc.stdout.split())
+
+
 def write_both(target: Path) -> tuple[Path, Path]:
     """Every legacy fixture under ``target/legacy`` and its migration under
     ``target/migrated`` (the file itself when the codemod leaves it alone)."""
@@ -59,6 +72,14 @@ def test_no_ruff_default_rule_counts_more_after_the_migration(tmp_path: Path) ->
     assert worse == {}, f"rule: (before, after) = {worse}; before {dict(old)}, after {dict(new)}"
 
 
+def test_no_flake8_default_code_counts_more_after_the_migration(tmp_path: Path) -> None:
+    before, after = write_both(tmp_path)
+    old, new = flake8_counts(before), flake8_counts(after)
+    assert sum(old.values()) > 0
+    worse = {code: (old[code], new[code]) for code in new if new[code] > old[code]}
+    assert worse == {}, f"code: (before, after) = {worse}; before {dict(old)}, after {dict(new)}"
+
+
 def test_the_comparison_reads_a_real_difference(tmp_path: Path) -> None:
     """The check can fail: the comparison form ``== True`` the codemod once wrote is E712,
     and an import left unused is F401."""
@@ -74,3 +95,21 @@ def test_every_legacy_fixture_is_compared(tmp_path: Path) -> None:
     changed = [p.name for p in sorted(before.iterdir())
                if p.read_bytes() != (after / p.name).read_bytes()]
     assert len(changed) >= 15, changed
+
+
+def test_flake8_reads_what_the_codemod_once_wrote(tmp_path: Path) -> None:
+    """The flake8 check can fail: the string forms inside ``KIND[...]`` are F722 and F821,
+    and an import after ``sys.path.append`` is E402 (ruff lets that one pass)."""
+    (tmp_path / "skill.py").write_text(
+        "import sys\n"
+        "sys.path.append('/opt/lab')\n"
+        "from ezskiros_runtime import SkillDescription, REQUIRED, ELEMENT, DESC\n\n\n"
+        "class S(SkillDescription):\n"
+        "    def description(self,\n"
+        "                    T: ELEMENT('scalable:Workstation'),\n"
+        "                    C: REQUIRED[str, DESC('compliant|joint_config')] = ''):\n"
+        "        pass\n", encoding="utf-8")
+    found = flake8_counts(tmp_path)
+    assert {code: found[code] for code in ("E402", "F722", "F821")} == \
+        {"E402": 1, "F722": 1, "F821": 2}
+    assert ruff_counts(tmp_path) == Counter()

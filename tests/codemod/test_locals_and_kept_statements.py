@@ -40,13 +40,13 @@ def test_inlined_literal_locals_go_but_their_comments_stay():
         '        self.addParam(obj, Element("skiros:Product"), ParamTypes.Required)\n'
         '        self.addPreCondition(self.getRelationCond("AContainB", rel, "A", obj, True))\n'
     ), '''\
-from ezskiros_runtime import SkillDescription, REQUIRED, DESC
+from ezskiros_runtime import SkillDescription, Annotated, DESC
 from ezskiros_runtime.ontology import skiros
 
 
 class S(SkillDescription):
     def description(self,
-                    A: REQUIRED[skiros.Location, DESC("m/s")],
+                    A: Annotated[skiros.Location, DESC("m/s")],
                     B: skiros.Product):
         # the thing to hold
         # a product

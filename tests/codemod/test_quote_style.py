@@ -24,13 +24,13 @@ def test_single_quoted_file_gets_single_quotes():
         self.addParam('On/Off', True, ParamTypes.Optional)
         self.addParam('Note', "it's", ParamTypes.Optional)
         self.addPreCondition(self.getRelationCond('Near', 'foo:near', 'On/Off', 'Object', True))
-''', '''from ezskiros_runtime import SkillDescription, OPTIONAL, ELEMENT, KEY
+''', '''from ezskiros_runtime import SkillDescription, Annotated, OPTIONAL, REQUIRED, ELEMENT, KEY
 
 
 class Pick(SkillDescription):
     def description(self,
-                    Object: ELEMENT('scalable:Thing'),
-                    On_Off: OPTIONAL[bool, KEY('On/Off')] = True,
+                    Object: Annotated[REQUIRED, ELEMENT('scalable:Thing')],
+                    On_Off: Annotated[OPTIONAL[bool], KEY('On/Off')] = True,
                     Note: OPTIONAL[str] = "it's"):
         self.pre_conditions += On_Off.relation('foo:near', Object).named('Near')
 ''')
@@ -41,12 +41,12 @@ def test_double_quoted_file_keeps_double_quotes():
     def createDescription(self):
         self.addParam("Object", Element("scalable:Thing"), ParamTypes.Required)
         self.addParam('On/Off', True, ParamTypes.Optional)
-""", """from ezskiros_runtime import SkillDescription, OPTIONAL, ELEMENT, KEY
+""", """from ezskiros_runtime import SkillDescription, Annotated, OPTIONAL, REQUIRED, ELEMENT, KEY
 
 
 class Pick(SkillDescription):
     def description(self,
-                    Object: ELEMENT("scalable:Thing"),
-                    On_Off: OPTIONAL[bool, KEY("On/Off")] = True):
+                    Object: Annotated[REQUIRED, ELEMENT("scalable:Thing")],
+                    On_Off: Annotated[OPTIONAL[bool], KEY("On/Off")] = True):
         pass
 """)

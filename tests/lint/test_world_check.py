@@ -28,13 +28,13 @@ LABELS: dict[tuple[str, int, str], str] = {
     ("legacy/condition_classes.py", 49, "EZ401"): "screw in the hole and on the screwdriver",
     ("migrated/condition_classes.py", 47, "EZ401"): "the same, migrated",
     ("legacy/conditions.py", 77, "EZ401"): "object in the container and in the gripper",
-    ("migrated/conditions.py", 85, "EZ401"): "the same, migrated",
+    ("migrated/conditions.py", 93, "EZ401"): "the same, migrated",
     ("legacy/param_values.py", 35, "EZ401"): "workpiece in the fixture and on the tray",
     ("migrated/param_values.py", 34, "EZ401"): "the same, migrated",
     ("legacy/pick_and_place.py", 67, "EZ401"): "compound PickAndPlace: start never retracted",
     ("migrated/pick_and_place.py", 69, "EZ401"): "the same, migrated",
     ("legacy/unusual_keys.py", 36, "EZ401"): "pipette: object in `from` and in `to`",
-    ("migrated/unusual_keys.py", 38, "EZ401"): "the same, migrated",
+    ("migrated/unusual_keys.py", 47, "EZ401"): "the same, migrated",
     ("world_repo/cell_skills/src/cell_skills/skills/manipulation.py", 25, "EZ401"):
         "the official planning example's Pick",
     ("world_repo/cell_skills/src/cell_skills/skills/inspection.py", 13, "EZ401"):

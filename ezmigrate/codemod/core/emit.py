@@ -41,8 +41,8 @@ SYMBOL_METHODS = frozenset(
 """Methods of a symbolic parameter: never usable as a short relation/property name."""
 
 DSL_NAMES = frozenset({
-    "SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC", "LIST",
-    "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output"})
+    "SkillDescription", "Annotated", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC",
+    "LIST", "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output"})
 
 LINE_LIMIT = 99
 """Longest line the emitter writes when it has a choice (ruff's and black's spirit)."""

@@ -36,6 +36,12 @@ from .ir import (
 )
 
 ALIGN = " " * len("def description(")
+HANGING_TABS = "\t\t"
+"""In a file indented with tabs, the parameters hang two tabs deeper than ``def``, from the
+line after ``def description(``: aligning them with the ``(`` needs spaces after the tabs,
+which pycodestyle reports on every line (E101, mixed spaces and tabs), and tabs alone
+cannot line up with it (E128). Two tabs keep them apart from the body (one would be E125);
+pycodestyle's E126 for it is one flake8 ignores by default."""
 ROBOT = "Robot"
 
 
@@ -160,12 +166,12 @@ def _comment_lines(comments: Comments, indent_ws: str) -> list[cst.EmptyLine]:
                           comment=cst.Comment(text)) for text in texts + comments.inner]
 
 
-def _line_break(comment: cst.Comment | None,
-                lines: list[cst.EmptyLine]) -> cst.ParenthesizedWhitespace:
+def _line_break(comment: cst.Comment | None, lines: list[cst.EmptyLine],
+                align: str = ALIGN) -> cst.ParenthesizedWhitespace:
     return cst.ParenthesizedWhitespace(
         first_line=cst.TrailingWhitespace(
             whitespace=cst.SimpleWhitespace("  " if comment else ""), comment=comment),
-        empty_lines=lines, indent=True, last_line=cst.SimpleWhitespace(ALIGN))
+        empty_lines=lines, indent=True, last_line=cst.SimpleWhitespace(align))
 
 
 @functools.lru_cache(maxsize=4096)
@@ -177,7 +183,8 @@ def expression(text: str) -> cst.BaseExpression:
 
 
 def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[str],
-                     ctx: EmitContext) -> tuple[cst.Parameters, cst.Comment | None]:
+                     ctx: EmitContext, align: str = ALIGN
+                     ) -> tuple[cst.Parameters, cst.Comment | None]:
     """The signature; also returns the last parameter's end-of-line comment (for the header).
 
     Each comma carries the line break before the next item together with that item's
@@ -205,8 +212,8 @@ def build_parameters(func: cst.FunctionDef, params: list[ParamOp], names: list[s
         items.append(entry)
     linked: list[cst.Param | cst.ParamStar] = []
     for (item, own), (_, following) in itertools.pairwise(items):
-        comma = cst.Comma(whitespace_after=_line_break(own.trailing,
-                                                        _comment_lines(following, ALIGN)))
+        comma = cst.Comma(whitespace_after=_line_break(
+            own.trailing, _comment_lines(following, align), align))
         linked.append(item.with_changes(comma=comma))
     linked.append(items[-1][0])
     star = next((i for i, item in enumerate(linked) if isinstance(item, cst.ParamStar)), None)
@@ -288,7 +295,13 @@ def build_description(func: cst.FunctionDef, skill: ExtractedSkill, params: list
                       ctx: EmitContext, config: cst.PartialParserConfig) -> cst.FunctionDef:
     """The complete ``description`` method for ``skill`` with the signature ``params``."""
     names = assign_names(params, ctx)
-    parameters, last_comment = build_parameters(func, params, names, ctx)
+    indent = config.default_indent
+    hanging = bool(params) and isinstance(indent, str) and set(indent) == {"\t"}
+    parameters, last_comment = build_parameters(func, params, names, ctx,
+                                                HANGING_TABS if hanging else ALIGN)
     body = build_body(func, skill, ctx, config, last_comment, moved_def_comment=bool(params))
+    before_params: cst.BaseParenthesizableWhitespace = cst.ParenthesizedWhitespace(
+        indent=True, last_line=cst.SimpleWhitespace(HANGING_TABS)) if hanging \
+        else cst.SimpleWhitespace("")
     return func.with_changes(name=cst.Name("description"), params=parameters, body=body,
-                             whitespace_before_params=cst.SimpleWhitespace(""))
+                             whitespace_before_params=before_params)

@@ -11,10 +11,21 @@ statement that takes its place, so banners like ``# SkiROS2 imports`` survive.
 The new imports go where the first legacy import was, unless a star import follows it: a
 helper module imported with ``*`` may re-export the legacy ``SkillDescription`` and would
 rebind ours, so the new imports then go right after the last top-level star import.
+
+What linters would newly count is marked where it cannot be avoided (issue 43), with the
+code of the one rule, so nothing else is silenced:
+
+- a new import whose place is past the top of the module as pycodestyle reads it (after a
+  ``sys.path.append(...)`` that a star import of the lab's own module follows) is E402, as
+  every import of the original there already is: it gets ``# noqa: E402``;
+- a legacy import kept only because other modules of the package import its names from
+  this one (``Settings.exported``) is unused here, F401: it gets ``# noqa: F401``, the
+  usual mark of a re-export.
 """
 
 from __future__ import annotations
 
+import re
 from collections import Counter
 from collections.abc import Callable, Collection, Iterable, Sequence
 from typing import Any
@@ -27,8 +38,9 @@ from .tree_walk import walk
 
 RUNTIME = "ezskiros_runtime"
 ONTOLOGY = "ezskiros_runtime.ontology"
-RUNTIME_ORDER = ("SkillDescription", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT", "KEY", "DESC",
-                 "abstract", "any_of", "Lock", "Consume", "Unspecify", "RespectType", "Output")
+RUNTIME_ORDER = ("SkillDescription", "Annotated", "INFERRED", "OPTIONAL", "REQUIRED", "ELEMENT",
+                 "KEY", "DESC", "abstract", "any_of", "Lock", "Consume", "Unspecify",
+                 "RespectType", "Output")
 
 
 def _as_name(node: cst.ExceptHandler | cst.ExceptStarHandler) -> cst.CSTNode | None:
@@ -149,12 +161,20 @@ def _prune(small: cst.BaseSmallStatement, used: set[str],
     return small
 
 
+NOQA_E402 = "# noqa: E402"
+NOQA_F401 = "# noqa: F401"
+
+
 def _import_line(module: str, names: Sequence[tuple[str, str]],
-                 config: cst.PartialParserConfig) -> cst.SimpleStatementLine:
+                 config: cst.PartialParserConfig, noqa: str = "") -> cst.SimpleStatementLine:
+    """``from module import names``, on one line when it fits, with ``noqa`` (a comment, or
+    "") on its first line: where flake8 and ruff look for it."""
     items = [name if alias == name else f"{name} as {alias}" for name, alias in names]
-    text = f"from {module} import {', '.join(items)}"
+    comment = f"  {noqa}" if noqa else ""
+    text = f"from {module} import {', '.join(items)}{comment}"
     if len(text) > LINE_LIMIT:
-        text = f"from {module} import (\n" + "".join(f"    {item},\n" for item in items) + ")"
+        text = f"from {module} import ({comment}\n" + "".join(
+            f"    {item},\n" for item in items) + ")"
     parsed = cst.parse_statement(text + "\n", config=config)
     assert isinstance(parsed, cst.SimpleStatementLine)
     return parsed
@@ -175,6 +195,7 @@ def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
     names ``module`` uses outside imports (the caller knows them without a visit).
     """
     existing = imported_names(module)
+    own_use = used
     used = used | set(exported)
     if "*" in exported:  # another module takes every name: no import is unused
         used |= _all_imported(module)
@@ -185,8 +206,12 @@ def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
                     key=lambda pair: order.get(pair[0], len(order)))
     spaces = sorted(pair for pair in set(prefixes) if existing.get(pair[1]) != ONTOLOGY)
     config = module.config_for_parsing
-    additions = ([_import_line(RUNTIME, wanted, config)] if wanted else []) + (
-        [_import_line(ONTOLOGY, spaces, config)] if spaces else [])
+
+    def additions_at(noqa: str) -> list[cst.SimpleStatementLine]:
+        return ([_import_line(RUNTIME, wanted, config, noqa)] if wanted else []) + (
+            [_import_line(ONTOLOGY, spaces, config, noqa)] if spaces else [])
+
+    additions = additions_at("")
 
     body: list[cst.BaseStatement] = []
     anchor: int | None = None
@@ -209,6 +234,8 @@ def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
                 carried += list(stmt.leading_lines)
                 continue
             stmt = stmt.with_changes(body=_fix_semicolons(kept))
+            if any(_kept_for_others(s, own_use, before) for s in kept):
+                stmt = with_noqa(stmt, NOQA_F401)
             last_import = len(body)
         if carried:
             stmt = stmt.with_changes(leading_lines=carried + list(stmt.leading_lines))
@@ -218,7 +245,90 @@ def update_imports(module: cst.Module, runtime: Iterable[tuple[str, str]],
         return module.with_changes(body=body)
     if anchor is None:
         anchor = last_import + 1 if last_import is not None else _after_docstring(body)
+    if past_import_zone(body[:anchor]):
+        leading = additions[0].leading_lines
+        additions = additions_at(NOQA_E402)
+        additions[0] = additions[0].with_changes(leading_lines=leading)
     return module.with_changes(body=body[:anchor] + additions + body[anchor:])
+
+
+_DUNDER = re.compile(r"__\S+__\Z")
+
+
+def past_import_zone(statements: Sequence[cst.BaseStatement]) -> bool:
+    """Whether an import after ``statements`` is E402 as pycodestyle (flake8) reads it:
+    one of them is module code, anything but an import, the docstring (the first string
+    statement), a ``__dunder__ = ...`` assignment, or an ``if``/``try``/``with`` block
+    (pycodestyle lets imports be conditional). Ruff also lets ``sys.path`` and
+    ``os.environ`` changes pass; pycodestyle does not."""
+    seen_string = False
+    for stmt in statements:
+        if isinstance(stmt, (cst.If, cst.Try, cst.TryStar, cst.With)):
+            continue
+        if not isinstance(stmt, cst.SimpleStatementLine):
+            return True
+        for small in stmt.body:
+            if isinstance(small, (cst.Import, cst.ImportFrom)):
+                continue
+            if isinstance(small, cst.Expr) and isinstance(
+                    small.value, (cst.SimpleString, cst.ConcatenatedString)):
+                if seen_string:
+                    return True
+                seen_string = True
+                continue
+            if isinstance(small, (cst.Assign, cst.AnnAssign)) and all(
+                    isinstance(t, cst.Name) and _DUNDER.match(t.value) for t in (
+                        [t.target for t in small.targets] if isinstance(small, cst.Assign)
+                        else [small.target])):
+                continue
+            return True
+    return False
+
+
+def _kept_for_others(small: cst.BaseSmallStatement, own_use: set[str],
+                     used_before: set[str]) -> bool:
+    """Whether a kept legacy import holds a name this module used before the migration
+    and no longer uses: it stays only because other modules import it from this one."""
+    if isinstance(small, cst.ImportFrom):
+        if small.module is None or small.relative or isinstance(small.names, cst.ImportStar) \
+                or not is_legacy_module(dotted_name(small.module) or ""):
+            return False
+        aliases: Sequence[cst.ImportAlias] = small.names
+    elif isinstance(small, cst.Import):
+        aliases = [a for a in small.names if is_legacy_module(dotted_name(a.name) or "")]
+    else:
+        return False
+    return any(_local(a) in used_before and _local(a) not in own_use for a in aliases)
+
+
+def with_noqa(stmt: cst.SimpleStatementLine, noqa: str) -> cst.SimpleStatementLine:
+    """``stmt`` with ``noqa`` on its first line, after any comment there; unchanged when
+    that line already holds a ``noqa`` (or the statement's first line has no place for a
+    comment: a line continued by a backslash)."""
+    first = stmt.body[0]
+    lpar = getattr(first, "lpar", None)
+    if isinstance(first, cst.ImportFrom) and isinstance(lpar, cst.LeftParen) \
+            and isinstance(lpar.whitespace_after, cst.ParenthesizedWhitespace):
+        line = lpar.whitespace_after.first_line
+        marked = _marked(line, noqa)
+        return stmt if marked is line else stmt.with_changes(body=[first.with_changes(
+            lpar=lpar.with_changes(whitespace_after=lpar.whitespace_after.with_changes(
+                first_line=marked))), *stmt.body[1:]])
+    if "\n" in cst.Module(body=[]).code_for_node(stmt.with_changes(
+            leading_lines=(), trailing_whitespace=cst.TrailingWhitespace())).rstrip("\r\n"):
+        return stmt  # the statement's first line ends inside it
+    marked = _marked(stmt.trailing_whitespace, noqa)
+    return stmt if marked is stmt.trailing_whitespace else stmt.with_changes(
+        trailing_whitespace=marked)
+
+
+def _marked(line: cst.TrailingWhitespace, noqa: str) -> cst.TrailingWhitespace:
+    if line.comment is None:
+        return line.with_changes(whitespace=cst.SimpleWhitespace("  "),
+                                 comment=cst.Comment(noqa))
+    if "noqa" in line.comment.value.lower():
+        return line
+    return line.with_changes(comment=cst.Comment(f"{line.comment.value}  {noqa}"))
 
 
 def _all_imported(module: cst.Module) -> set[str]:

@@ -3,11 +3,14 @@
 Legacy (legacy-skiros2-api.md §3, §8)           EzSkiROS (docs/dsl.md)
 ``addParam("O", Element("skiros:P"), Required)``  ``O: skiros.P``
 ``addParam("S", 0.5, ParamTypes.Optional)``      ``S: OPTIONAL[float] = 0.5``
-``addParam("S", 0.5, 1, [], "m/s")``             ``S: OPTIONAL[float, DESC("m/s")] = 0.5``
+``addParam("S", 0.5, 1, [], "m/s")``             ``S: Annotated[OPTIONAL[float], DESC("m/s")]``
+                                                 ``= 0.5``
 ``addParam("S", float, 0, "m/s")``               ``S: float,  # m/s``  (quirk: "m/s" lands in
                                                  options; the text stays, as a comment)
-``addParam("C", Element(":Cam"), 2, [Lock])``    ``C: INFERRED[ELEMENT(":Cam"), Lock]``
-``addParam("On/Off", True, Required)``           ``On_Off: REQUIRED[bool, KEY("On/Off")] = True``
+``addParam("C", Element(":Cam"), 2, [Lock])``    ``C: Annotated[INFERRED, ELEMENT(":Cam"), Lock]``
+``addParam("On/Off", True, Required)``           ``On_Off: Annotated[bool, KEY("On/Off")] = True``
+
+Strings go in ``Annotated[...]``'s items, never inside ``KIND[...]`` (pyflakes F722, F821).
 """
 
 from __future__ import annotations
@@ -179,24 +182,49 @@ def annotation(op: ParamOp, python_name: str, ctx: EmitContext) -> tuple[str, st
 
     ``python_name`` is the name the signature gives it; when it is not the key itself
     (a key that is no identifier, or a key declared twice) a ``KEY(...)`` item says the key.
+
+    The items that hold a string (``DESC(...)``, ``KEY(...)``, a verbatim ``ELEMENT("...")``
+    type) go after the annotation in ``Annotated[...]`` (docs/dsl.md): pyflakes parses every
+    other string of an annotation as a forward reference (F722, F821). Where the module
+    binds ``Annotated`` itself, they stay inside the kind marker's brackets.
     """
-    extras: list[str] = []
-    if op.description:
-        extras.append(f"{ctx.use('DESC')}({op.description_code or ctx.quote(op.description)})")
-    if isinstance(op.value, ElementValue):
-        extras += [ctx.use(o) for o in op.options]
-    if python_name != op.key:
-        extras.append(f"{ctx.use('KEY')}({ctx.quote(op.key)})")
+    options = [ctx.use(o) for o in op.options] if isinstance(op.value, ElementValue) else []
+    desc = [f"{ctx.use('DESC')}({op.description_code or ctx.quote(op.description)})"] \
+        if op.description else []
+    key = [f"{ctx.use('KEY')}({ctx.quote(op.key)})"] if python_name != op.key else []
+    strings = desc + key
     marker = MARKERS[op.kind]
     if isinstance(op.value, OpaqueValue) and op.value.known is None:
-        if extras:
+        if options or strings:
             raise Unsupported(f"parameter {op.key!r} at line {op.line} has a default known "
                               "only at run time and a description, option or key escape")
         return ctx.use(marker), op.value.code
     type_text, default = _type_and_default(op, ctx)
-    if op.kind == "Required" and not extras:
+    verbatim = _verbatim_element(op, ctx)
+    if (strings or verbatim) and ctx.aliases.get("Annotated", "Annotated") == "Annotated":
+        if verbatim:  # ``INFERRED[...]`` needs a type first: the bare marker, then the items
+            head, items = ctx.use(marker), [type_text, *options, *strings]
+        else:
+            head, items = _kind_form(op.kind, marker, type_text, options, ctx), strings
+        return f"{ctx.use('Annotated')}[{', '.join([head, *items])}]", default
+    if op.kind == "Required" and not options and not strings:
         return type_text, default
-    return f"{ctx.use(marker)}[{', '.join([type_text, *extras])}]", default
+    return f"{ctx.use(marker)}[{', '.join([type_text, *desc, *options, *key])}]", default
+
+
+def _kind_form(kind: str, marker: str, type_text: str, options: list[str],
+               ctx: EmitContext) -> str:
+    """``skiros.C`` for a required parameter without options, else ``KIND[type, options]``."""
+    if kind == "Required" and not options:
+        return type_text
+    return f"{ctx.use(marker)}[{', '.join([type_text, *options])}]"
+
+
+def _verbatim_element(op: ParamOp, ctx: EmitContext) -> bool:
+    """Whether the parameter's type is written ``ELEMENT("...")`` (a string)."""
+    value = op.value
+    return isinstance(value, ElementValue) and value.type_string not in (None, "Unknown") \
+        and ctx.class_ref(value.type_string) is None
 
 
 def _type_and_default(op: ParamOp, ctx: EmitContext) -> tuple[str, str | None]:
