@@ -20,7 +20,8 @@ or a name), in the Python files that parse, outside the vendored SkiROS2 copies 
   ``createDescription``);
 - ``child-type-typo``, ``child-label-typo``: ``self.skill("Type", "label", ...)``;
 - ``specify-key-typo``, ``remap-key-typo``: the keys of the ``specify`` / ``remap`` dicts of
-  ``self.skill(...)``;
+  ``self.skill(...)`` (not the key of an identity remap, ``{"Camera": "Camera"}``, whose
+  typo SkiROS2 runs the same: ``HARMLESS_NOTE``);
 - ``processor-typo``: the processor class of ``setProcessor(P())`` / ``self.skill(P())``;
 - ``relation-domain``: the relation of a ``getRelationCond`` replaced with an object property
   of the bundled core ontology whose ``rdfs:domain`` no subclass of the subject's class
@@ -307,7 +308,10 @@ def call_sites(call: ast.Call, path: str, lines: tuple[int, int], cls: ast.Class
                                             ("specify-key-typo", 3, "specify")):
             mapping = argument(call, position, keyword)
             if isinstance(mapping, ast.Dict):
-                for key in mapping.keys:
+                for key, value in zip(mapping.keys, mapping.values, strict=True):
+                    if operator == "remap-key-typo" and key is not None \
+                            and string(key) is not None and string(key) == string(value):
+                        continue  # an identity remap: its typo is harmless (HARMLESS_NOTE)
                     yield from site(operator, key)
 
 
@@ -562,6 +566,11 @@ def judge(mutant: Mutant, status: str, findings: list[Finding], baseline: list[F
 # ---------------------------------------------------------------- report
 
 HARMLESS_NOTE = (
+    "Mutants considered harmless, not made: a typo of the key of an identity remap "
+    "(`remap={'Camera': 'Camera'}` -> `{'CCamera': 'Camera'}`): the remap did nothing "
+    "before (ParamHandler.remap pops and puts back the same key) and does nothing after "
+    "(the child declares no `CCamera`), and the child's `Camera` still reads the "
+    "blackboard's `Camera`, so SkiROS2 runs the tree the same. "
     "Operators considered harmless: none. A typo'd class, relation or property is stored "
     "verbatim and matches nothing in the world model (grounding fails or the condition "
     "never holds); a typo'd condition key names no parameter (the condition is never "

@@ -118,6 +118,20 @@ RULES: tuple[Rule, ...] = (
          ("implementation-unknown-key",),
          skiros2="ParamHandler.__getitem__ logs \"Param ... is not in the map\" and returns "
          "None, so the .value after it raises AttributeError when the line runs"),
+    Rule("EZ110", "no-set-description", "error",
+         "An implementation (a class deriving from SkillBase, PrimitiveBase or a lab base "
+         "of them) that no class derives from, whose createDescription never calls "
+         "setDescription: it keeps SkillCore's empty type and label, and the skill "
+         "manager cannot add it to the world model (SkiROS2 issue #109). Reported only "
+         "where createDescription is read in full (no super() call, no helper that might "
+         "set the description); info when the launch file's skill_list does not load it.",
+         "Call self.setDescription(TheDescription(), self.__class__.__name__) in "
+         "createDescription.",
+         ("no-set-description",),
+         skiros2="SkillManager.add_skill builds the skill's element from its empty type "
+         "(SkillCore._type \"\") and WorldModel.add_element cannot store it "
+         "(_element2statements: lightstring2uri(\"\") is None), so the skill is not "
+         "loaded"),
     # EZ2xx: vocabulary and ontology
     Rule("EZ201", "domain", "error",
          "The subject's class is outside the relation's or property's domain.",
@@ -354,6 +368,20 @@ RULES: tuple[Rule, ...] = (
          ("specify-modified-key",),
          skiros2="SkillWrapper.specifyParamDefault logs \"No param ... found\" and drops the "
          "value"),
+    Rule("EZ320", "required-unset", "error",
+         "A child's parameter that must have a value (not Optional, not an Element, "
+         "declared with a type instead of a value: addParam(\"Relation\", str, "
+         "ParamTypes.Required)) that nothing in the tree sets: no parameter of the "
+         "compound skill, no remap onto it, no specify, no other node that writes it on the "
+         "blackboard, nor any known tree around the compound (SkiROS2 issue #91). Reported "
+         "only where the whole tree and the child's description are known; info when a "
+         "tree of the run could not be read (it may hold the compound and set the key).",
+         "Give the child the value (specify={\"Relation\": \"skiros:contain\"}), or "
+         "declare the key in the compound's description so that its caller sets it.",
+         ("required-unset",),
+         skiros2="NodeExecutor._autoParametrizeBB (skill_utils.py) raises \"Missing required "
+         "parameter(s)\" when the child is grounded and the compound skill fails (develop, "
+         "ros2 branches); master's leaves the value None and the child runs without it"),
     Rule("EZ315", "specify-parameter-object", "error",
          "A specify value that is the parameter object self.params[\"X\"] rather than "
          "its value: SkiROS2 logs an error and leaves the child's parameter unset.",
@@ -484,14 +512,22 @@ RULES: tuple[Rule, ...] = (
          ("unloadable",),
          skiros2="the module raises when the skill manager imports it (SkillManager.load_skills "
          "through PluginLoader), so none of its skills is loaded"),
-    Rule("EZ905", "unreadable", "info",
+    Rule("EZ905", "unreadable", "error",
          "The file could not be parsed or decoded (Python 2 syntax, an empty or truncated "
          "file), so it was skipped and nothing in it was checked; the class names in it "
-         "still count as defined for compound skills. Info: what the tool cannot read says "
-         "nothing of the robot (a Python 2 repository runs on a Python 2 ROS), and "
-         "`rewrite` reports the same file as not processed.",
+         "still count as defined for compound skills. An error in a module of a skill "
+         "library the skill manager imports (a Python package under a ROS package's src/, "
+         "of an ament_python package, or named in the launch file's libraries_list). Info "
+         "elsewhere (scripts/, a loose module: the skill manager does not import it), and "
+         "for Python 2 syntax where nothing says the package runs on Python 3 (a Python 2 "
+         "ROS imports it). `rewrite` reports the same file as not processed.",
          "Fix the syntax or encoding error (port Python 2 code to Python 3).",
-         ("unreadable", "syntax-error")),
+         ("unreadable", "syntax-error"),
+         skiros2="PluginLoader.__import_plugins imports every module of the library and "
+         "catches only ImportError: the SyntaxError stops SkillManager.load_skills and the "
+         "skill manager does not start (in a sub-package's __init__.py, "
+         "pkgutil.walk_packages ignores it and none of the sub-package's skills is "
+         "loaded)"),
     Rule("EZ906", "lossy-rewrite", "error",
          "The migrated text would have changed or lost a line outside the migrated code (a "
          "comment, a blank line, a helper), so the file was not written: outside the "

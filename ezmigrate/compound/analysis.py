@@ -31,12 +31,14 @@ from ..verify.pool import PoolConfig
 from ..verify.protocol import LoadOutcome
 from .repository import READ_WHEN, Recovered, RepositoryScan, description_of
 from .static import (
+    IMPLEMENTATION_BASES,
     NeedsTrace,
     class_bases,
     expand_findings,
     implementations,
     modified_params,
     read_compounds,
+    undescribed,
 )
 from .tracing import trace_all, trace_job
 
@@ -68,6 +70,9 @@ class Trees:
     """``(class, base)`` for every top-level class deriving from a named class."""
     modified: list[tuple[str, str, str | None, bool, str]] = field(default_factory=list)
     """Parameters implementations add in ``modifyDescription`` (``static.modified_params``)."""
+    undescribed: list[tuple[str, str, int, tuple[str, ...]]] = field(default_factory=list)
+    """``(path, class, line, bases)`` of classes whose ``createDescription`` never calls
+    ``setDescription`` (``static.undescribed``)."""
     seen: set[str] = field(default_factory=set)
     syntax: dict[tuple[str, str], list[tuple[str, int, str]]] = field(default_factory=dict)
     """``(path, class)`` -> mistakes its ``self.skill`` calls show in the syntax alone
@@ -125,6 +130,7 @@ class Trees:
             self.syntax[(path, cls)] = list(mistakes)
         self.models += [(path, found) for found in facts.found
                         if not isinstance(found, NeedsTrace)]
+        self.undescribed += [(path, *found) for found in facts.undescribed]
         pending = facts.to_trace()
         if pending:
             self.traced[path] = (candidate, pending)
@@ -142,6 +148,9 @@ class TreeFacts:
     modified: tuple[tuple[str, str, str | None, bool, str], ...] = ()
     syntax: tuple[tuple[str, tuple[tuple[str, int, str], ...]], ...] = ()
     found: tuple[CompoundModel | Unanalysable | NeedsTrace, ...] = ()
+    undescribed: tuple[tuple[str, int, tuple[str, ...]], ...] = ()
+    """Classes whose ``createDescription`` never calls ``setDescription``
+    (``static.undescribed``)."""
 
     def to_trace(self) -> list[NeedsTrace]:
         """The classes of the file whose trees only tracing reads."""
@@ -153,7 +162,7 @@ def tree_facts(tree: ast.Module, path: str) -> TreeFacts:
     return TreeFacts(tuple(implementations(tree)), tuple(class_bases(tree)),
                      tuple(modified_params(tree)),
                      tuple((cls, tuple(m)) for cls, m in expand_findings(tree).items()),
-                     tuple(read_compounds(tree, path)))
+                     tuple(read_compounds(tree, path)), tuple(undescribed(tree)))
 
 
 def _read(items: Iterable[tuple[Candidate, bytes]], trees: Trees | None = None) -> Trees:
@@ -251,13 +260,18 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
     index.launched = read.launched if read is not None else None
     index.launched_libraries = read.libraries if read is not None else frozenset()
     index.unknown_compounds |= around.untraced
+    index.unknown_labels |= around.untraced_labels
     for compound in around.compounds:
         index.add_compound(compound)
+    pending = {n.implementation: n.label for found in (library, trees)
+               for _, needs in found.traced.values() for n in needs}
     for _, model in [*library.models, *trees.models]:
         if isinstance(model, CompoundModel):
             index.add_compound(model)
         else:
             index.unknown_compounds.add(_described_type(model, trees, library))
+            index.unknown_labels |= {model.implementation,
+                                     pending.get(model.implementation, model.implementation)}
     for candidate, data in items:
         if MARKER in data:
             flavour, package = ros_package_of(candidate.path, data)
@@ -276,8 +290,46 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
                          for kind, line, message in trees.syntax.get(
                              (path, model.implementation), ())
                          if (kind, line) not in seen]
+    run.findings += _undescribed(trees, [*library.bases, *around.bases, *trees.bases],
+                                 index.launched)
     run.findings = once_per_project(run.findings)
     return run
+
+
+def _undescribed(trees: Trees, bases: list[tuple[str, str]],
+                 launched: frozenset[str] | None) -> list[tuple[str, CompoundFinding]]:
+    """An implementation (its bases reach SkiROS2's) that no class derives from, whose
+    ``createDescription`` never calls ``setDescription``: its type stays SkillCore's
+    empty one, and the skill manager cannot add it to the world model (issue #109). Info
+    when the launch file's ``skill_list`` does not load it."""
+    parents: dict[str, set[str]] = {}
+    for cls, base in bases:
+        parents.setdefault(cls, set()).add(base)
+    derived = {base for _, base in bases}
+
+    def implementation(name: str, seen: frozenset[str] = frozenset()) -> bool:
+        if name in IMPLEMENTATION_BASES:
+            return True
+        return name not in seen and any(implementation(b, seen | {name})
+                                        for b in parents.get(name, ()))
+
+    found = []
+    for path, cls, line, own in trees.undescribed:
+        if cls in derived or cls in IMPLEMENTATION_BASES \
+                or not any(implementation(b, frozenset({cls})) for b in own):
+            continue
+        unloaded = launched is not None and cls not in launched
+        found.append((path, CompoundFinding(
+            "no-set-description", line,
+            f"{cls}'s createDescription never calls self.setDescription(Description(), "
+            "label): the implementation keeps SkillCore's empty type and label, so when "
+            "SkillManager.add_skill adds it, its world-model element has the type \"\" "
+            "and WorldModel.add_element cannot store it (SkiROS2 issue #109); the skill is "
+            "not loaded" + (" (info: the launch file's skill_list does not load it)"
+                            if unloaded else ""),
+            cls, "", "Call self.setDescription(TheDescription(), self.__class__.__name__) in "
+            "createDescription.", "info" if unloaded else None)))
+    return found
 
 
 def once_per_project(findings: list[tuple[str, CompoundFinding]]

@@ -62,6 +62,8 @@ class RepositoryScan:
     compounds: list[CompoundModel] = field(default_factory=list)
     untraced: set[str] = field(default_factory=set)
     """Description types whose compound implementation needs tracing (not done here)."""
+    untraced_labels: set[str] = field(default_factory=set)
+    """Their implementations' labels and class names."""
     unread: list[str] = field(default_factory=list)
     """Files whose class names not even ``tokenize`` could recover."""
 
@@ -73,7 +75,9 @@ def description_of(name: str, model: dict[str, Any] | None, origin: str, path: s
     if model is None:
         return DescriptionInfo(name, {}, origin, path, line, complete=False)
     params = SkillModel.from_json(model).params
-    return DescriptionInfo(name, {p.key: p.element_type for p in params}, origin, path, line)
+    return DescriptionInfo(name, {p.key: p.element_type for p in params}, origin, path, line,
+                           unset=frozenset(p.key for p in params if p.kind == "Required"
+                                           and p.data_type != "Element" and not p.values))
 
 
 Recovered = list[tuple[str, int, str | None]] | None
@@ -149,6 +153,7 @@ def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan,
     for found in read_compounds(tree, path):
         if isinstance(found, NeedsTrace):
             scan.untraced.add(found.description or found.implementation)
+            scan.untraced_labels |= {found.label, found.implementation}
         else:
             scan.compounds.append(found)
 

@@ -17,6 +17,7 @@ import ast
 import builtins
 from collections.abc import Iterator
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from ezskiros_runtime.compound.checks import ELSEWHERE, UPSTREAM_PROCESSORS
@@ -73,7 +74,7 @@ def compound_classes(tree: ast.Module) -> list[ast.ClassDef]:
 def read_compounds(tree: ast.Module, path: str) -> list[CompoundModel | NeedsTrace]:
     """Every compound class of a module, read statically or marked for tracing."""
     found: list[CompoundModel | NeedsTrace] = []
-    bound = module_names(tree)
+    bound = module_names(tree, path)
     for cls in compound_classes(tree):
         expand = [m for m in cls.body if isinstance(m, ast.FunctionDef)
                   and m.name == "expand"][-1]
@@ -90,27 +91,55 @@ def read_compounds(tree: ast.Module, path: str) -> list[CompoundModel | NeedsTra
     return found
 
 
-KNOWN_STAR: dict[str, frozenset[str]] = dict.fromkeys(
-    ("skiros2_skill.core.skill", "skiros2_skill.core.processors"),
-    PROCESSORS | frozenset({"SkillBase", "SkillCore", "SkillDescription", "SkillWrapper",
-                            "ParamTypes", "ParamOptions", "Element", "State", "Params"}))
-"""What ``from M import *`` binds for SkiROS2's modules a tree's processors come from,
-as far as a processor's name goes: every processor of every branch and fork
-(``compound.checks``), so that a misspelt one is still found undefined."""
+KNOWN_STAR: dict[str, frozenset[str]] = {
+    **dict.fromkeys(
+        ("skiros2_skill.core.skill", "skiros2_skill.core.processors"),
+        PROCESSORS | frozenset({"SkillBase", "SkillCore", "SkillDescription", "SkillWrapper",
+                                "ParamTypes", "ParamOptions", "Element", "State", "Params"})),
+    # SkiROS2's other modules labs star-import (master's top-level public names): they
+    # bind no processor, so a misspelt processor beside them is still undefined
+    "skiros2_common.core.primitive": frozenset({
+        "Element", "PrimitiveBase", "SkillCore", "State", "datetime", "log"}),
+    "skiros2_common.core.abstract_skill": frozenset({
+        "Element", "Enum", "Event", "IdGen", "ParamOptions", "SkillCore", "SkillDescription",
+        "State", "TimeKeeper", "cond", "copy", "deepcopy", "log", "params"}),
+    "skiros2_common.core.params": frozenset({
+        "Element", "Enum", "Param", "ParamHandler", "ParamTypes", "Property", "copy",
+        "datetime", "deepcopy", "log", "timedelta"}),
+    "skiros2_common.core.world_element": frozenset({
+        "DiscreteReasoner", "Element", "PluginLoader", "Property", "basestring", "datetime",
+        "ispy2unicode", "log", "rospy"}),
+    "skiros2_common.core.conditions": frozenset({
+        "AbstractConditionRelation", "ConditionBase", "ConditionGenerate",
+        "ConditionHasProperty", "ConditionIsSpecified", "ConditionOnType", "ConditionOr",
+        "ConditionProperty", "ConditionRelation", "Element", "absolute_import", "deepcopy",
+        "operator", "operators", "params"}),
+}
+"""What ``from M import *`` binds for SkiROS2's modules, as far as a processor's name
+goes: for the modules a tree's processors come from, every processor of every branch and
+fork (``compound.checks``), so that a misspelt one is still found undefined; for the
+others, their public top-level names (none a processor)."""
 
 
-def module_names(tree: ast.Module) -> frozenset[str] | None:
+def module_names(tree: ast.Module, path: str | None = None,
+                 seen: frozenset[str] = frozenset()) -> frozenset[str] | None:
     """The names a module binds at its top level (imports, classes, functions, assignments,
     also inside top-level ``if``/``try``), and the builtins; None when a star import may
-    bind any name."""
+    bind any name. ``path``: the module's file, where a star import of a module of the
+    repository beside it (``from primitives import *``, the lab's own) is read for what it
+    exports."""
     names: set[str] = set(dir(builtins))
     todo: list[ast.stmt] = list(tree.body)
     while todo:
         node = todo.pop()
         if isinstance(node, ast.ImportFrom) and any(a.name == "*" for a in node.names):
-            if node.level or node.module not in KNOWN_STAR:
+            if not node.level and node.module in KNOWN_STAR:
+                names |= KNOWN_STAR[node.module]
+                continue
+            exported = _star_names(node, path, seen)
+            if exported is None:
                 return None  # any name may come from it
-            names |= KNOWN_STAR[node.module]
+            names |= exported
             continue
         if isinstance(node, (ast.Import, ast.ImportFrom)):
             names.update((a.asname or a.name).split(".")[0] for a in node.names)
@@ -124,6 +153,45 @@ def module_names(tree: ast.Module) -> frozenset[str] | None:
         else:
             names |= _stored(node)
     return frozenset(names)
+
+
+def _star_names(node: ast.ImportFrom, path: str | None, seen: frozenset[str]
+                ) -> frozenset[str] | None:
+    """The public names ``from M import *`` binds, for a module ``M`` found as a file of the
+    repository near ``path`` (beside it, or as a package a few folders up); None when it is
+    not found or cannot be read (then any name may come from it)."""
+    if path is None or node.module is None:
+        return None
+    parts = node.module.split(".")
+    start = Path(path).parent
+    bases = [start.parents[node.level - 2] if node.level > 1 else start] if node.level \
+        else [start, *list(start.parents)[:4]]
+    for base in bases:
+        for candidate in (base.joinpath(*parts).with_suffix(".py"),
+                          base.joinpath(*parts, "__init__.py")):
+            if candidate.is_file():
+                return _exports(str(candidate), seen | {path})
+    return None
+
+
+def _exports(path: str, seen: frozenset[str]) -> frozenset[str] | None:
+    """The names ``from <module at path> import *`` binds (its ``__all__`` when literal)."""
+    if path in seen or len(seen) > 8:
+        return None
+    try:
+        tree = ast.parse(Path(path).read_bytes())
+    except (OSError, SyntaxError, ValueError, MemoryError, RecursionError):
+        return None
+    for statement in tree.body:
+        if isinstance(statement, ast.Assign) and any(
+                isinstance(t, ast.Name) and t.id == "__all__" for t in statement.targets):
+            try:
+                return frozenset(str(n) for n in ast.literal_eval(statement.value))
+            except (ValueError, TypeError, SyntaxError):
+                return None
+    names = module_names(tree, path, seen)
+    return None if names is None else frozenset(
+        n for n in names - set(dir(builtins)) if not n.startswith("_"))
 
 
 def _stored(node: ast.AST) -> set[str]:
@@ -221,6 +289,76 @@ def _element_type(call: ast.Call) -> str | None:
             and isinstance(value.args[0].value, str):
         return value.args[0].value
     return None
+
+
+IMPLEMENTATION_BASES = frozenset({"SkillBase", "PrimitiveBase", "PrimitiveThreadBase",
+                                  "PrimitiveActionClient"})
+"""SkiROS2's bases of skill implementations (``skiros2_skill.core.skill``,
+``skiros2_common.core.primitive``, ``skiros2_std_skills``): a class deriving from one is
+a plugin the skill manager may instantiate (``SkillInstanciator.add_instance``)."""
+DESCRIBING_CALLS = frozenset({
+    "addParam", "addPreCondition", "addHoldCondition", "addPostCondition",
+    "getRelationCond", "getAbstractRelationCond", "getPropCond", "getHasPropCond",
+    "getIsSpecifiedCond", "getGenerateCond", "getOnTypeCond", "getParamCond"})
+"""``self`` methods a ``createDescription`` may call that never set the description."""
+
+
+def undescribed(tree: ast.Module) -> list[tuple[str, int, tuple[str, ...]]]:
+    """``(class, line, bases)`` of the module's top-level classes that derive from a named
+    class and define a ``createDescription`` that never calls ``setDescription``, read in
+    full: no ``raise`` (an abstract base), no ``super()``, no call of a helper that might
+    call it (a ``self`` method other than SkiROS2's description builders, a function of
+    the module, any call given ``self``), no assignment to an attribute. Whether the class
+    is an implementation (its bases reach SkiROS2's, ``IMPLEMENTATION_BASES``) and a leaf
+    is for the caller, which knows every class of the repository."""
+    found = []
+    for node in tree.body:
+        if not isinstance(node, ast.ClassDef):
+            continue
+        bases = tuple(name.rpartition(".")[2] for name in map(ast_dotted_name, node.bases)
+                      if name is not None)
+        creates = [m for m in node.body if isinstance(m, ast.FunctionDef)
+                   and m.name == "createDescription"]
+        if bases and creates and _never_describes(creates[-1]):
+            found.append((node.name, node.lineno, bases))
+    return found
+
+
+def _never_describes(method: ast.FunctionDef) -> bool:
+    """Whether ``createDescription`` certainly never calls ``setDescription`` (see
+    ``undescribed``)."""
+    if not method.args.args:
+        return False
+    me = method.args.args[0].arg
+    for node in ast.walk(method):
+        if isinstance(node, (ast.Raise, ast.Global, ast.Nonlocal, ast.Lambda)) or (
+                isinstance(node, ast.Attribute) and isinstance(node.ctx, (ast.Store, ast.Del))):
+            return False
+        if isinstance(node, ast.Name) and node.id in ("super", "setattr", "getattr", "exec",
+                                                        "eval", "__class__"):
+            return False
+        if isinstance(node, ast.Attribute) and node.attr in ("setDescription", "__class__"):
+            return False
+        if not isinstance(node, ast.Call):
+            continue
+        if any(isinstance(a, ast.Name) and a.id == me
+               for a in (*node.args, *(k.value for k in node.keywords))):
+            return False
+        func = node.func
+        if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) \
+                and func.value.id == me and func.attr not in DESCRIBING_CALLS:
+            return False
+        if isinstance(func, ast.Name) and func.id not in _HARMLESS \
+                and not func.id.startswith("Condition"):
+            return False
+        if not isinstance(func, (ast.Name, ast.Attribute)):
+            return False
+    return True
+
+
+_HARMLESS = frozenset({"Element", "print", "str", "int", "float", "bool", "list", "dict",
+                       "tuple", "set", "len", "range", "repr", "format"})
+"""Functions a ``createDescription`` may call that cannot set the description."""
 
 
 def implementation_classes(tree: ast.Module) -> set[str]:

@@ -8,7 +8,8 @@ file from their syntax, with the runtime's checks and no code of the file run, `
 holds the checks only legacy code needs,
 `robot_vocabulary` and `world_model` the checks against the lab's ontology, scenes and
 launch files (`scene_search` finds the scenes), `scene_diagram` draws a scene for the
-report, `diagnostic` is one line of output and `select` applies
+report, `skill_library` says whether a file is in a package the skill manager imports
+(how bad a syntax error in it is), `diagnostic` is one line of output and `select` applies
 ``--select``/``--ignore`` and suppression comments. May import `codemod`, `verify`,
 `report` and `files`, and the runtime.
 """

@@ -23,6 +23,7 @@ from ezskiros_runtime.world.grounding import can_start
 from ezskiros_runtime.world.postconditions import (
     RelationUse,
     double_places,
+    past_typos,
     uses_of,
 )
 from ezskiros_runtime.world.scene import Scene, SceneError, read_scene
@@ -148,6 +149,7 @@ def legacy_double_places(path: str, skill: str, facts: StaticDescription,
                         str(c.label or ""))
             for which, c in facts.conditions
             if c.kind == "relation" and c.vocabulary and c.subject and c.object]
+    uses = past_typos(uses, (p.key for p in facts.params))
     return [finding("double-place", path, d.second.line, d.message(), skill, d.fix("legacy"))
             for d in double_places(uses, entries, index)]
 
@@ -161,7 +163,8 @@ def ezskiros_double_places(path: str, source: str, models: Iterable[SkillModel],
     lines: dict[str, list[tuple[int, str]]] | None = None
     found = []
     for model in models:
-        for d in double_places(uses_of(model), entries, index):
+        for d in double_places(past_typos(uses_of(model), (p.key for p in model.params)),
+                               entries, index):
             if lines is None:
                 lines = _post_lines(source)
             line = _line_of(lines.get(model.name, []), d.second) or model.line or 0

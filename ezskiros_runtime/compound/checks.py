@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import difflib
 from collections import Counter
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, Generic, TypeVar
@@ -200,7 +200,7 @@ class _Walks(Generic[T]):
         """The walk below ``node`` (whose type is ``child``) under the types ``seen``."""
         if child.name in seen or len(seen) > _MAX_DEPTH or not child.complete:
             return _Expansion(self.stopped, frozenset({child.name}), 0)
-        key = (id(node.children) if node.children else 0, child.name)
+        key = (id(node.children) if node.children else 0, f"{child.name}\0{node.label}")
         fresh = self.fresh.get(key)
         if fresh is None and self._may_start(key):
             fresh = self.fresh[key] = self._run(key, node, child, frozenset())
@@ -279,6 +279,8 @@ class _Checker:
         self.reaches: _Walks[tuple[frozenset[str], Mapping[str, str]]] = _Walks(
             self._reach_walk, (frozenset(), NOTHING_TAKEN))
         self.writes: _Writes | None = None
+        self.remapped_below: set[int] | None = None
+        """Nodes some node above them in the tree remaps for (``_inherits_remap``)."""
         self.hints: dict[str, str | None] = {}
         self.undefined = frozenset(n.subject for n, _ in self.nodes if isinstance(n, CallProblem)
                                    and n.kind == "processor-undefined")
@@ -382,7 +384,7 @@ class _Checker:
             return
         renamed = self._remaps(node, child)
         self._specify(node, child, renamed)
-        self._dangling(node)
+        self._dangling(node, self._unset(node, child, renamed))
 
     def _label(self, node: SkillNode, child: DescriptionInfo) -> None:
         if not node.label:
@@ -482,7 +484,122 @@ class _Checker:
                          f"Did you mean {renamed[key]!r}?" if key in renamed
                          else _did_you_mean(key, keys - specified))
 
-    def _dangling(self, node: SkillNode) -> None:
+    def _unset(self, node: SkillNode, child: DescriptionInfo,
+               renamed: dict[str, str]) -> set[str]:
+        """Required non-Element parameters of the child that nothing gives a value
+        (``required-unset``): not its declaration (a type, not a value), not a ``specify``,
+        not the compound's own parameters nor anything another node of the tree writes on
+        the blackboard, nor the trees around the compound. Judged only where all of that
+        is known; returns the (renamed) keys reported."""
+        if not child.unset or self.parent is None or not self.parent.complete \
+                or child.name in self.index.modified_by or child.name in self.index.self_added:
+            return set()
+        declared = child.declared()
+        if any(k not in declared for k, _ in node.remap) \
+                or any(k not in {renamed.get(d, d) for d in declared} for k, _ in node.specify):
+            return set()  # a remap or specify key the child lacks: reported as such already
+        if self._inherits_remap(node):
+            return set()
+        writes = self._tree_writes()
+        if not writes.complete_without(node):
+            return set()
+        specified = {k for k, _ in node.specify}
+        own = self.parent.declared() | self.index.self_added.get(self.parent.name, set())
+        missing = sorted(name for name in (renamed.get(k, k) for k in child.unset)
+                         if name != COMPUTED and name not in specified and name not in own
+                         and not writes.by_others(node, name))
+        if not missing:
+            return set()
+        around = self._context(self.parent.name)
+        if around is not None:
+            missing = [k for k in missing if k not in around]
+        if not missing:
+            return set()
+        unsure = self._unread_trees()
+        why = ("" if around is not None and not unsure else
+               " (info: " + (unsure if unsure else "a tree around "
+                             f"{self.parent.name} is not known in full") +
+               ", and may set it)")
+        names = ", ".join(repr(k) for k in missing)
+        self.add("required-unset", node.line,
+                 f"{child.name}'s required parameter(s) {names} have no default value and "
+                 f"nothing in the tree sets them (no parameter of {self.parent.name}, no "
+                 "remap onto them, no specify, no other node that writes them): "
+                 "NodeExecutor._autoParametrizeBB raises \"Missing required parameter(s): "
+                 f"{missing}\" when the child is grounded (SkiROS2 issue #91; on master "
+                 f"the child runs with the value None){why}", node.type,
+                 f"Give it a value: specify={{{missing[0]!r}: ...}}, or declare "
+                 f"{missing[0]!r} in {self.parent.name} so that its caller sets it.",
+                 None if around is not None and not unsure else "info")
+        return set(missing)
+
+    def _inherits_remap(self, node: SkillNode) -> bool:
+        """Whether a node of the tree above ``node`` remaps (SkillInterface.addChild copies
+        its remaps onto the node: a key may be renamed on the way down)."""
+        if self.remapped_below is None:
+            below: set[int] = set()
+
+            def visit(nodes: Iterable[Node | CallProblem], remapped: bool) -> None:
+                for inner in nodes:
+                    if isinstance(inner, CallProblem):
+                        continue
+                    if remapped:
+                        below.add(id(inner))
+                    visit(inner.children, remapped or bool(inner.remap))
+
+            visit(self.model.children, False)
+            self.remapped_below = below
+        return id(node) in self.remapped_below
+
+    def _unread_trees(self) -> str:
+        """Why a tree of the repository that may hold this compound is not known (""
+        when every tree is)."""
+        if self.index.unknown_compounds:
+            return (f"{len(self.index.unknown_compounds)} compound tree(s) of the run "
+                    "could not be read")
+        if any(m.gaps for models in self.index.compounds.values() for m in models):
+            return "a compound tree of the run is read only in part"
+        return ""
+
+    def _context(self, description: str) -> frozenset[str] | None:
+        """The blackboard keys the known trees holding a compound of ``description`` may
+        write (their compounds' parameters, every key their nodes declare or remap onto,
+        and so on up); None when one of them is not known in full, or passes a remap down
+        to it. Kept on the index: the answer is the same for every tree of the run."""
+        memo = self.index.context_writes
+        if description in memo:
+            return memo[description]
+        memo[description] = None  # a cycle of trees: not known
+        keys: set[str] = set()
+        for models in list(self.index.compounds.values()):
+            for model in models:
+                if model is self.model:
+                    continue
+                uses = [n for n, _ in model.walk() if isinstance(n, SkillNode)
+                        and any(d.name == description for d in self.view.resolve(n.type)[0])]
+                if not uses:
+                    continue
+                outer = self.index.descriptions.get(model.description or "")
+                if model.gaps or outer is None or not outer.complete:
+                    return None
+                checker = _Checker(model, self.index, None)
+                if any(n.remap or checker._inherits_remap(n) for n in uses):
+                    return None
+                used = {id(n) for n in uses}
+                for other, _ in model.walk():  # what the other nodes write (not this tree)
+                    if isinstance(other, SkillNode) and id(other) not in used:
+                        share, whole = checker._share(other)
+                        if not whole:
+                            return None
+                        keys |= share
+                above = self._context(outer.name)
+                if above is None:
+                    return None
+                keys |= outer.declared() | above
+        memo[description] = frozenset(keys)
+        return memo[description]
+
+    def _dangling(self, node: SkillNode, reported: Collection[str] = ()) -> None:
         if not node.remap or self.parent is None or not self.parent.complete:
             return
         writes = self._tree_writes()
@@ -491,7 +608,8 @@ class _Checker:
         for key, target in node.remap:
             if target == COMPUTED:
                 continue
-            if target not in self.parent.declared() and not writes.by_others(node, target):
+            if target not in self.parent.declared() and not writes.by_others(node, target) \
+                    and target not in reported:
                 close = difflib.get_close_matches(target, sorted(self.parent.declared()), 1, 0.6)
                 self.add("remap-dangling", node.line,
                          f"remap {key!r} -> {target!r}: no parameter of "
@@ -537,11 +655,33 @@ class _Checker:
         trail = _Trail(child.name)
         keys: set[str] = set()
         complete = self._below(node.children, keys, seen, trail)
-        if child.name in self.index.unknown_compounds:
+        trees, unknown = self._trees_of(child.name, node.label)
+        if unknown:
             complete = False
-        for tree in self.index.compounds.get(child.name, ()):
+        for tree in trees:
             complete &= self._below(tree.children, keys, seen, trail)
         return trail.done((frozenset(keys), complete))
+
+    def _trees_of(self, description: str, label: str) -> tuple[list[CompoundModel], bool]:
+        """The compound trees a node of ``description`` labelled ``label`` may expand, and
+        whether one of them is not known. A label picks the implementation
+        (SkillInstanciator.assign_instance takes the instance of that label): a label of a
+        primitive the run knows has no tree below it, even where a compound implementation
+        of the same type contains that type again. An empty or unknown label may be any."""
+        trees = self.index.compounds.get(description, [])
+        unknown = description in self.index.unknown_compounds
+        if not label or self.index.implementations.get(label) != description:
+            return trees, unknown
+        return ([t for t in trees if label in (t.label, t.implementation)],
+                unknown and label in self.index.unknown_labels)
+
+    def _leaf(self, node: SkillNode, child: DescriptionInfo) -> bool:
+        """Whether nothing is below ``node``: no children of its own, and its label picks
+        an implementation with no tree (a primitive), even of a type whose compound
+        implementation contains the type again (``jp_move_arm`` running
+        ``JPMoveArm`` labelled ``jp_primitive_joint``)."""
+        return not node.children and bool(node.label) and child.complete \
+            and self._trees_of(child.name, node.label) == ([], False)
 
     def _below(self, nodes: Iterable[Node | CallProblem], keys: set[str],
                seen: frozenset[str], trail: _Trail) -> bool:
@@ -557,6 +697,8 @@ class _Checker:
                 complete = False
                 continue
             keys.update(child.declared())
+            if self._leaf(node, child):
+                continue
             below = self.keys.below(node, child, seen)
             trail.add(below)
             keys |= below.value[0]
@@ -573,7 +715,7 @@ class _Checker:
         reached: set[str] = set()
         taken: dict[str, str] = {}
         nodes: list[Node | CallProblem] = list(node.children)
-        for tree in self.index.compounds.get(child.name, ()):
+        for tree in self._trees_of(child.name, node.label)[0]:
             nodes += tree.children
         for below in nodes:
             self._reach_node(below, reached, taken, seen, trail)
@@ -592,7 +734,8 @@ class _Checker:
             if child is None:
                 return
             keys = child.declared()
-            below = self.reaches.below(node, child, seen)
+            below = self.reaches.below(node, child, seen) if not self._leaf(node, child) \
+                else _Expansion((frozenset(), NOTHING_TAKEN), frozenset(), 0)
             trail.add(below)
             deeper, deeper_taken = below.value
             keys |= deeper

@@ -65,6 +65,15 @@ class DescriptionInfo:
     complete: bool = True
     """False for a description that exists but whose parameters could not be read (one
     ``rewrite`` keeps as legacy): its type resolves, its keys are not judged."""
+    unset: frozenset[str] = frozenset()
+    """Keys that must be given a value before the skill runs: Required parameters that
+    are not Elements and are declared with a type instead of a value
+    (``addParam("Relation", str, ParamTypes.Required)``). SkiROS2's
+    ``NodeExecutor._autoParametrizeBB`` raises "Missing required parameter(s)" for any of
+    them still without a value when the skill is grounded (issue #91; develop and ros2,
+    master leaves them None). Inferred ones are left out: it raises for them too on those
+    branches, but master does not, and labs declare outputs that way
+    (``addParam("EndEffectorForce", float, ParamTypes.Inferred)``, set by the skill)."""
 
     def declared(self) -> set[str]:
         """Declared keys, the automatic ``Robot`` included."""
@@ -76,21 +85,23 @@ class DescriptionInfo:
         return self.params.get(key)
 
 
-def _std(name: str, params: dict[str, str | None]) -> DescriptionInfo:
-    return DescriptionInfo(name, params, "skiros2_std_lib")
+def _std(name: str, params: dict[str, str | None], *unset: str) -> DescriptionInfo:
+    return DescriptionInfo(name, params, "skiros2_std_lib", unset=frozenset(unset))
 
 
 STANDARD_LIBRARY: tuple[DescriptionInfo, ...] = (
     _std("Wait", {"Duration": None}),
     _std("WmSetRelation", {"Src": "sumo:Object", "Relation": None, "Dst": "sumo:Object",
-                           "RelationState": None}),
-    _std("WmSetProperties", {"Src": "sumo:Object", "Properties": None}),
+                           "RelationState": None}, "Relation"),
+    _std("WmSetProperties", {"Src": "sumo:Object", "Properties": None}, "Properties"),
     _std("WmMoveObject", {"StartLocation": "sumo:Object", "TargetLocation": "sumo:Object",
                           "Object": "sumo:Object", "Relation": None}),
-    _std("Counter", {"CountTarget": None}),
-    _std("TaskPlan", {"Goal": None}),
+    _std("Counter", {"CountTarget": None}, "CountTarget"),
+    _std("TaskPlan", {"Goal": None}, "Goal"),
 )
-"""``skiros2_std_lib``'s descriptions (master), from legacy-compound-skills.md §3."""
+"""``skiros2_std_lib``'s descriptions (master), from legacy-compound-skills.md §3;
+``unset``: the parameters declared with a type, not a value (``addParam("Relation", str,
+ParamTypes.Required)`` in ``utility_primitives.py``, ``Goal`` in ``task_planner.py``)."""
 
 STANDARD_IMPLEMENTATIONS: dict[str, str] = {
     "wait": "Wait", "wm_set_relation": "WmSetRelation", "wm_set_properties": "WmSetProperties",
@@ -101,7 +112,7 @@ STANDARD_IMPLEMENTATIONS: dict[str, str] = {
 STANDARD_LIBRARY_ROS2: dict[str, DescriptionInfo] = {
     "WmSetRelation": _std("WmSetRelation", {
         "Src": "sumo:Object", "Relation": None, "Dst": "sumo:Object", "RelationState": None,
-        "OldDstToRemove": "sumo:Object", "OldSrcToRemove": "sumo:Object"}),
+        "OldDstToRemove": "sumo:Object", "OldSrcToRemove": "sumo:Object"}, "Relation"),
 }
 """Where the standard library's ``ros2`` branch (the ROS 2 port) differs from master: its
 ``WmSetRelation`` adds two optional Element parameters (legacy-compound-skills.md §3)."""
@@ -121,6 +132,9 @@ class SkillIndex:
     implementations: dict[str, str] = field(default_factory=dict)
     compounds: dict[str, list[CompoundModel]] = field(default_factory=dict)
     unknown_compounds: set[str] = field(default_factory=set)
+    unknown_labels: set[str] = field(default_factory=set)
+    """Labels and class names of the compound implementations whose tree is not known: a
+    node with another label of the type does not run them."""
     bases: set[str] = field(default_factory=set)
     """Descriptions other descriptions derive from: the skill manager loads only leaves."""
     definitions: dict[str, list[DescriptionInfo]] = field(default_factory=dict)
@@ -141,6 +155,9 @@ class SkillIndex:
     unread: list[str] = field(default_factory=list)
     """Files of the repository whose classes could not be read at all: a type not found may
     be defined there, so "unknown child type" is then at most informational."""
+    context_writes: dict[str, frozenset[str] | None] = field(default_factory=dict)
+    """Memo of ``compound.checks``: by description type, the blackboard keys the known
+    trees around a compound of that type may write (None: not all of them are known)."""
     modified_by: dict[str, dict[str, set[str]]] = field(default_factory=dict)
     """``{description: {key: labels}}`` for keys only some implementations add to the
     wrapper in ``modifyDescription``: a node holds them only when one of those runs

@@ -44,6 +44,14 @@ def check_inferable(ctx: CheckContext) -> None:
     """
     mentioned = {key for record in ctx.trace.recorded if record.which == "pre"
                  for key in record.condition.param_keys()}
+    # a key no parameter declares, one letter from one that is, is that parameter
+    # misspelt: reported as such (undeclared_parameter), not again as this one unmentioned
+    from ..world.postconditions import one_edit
+
+    for key in mentioned - set(ctx.params):
+        close = [k for k in ctx.params if one_edit(key, k)]
+        if len(close) == 1:
+            mentioned.add(close[0])
     for key, spec in ctx.params.items():
         if spec.kind != "Inferred" or key == ROBOT_KEY or key in mentioned \
                 or not spec.is_element:

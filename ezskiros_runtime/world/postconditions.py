@@ -16,7 +16,7 @@ EzSkiROS models are checked by the same code.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Iterable
 
 from ..model import SkillModel, untyped
@@ -106,15 +106,58 @@ def double_places(uses: Iterable[RelationUse], entries: list[SingleValued],
 
         pres = [u for u in listed if u.which == "pre" and u.desired and covered(u, entry)]
         posts = [u for u in listed if u.which == "post" and covered(u, entry)]
+        misspelt = [u for u in listed if u.which == "post" and not u.desired
+                    and not covered(u, entry) and _misspells(u.relation, pres, index)]
         for first in pres:
             key, old = ends(first)
-            if any(not p.desired and ends(p) == (key, old) for p in posts):
-                continue  # retracted
+            if any(not p.desired and ends(p) == (key, old) for p in [*posts, *misspelt]):
+                continue  # retracted (a misspelt retraction is its own finding, EZ209)
             for second in posts:
                 if second.desired and ends(second)[0] == key and ends(second)[1] != old:
                     found.append(DoublePlace(first, second, entry))
     unique = {(d.first, d.second): d for d in found}
     return sorted(unique.values(), key=lambda d: (d.second.line, d.first.line))
+
+
+def past_typos(uses: Iterable[RelationUse], declared: Iterable[str]) -> list[RelationUse]:
+    """``uses`` with each key no parameter declares read as the one declared key it
+    misspells by one letter (``tartLocation`` for ``StartLocation``): the typo is its own
+    finding (EZ104), and the conditions beside it are judged as meant, not reported again
+    for what the typo breaks (one cause, one finding)."""
+    known = set(declared) | {"Robot"}
+
+    def meant(key: str) -> str:
+        if key in known:
+            return key
+        close = [k for k in known if one_edit(key, k)]
+        return close[0] if len(close) == 1 else key
+
+    return [replace(u, subject=meant(u.subject), object=meant(u.object)) for u in uses]
+
+
+def _misspells(relation: str, uses: list[RelationUse], index: OntologyIndex | None) -> bool:
+    """Whether ``relation`` is a name the ontology does not define, spelt like the relation
+    of one of ``uses``: a typo reported as such (EZ209), so that the retraction it was
+    meant to be is not reported again as missing (one cause, one finding)."""
+    if index is None or index.property(index.expand(relation) or relation) is not None:
+        return False
+    return any(one_edit(relation, u.relation) for u in uses)
+
+
+def one_edit(a: str, b: str) -> bool:
+    """Whether two different names differ by one letter dropped, added, changed, or two
+    neighbours swapped (the prefix, before ``:``, the same)."""
+    if a == b or a.rpartition(":")[0] != b.rpartition(":")[0]:
+        return False
+    x, y = a.rpartition(":")[2], b.rpartition(":")[2]
+    if abs(len(x) - len(y)) > 1:
+        return False
+    start = next((i for i, (p, q) in enumerate(zip(x, y)) if p != q), min(len(x), len(y)))
+    if len(x) == len(y):
+        return x[start + 1:] == y[start + 1:] or (
+            x[start + 2:] == y[start + 2:] and x[start:start + 2] == y[start:start + 2][::-1])
+    longer, shorter = (x, y) if len(x) > len(y) else (y, x)
+    return longer[start + 1:] == shorter[start:]
 
 
 def uses_of(model: SkillModel) -> list[RelationUse]:
@@ -129,4 +172,5 @@ def uses_of(model: SkillModel) -> list[RelationUse]:
     return found
 
 
-__all__ = ["DoublePlace", "RelationUse", "double_places", "retraction", "uses_of"]
+__all__ = ["DoublePlace", "RelationUse", "double_places", "one_edit", "past_typos", "retraction",
+           "uses_of"]

@@ -31,7 +31,8 @@ class stow(SkillBase):
         self.setDescription(Stow(), self.__class__.__name__)
 
     def expand(self, skill):
-        skill(self.skill("WmSetRelation", "", remap={{"Dst": "Box", "OldDstToRemove": "Old"}}))
+        skill(self.skill("WmSetRelation", "", remap={{"Dst": "Box", "OldDstToRemove": "Old"}},
+                         specify={{"Relation": "skiros:contain"}}))
 '''
 BUILDTOOL = "<package><name>lab</name><buildtool_depend>{tool}</buildtool_depend></package>"
 
@@ -56,7 +57,8 @@ def test_a_ros2_package_may_remap_what_the_ros2_standard_library_declares(tmp_pa
 
 def test_a_processor_upstream_lacks_is_one_info_per_project_naming_its_branch(tmp_path: Path):
     tree = TASK.format(imports="").replace(
-        'skill(self.skill("WmSetRelation", "", remap={"Dst": "Box", "OldDstToRemove": "Old"}))',
+        'skill(self.skill("WmSetRelation", "", remap={"Dst": "Box", "OldDstToRemove": "Old"},\n'
+        '                         specify={"Relation": "skiros:contain"}))',
         'skill(self.skill(RetryOnFail(Sequential()))(self.skill("Wait", "")))')
     for name in ("a.py", "b.py"):
         (tmp_path / name).write_text(tree.replace("Stow", name[0].upper() + "Stow"),

@@ -44,6 +44,19 @@ class skill_impl(PrimitiveBase):
         return self.success(str((self.params["{key}"].value, found)))
 """
 
+UNDESCRIBED = """
+
+from skiros2_skill.core.primitive import PrimitiveBase
+
+
+class skill_impl(PrimitiveBase):
+    def createDescription(self):
+        {describe}
+
+    def execute(self):
+        return self.success("done")
+"""
+
 PROPERTY = """
 
 class measure_impl(PrimitiveBase):
@@ -138,6 +151,12 @@ CASES: dict[str, tuple[str, str]] = {
               tree('self.skill("Middle", "middle_impl", remap={"Spot": "Box"})')),
     "EZ319": (tree('self.skill("Middle", "", remap={"Spot": "Box"}, specify={"Pace": 2.0})'),
               tree('self.skill("Middle", "", remap={"Spot": "Box"})')),
+    "EZ320": (tree('self.skill("WmSetRelation", "", remap={"Src": "Box", "Dst": "Item"})'),
+              tree('self.skill("WmSetRelation", "", remap={"Src": "Box", "Dst": "Item"}, '
+                   'specify={"Relation": "skiros:contain"})')),
+    "EZ110": (legacy(LOC) + UNDESCRIBED.format(describe="pass"),
+              legacy(LOC) + UNDESCRIBED.format(
+                  describe="self.setDescription(Skill(), self.__class__.__name__)")),
     "EZ101": (legacy(f'self.addParam("Speed", 0.1, {REQ}, "metres per second")'),
               legacy(f'self.addParam("Speed", 0.1, {REQ}, description="metres per second")')),
     "EZ102": (legacy(f'self.addParam("Speed", 0.1, {REQ}, [ParamOptions.Lock])'),
