@@ -12,7 +12,9 @@ them from one run to the next.
 from __future__ import annotations
 
 import ast
+import hashlib
 from dataclasses import dataclass, replace
+from pathlib import Path
 
 from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.compound.trace import Unanalysable
@@ -55,6 +57,9 @@ class FileFacts:
     parsed: bool = False
     """``ast`` read the file: the repository scan need not parse it again to learn that
     (``Trees.parsed``)."""
+    depends: tuple[tuple[str, str], ...] = ()
+    """``(path, sha256)`` of the other files the reading read (the lab's modules its star
+    imports name, ``static.star_sources``): a kept reading is one of these bytes too."""
 
     def moved(self, to: Candidate) -> FileFacts:
         """The facts of a file with the same bytes at ``to``: a file's facts name its path
@@ -62,6 +67,7 @@ class FileFacts:
         trees' ``CompoundModel.path``) and depend on nothing else of it, so a workspace's
         copies of one package (a fork beside its upstream, a vendored copy) are read once.
         """
+        assert not self.depends, "a reading that read other files is not moved"
         path, relative = str(to.path), to.relative
         static = replace(self.static, path=relative) \
             if isinstance(self.static, FileResult) else self.static
@@ -116,7 +122,9 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
                          if tree is not None and read_when else None,
                          implementation=_implementation(tree, data),
                          unparsed=(recover_classes(data),) if scanned and tree is None
-                         else None, parsed=tree is not None)
+                         else None, parsed=tree is not None,
+                         depends=_depends(tree, str(candidate.path))
+                         if tree is not None and read_when else ())
     parsed = _parse(data)
     if not isinstance(parsed, ast.Module):
         settled = python2_refusal(candidate.relative, data, parsed) \
@@ -132,7 +140,33 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
     if not compounds:
         return FileFacts(static, settled=settled, parsed=True)
     trees = tree_facts(tree, str(candidate.path)) if read_when else None
-    return FileFacts(static, trees, _implementation(tree, data), settled=settled, parsed=True)
+    return FileFacts(static, trees, _implementation(tree, data), settled=settled, parsed=True,
+                     depends=_depends(tree, str(candidate.path)) if read_when else ())
+
+
+def _depends(tree: ast.Module, path: str) -> tuple[tuple[str, str], ...]:
+    """``FileFacts.depends`` of a module whose trees were read."""
+    from ..compound.static import star_sources
+
+    found = []
+    for source in star_sources(tree, path):
+        digest = file_digest(source)
+        if digest is not None:
+            found.append((source, digest))
+    return tuple(found)
+
+
+def file_digest(path: str) -> str | None:
+    """The sha256 of a file's bytes, None when it cannot be read."""
+    try:
+        return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+    except OSError:
+        return None
+
+
+def still_read(facts: FileFacts) -> bool:
+    """Whether every other file a reading read still holds the bytes it read."""
+    return all(file_digest(path) == digest for path, digest in facts.depends)
 
 
 def _newer_syntax(relative: str, data: bytes) -> FileResult | Declined:

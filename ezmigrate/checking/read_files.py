@@ -48,7 +48,7 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
     path). Files without a description are read, never parsed."""
     from ..compound.repository import SCAN_WHEN
     from ..files.prefilter import by_text
-    from .file_facts import FileFacts, file_facts
+    from .file_facts import FileFacts, file_facts, still_read
 
     readings = FileReadings()
     facts: dict[Path, FileFacts] = {}
@@ -68,7 +68,7 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
         key = None if cache is None else cache.key(
             "file", str(candidate.path), candidate.relative, str(compounds), data)
         found = None if cache is None or key is None else cache.get(key)
-        if isinstance(found, FileFacts):
+        if isinstance(found, FileFacts) and still_read(found):
             facts[candidate.path] = found
             if found.settled is not None:
                 readings.alone[str(candidate.path)] = (data, found.settled)

@@ -217,7 +217,7 @@ class ReadingPool:
             facts, own = read[firsts[data]]
             if unique[firsts[data]][0] is candidate:
                 found.append((facts, own))
-            elif own is None:
+            elif own is None and not facts.depends:
                 found.append((facts.moved(candidate), None))
             else:
                 found.append((facts, own))  # a placeholder, read again below

@@ -121,13 +121,23 @@ fork (``compound.checks``), so that a misspelt one is still found undefined; for
 others, their public top-level names (none a processor)."""
 
 
+def star_sources(tree: ast.Module, path: str) -> tuple[str, ...]:
+    """The files of the repository that ``module_names`` reads for this module's star
+    imports (transitively): what is read of the module depends on their bytes too, so a
+    cache keeps the reading by them as well."""
+    read: list[str] = []
+    module_names(tree, path, read=read)
+    return tuple(dict.fromkeys(read))
+
+
 def module_names(tree: ast.Module, path: str | None = None,
-                 seen: frozenset[str] = frozenset()) -> frozenset[str] | None:
+                 seen: frozenset[str] = frozenset(),
+                 read: list[str] | None = None) -> frozenset[str] | None:
     """The names a module binds at its top level (imports, classes, functions, assignments,
     also inside top-level ``if``/``try``), and the builtins; None when a star import may
     bind any name. ``path``: the module's file, where a star import of a module of the
     repository beside it (``from primitives import *``, the lab's own) is read for what it
-    exports."""
+    exports (``read``, when given, collects the files read so)."""
     names: set[str] = set(dir(builtins))
     todo: list[ast.stmt] = list(tree.body)
     while todo:
@@ -136,7 +146,7 @@ def module_names(tree: ast.Module, path: str | None = None,
             if not node.level and node.module in KNOWN_STAR:
                 names |= KNOWN_STAR[node.module]
                 continue
-            exported = _star_names(node, path, seen)
+            exported = _star_names(node, path, seen, read)
             if exported is None:
                 return None  # any name may come from it
             names |= exported
@@ -155,8 +165,8 @@ def module_names(tree: ast.Module, path: str | None = None,
     return frozenset(names)
 
 
-def _star_names(node: ast.ImportFrom, path: str | None, seen: frozenset[str]
-                ) -> frozenset[str] | None:
+def _star_names(node: ast.ImportFrom, path: str | None, seen: frozenset[str],
+                read: list[str] | None = None) -> frozenset[str] | None:
     """The public names ``from M import *`` binds, for a module ``M`` found as a file of the
     repository near ``path`` (beside it, or as a package a few folders up); None when it is
     not found or cannot be read (then any name may come from it)."""
@@ -170,11 +180,14 @@ def _star_names(node: ast.ImportFrom, path: str | None, seen: frozenset[str]
         for candidate in (base.joinpath(*parts).with_suffix(".py"),
                           base.joinpath(*parts, "__init__.py")):
             if candidate.is_file():
-                return _exports(str(candidate), seen | {path})
+                if read is not None:
+                    read.append(str(candidate))
+                return _exports(str(candidate), seen | {path}, read)
     return None
 
 
-def _exports(path: str, seen: frozenset[str]) -> frozenset[str] | None:
+def _exports(path: str, seen: frozenset[str], read: list[str] | None = None
+             ) -> frozenset[str] | None:
     """The names ``from <module at path> import *`` binds (its ``__all__`` when literal)."""
     if path in seen or len(seen) > 8:
         return None
@@ -189,7 +202,7 @@ def _exports(path: str, seen: frozenset[str]) -> frozenset[str] | None:
                 return frozenset(str(n) for n in ast.literal_eval(statement.value))
             except (ValueError, TypeError, SyntaxError):
                 return None
-    names = module_names(tree, path, seen)
+    names = module_names(tree, path, seen, read)
     return None if names is None else frozenset(
         n for n in names - set(dir(builtins)) if not n.startswith("_"))
 

@@ -244,3 +244,40 @@ def test_without_a_key_there_is_no_cache_and_the_same_findings(
     assert FactsCache.open(_folder(repo)) is None
     assert _run(repo, cached=True) == _run(repo, cached=False)
     assert not (_folder(repo) / PACK).exists()
+
+
+STAR_TREE = '''\
+from skiros2_skill.core.skill import SkillDescription, SkillBase
+from processors_here import *
+
+
+class Patrol(SkillDescription):
+    def createDescription(self):
+        pass
+
+
+class patrol(SkillBase):
+    def createDescription(self):
+        self.setDescription(Patrol(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill.setProcessor(LabSequence())
+        skill(self.skill("Patrol", ""))
+'''
+
+
+def test_a_reading_kept_by_its_bytes_is_read_again_when_a_star_imported_module_changes(
+        tmp_path: Path, own_key: Path) -> None:
+    """What a tree's module binds comes also from the lab's module it star-imports: when
+    that module no longer defines the processor, the kept reading of the unchanged tree is
+    not taken, and the run says what --no-cache says (EZ317)."""
+    repo = tmp_path / "repo"
+    (repo / "pkg").mkdir(parents=True)
+    (repo / "pkg" / "processors_here.py").write_text("class LabSequence:\n    pass\n")
+    (repo / "pkg" / "tree.py").write_text(STAR_TREE)
+    subprocess.run(["git", "init", "-q", str(repo)], check=True)
+    assert not [d for d in _run(repo, cached=True) if d.code == "EZ317"]
+    (repo / "pkg" / "processors_here.py").write_text("class LabSequenceRenamed:\n    pass\n")
+    again = _run(repo, cached=True)
+    assert again == _run(repo, cached=False)
+    assert [d.code for d in again if "LabSequence" in d.message] == ["EZ317"]
