@@ -91,7 +91,7 @@ def test_markdown_report_for_code_review(reports):
     skipped = _section(text, "## `not_convertible.py`")
     assert "- **FollowWaypoints** (line 20): skipped (EZ902)\n  - reason: a loop at line 23" \
         in skipped
-    assert "- **Navigate** (line 10, legacy line 11): converted, equivalent" in text
+    assert "- **Navigate** (line 19, legacy line 11): converted, equivalent" in text
 
 
 def test_markdown_lists_findings_apart_from_equivalence(reports):

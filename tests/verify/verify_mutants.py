@@ -49,7 +49,7 @@ ALIAS = "_mut_"
 """Prefix of the names the mutants use for DSL names and namespaces (imported once per
 file under these aliases, so a module's own aliases never matter)."""
 DSL_IMPORTS = ("REQUIRED", "OPTIONAL", "INFERRED", "ELEMENT", "KEY", "DESC", "abstract",
-               "Lock", "Consume")
+               "Lock", "Consume", "Annotated")
 NAMESPACES = tuple(OTHER_CLASSES)
 
 
@@ -213,17 +213,26 @@ class _Param:
 def _read_param(src: _Source, node: cst.Param) -> _Param:
     annotation = node.annotation.annotation if node.annotation else None
     kind_node: cst.Name | None = None
-    type_node: cst.BaseExpression | None = annotation
+    inner = annotation
+    added: list[cst.BaseExpression] = []
+    if isinstance(annotation, cst.Subscript) and src.dsl_name(annotation.value) == "Annotated":
+        # ``Annotated[A, items...]`` is ``A`` with the items after its type (docs/dsl.md)
+        parts = [e.slice.value for e in annotation.slice if isinstance(e.slice, cst.Index)]
+        inner, added = parts[0], parts[1:]
+    type_node: cst.BaseExpression | None = inner
     items: list[cst.BaseExpression] = []
-    if isinstance(annotation, cst.Subscript) and src.dsl_name(annotation.value) in KINDS:
-        assert isinstance(annotation.value, cst.Name)
-        kind_node = annotation.value
-        elements = [e.slice.value for e in annotation.slice
+    if isinstance(inner, cst.Subscript) and src.dsl_name(inner.value) in KINDS:
+        assert isinstance(inner.value, cst.Name)
+        kind_node = inner.value
+        elements = [e.slice.value for e in inner.slice
                     if isinstance(e.slice, cst.Index)]
         type_node, items = elements[0], elements[1:]
-    elif annotation is not None and src.dsl_name(annotation) in KINDS:
-        assert isinstance(annotation, cst.Name)
-        kind_node, type_node = annotation, None
+    elif inner is not None and src.dsl_name(inner) in KINDS:
+        assert isinstance(inner, cst.Name)
+        kind_node, type_node = inner, None
+        if added and _item_kind(src, added[0]) == "other" and src.dsl_name(added[0]) is None:
+            type_node, added = added[0], added[1:]  # a bare kind: its first item is the type
+    items = [*items, *added]
     element = None
     if isinstance(type_node, cst.Attribute) and isinstance(type_node.value, cst.Name) \
             and type_node.value.value in src.namespaces:
