@@ -12,6 +12,7 @@ runs.
 from __future__ import annotations
 
 import asyncio
+import gc
 import os
 from collections.abc import Callable
 from pathlib import Path
@@ -97,6 +98,13 @@ def build(open_workspace: Callable[[Path], Workspace]) -> EzServer:
     def initialized(ls: EzServer, _params: lsp.InitializedParams) -> None:
         root = ls.workspace.root_path or str(Path.cwd())
         ls.ws = ls.open_workspace(Path(root))
+        # What the session holds for good (the modules, the ontology's index) is frozen out
+        # of the collector's reach once, for the whole session: a check then finds the
+        # heap frozen and leaves it so (``frozen_heap``), and what each check leaves is
+        # collected as usual. Freezing and thawing around every check would move the
+        # previous check's garbage out of reach each time, where no collection finds it.
+        gc.collect()
+        gc.freeze()
 
     @server.feature(lsp.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: EzServer, params: lsp.DidOpenTextDocumentParams) -> None:
