@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from ezskiros_runtime.compound.library import DescriptionInfo, SkillIndex
+    from ezskiros_runtime.model import SkillModel
 
 _CALL = re.compile(r"""\.skill\(\s*(["'])([^"']*)\1(?:\s*,\s*(["'])([^"']*)\3?)?""")
 _KEY = re.compile(r"""(?:specify|remap)\s*=\s*\{[^}]*?(["'])([^"']*)$""")
@@ -56,8 +57,9 @@ def child_at(text: str, line: int, character: int) -> ChildAt | None:
 
 
 def hover_text(skills: SkillIndex, child: ChildAt) -> str | None:
-    """Markdown: the child's description, its parameters and where it is declared; for
-    a label, the description its implementation sets."""
+    """Markdown: the child's description, its parameters, its conditions (when its file
+    reads from its syntax) and where it is declared; for a label, the description its
+    implementation sets."""
     info = skills.descriptions.get(child.type)
     if child.kind == "label" and child.label:
         implements = skills.implementations.get(child.label)
@@ -76,6 +78,16 @@ def _described(info: DescriptionInfo) -> str:
                               for key, kind in info.params.items()))
     elif not info.complete:
         rows.append("parameters not known (the description could not be read)")
+    model = model_of(info)
+    if model is not None:
+        from ezskiros_runtime.notation import render_condition
+
+        for which, title in (("pre", "pre-conditions"), ("hold", "hold-conditions"),
+                             ("post", "post-conditions")):
+            listed = model.conditions(which)
+            if listed:
+                rows.append(f"{title}:\n" + "\n".join(f"- `{render_condition(c)}`"
+                                                       for c in listed))
     if info.path:
         rows.append(f"declared at {info.path}:{info.line}")
     return "\n\n".join(rows)
@@ -124,4 +136,34 @@ def _class_in(root: Path, name: str) -> tuple[str, int] | None:
         match = pattern.search(text)
         if match is not None:
             return str(candidate.path), text.count("\n", 0, match.start()) + 1
+    return None
+
+
+def model_of(info: DescriptionInfo) -> SkillModel | None:
+    """The description's whole model (its conditions too), read from its file's syntax as
+    ``check`` reads it: a plain legacy description, or an EzSkiROS one read statically.
+    None when the file does not read so (the hover then shows the parameters alone)."""
+    import ast
+
+    from ezskiros_runtime.model import SkillModel
+
+    from ..lint.plain_reader import Declined, read_plain
+
+    try:
+        data = Path(info.path).read_bytes()
+        tree = ast.parse(data)
+    except (OSError, SyntaxError, ValueError):
+        return None
+    if b"ezskiros_runtime" in data:
+        from ..lint.ezskiros_static import read_ezskiros_statically
+
+        models = read_ezskiros_statically(tree, info.path).outcome().models
+        found = [m for m in models if m.get("name") == info.name]
+        return SkillModel.from_json(found[0]) if found else None
+    read = read_plain(data, info.path, tree)
+    if isinstance(read, Declined):
+        return None
+    for skill in read.skills:
+        if skill.name == info.name and skill.model is not None:
+            return SkillModel.from_json(skill.model)
     return None

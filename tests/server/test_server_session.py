@@ -25,6 +25,8 @@ class Pick(SkillDescription):
         self.addParam("Object", Element("skiros:Product"), ParamTypes.Required)
         self.addParam("Place", Element("skiros:Lcoation"), ParamTypes.Required)
         self.addParam("Speed", 0.5, ParamTypes.Optional, "how fast")
+        self.addPreCondition(self.getRelationCond("PlaceHolds", "skiros:contain", "Place",
+                                                  "Object", True))
 '''
 MARKER_MODULE = '''\
 import pathlib
@@ -263,6 +265,7 @@ async def test_a_child_skill_has_hover_completion_and_a_definition(
     assert hover is not None
     shown = hover.contents.value  # type: ignore[union-attr]
     assert "**Pick**" in shown and "`Place`" in shown and "`Speed`" in shown
+    assert "pre-conditions" in shown and "'skiros:contain'" in shown
     where = await client.text_document_definition_async(lsp.DefinitionParams(
         lsp.TextDocumentIdentifier(path.as_uri()), at))
     assert isinstance(where, lsp.Location) and where.uri.endswith("/pkg/pick.py")
