@@ -45,6 +45,12 @@ class EzServer(LanguageServer):
         self.pending: dict[str, asyncio.TimerHandle] = {}
         self.found: dict[str, list[Diagnostic]] = {}
 
+    def cancel_waiting(self, uri: str) -> None:
+        """Drop the debounced check a change of ``uri`` left waiting, if any."""
+        waiting = self.pending.pop(uri, None)
+        if waiting is not None:
+            waiting.cancel()
+
     def term_notes(self) -> terms.Notes:
         if self.notes is None:
             assert self.ws is not None and self.ws.index is not None
@@ -70,9 +76,7 @@ def _lsp_diagnostic(d: Diagnostic) -> lsp.Diagnostic:
 
 def publish(server: EzServer, uri: str) -> None:
     """Check the document at ``uri`` as it stands in the editor and publish the findings."""
-    waiting = server.pending.pop(uri, None)
-    if waiting is not None:
-        waiting.cancel()  # a save or an open while a change waits: check once
+    server.cancel_waiting(uri)  # a save or an open while a change waits: check once
     if server.ws is None:
         return
     document = server.workspace.get_text_document(uri)
@@ -124,17 +128,13 @@ def build(open_workspace: Callable[[Path], Workspace]) -> EzServer:
     @server.feature(lsp.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(ls: EzServer, params: lsp.DidChangeTextDocumentParams) -> None:
         uri = params.text_document.uri
-        waiting = ls.pending.pop(uri, None)
-        if waiting is not None:
-            waiting.cancel()
+        ls.cancel_waiting(uri)
         ls.pending[uri] = asyncio.get_running_loop().call_later(DEBOUNCE, publish, ls, uri)
 
     @server.feature(lsp.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: EzServer, params: lsp.DidCloseTextDocumentParams) -> None:
         uri = params.text_document.uri
-        waiting = ls.pending.pop(uri, None)
-        if waiting is not None:
-            waiting.cancel()
+        ls.cancel_waiting(uri)
         ls.found.pop(uri, None)
         ls.text_document_publish_diagnostics(lsp.PublishDiagnosticsParams(uri, []))
 
