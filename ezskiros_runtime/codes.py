@@ -3,7 +3,7 @@
 Codes are what users select, ignore and suppress (``# ezskiros: ignore[EZ201]``), so they
 never change meaning once published; kinds are the internal identifiers the checks emit
 (``"range"``, ``"description-in-options"``). Several kinds may share a code when they are
-the same problem found by two passes (the runtime's ``undeclared_parameter`` and the
+the same problem found by two passes (the runtime's ``undeclared-parameter`` and the
 codemod's ``undeclared-key``); a kind never has two codes.
 
 Groups, by the hundreds digit: EZ1xx the description itself, EZ2xx vocabulary and ontology,
@@ -556,15 +556,12 @@ class UnknownKind(KeyError):
     some other code (it used to become EZ108, an error, silently)."""
 
 
-def normalize_kind(kind: str) -> str:
-    """``"range_unproven"`` and ``"range-unproven"`` are one kind (runtime vs reports)."""
-    return kind.replace("_", "-")
-
-
 def rule_for(kind: str) -> Rule:
-    """The rule of a finding kind; ``UnknownKind`` for a kind no rule lists."""
+    """The rule of a finding kind, spelt as the catalogue spells it (``range-unproven``:
+    one spelling from the runtime to the reports); ``UnknownKind`` for a kind no rule
+    lists."""
     try:
-        return _BY_KIND[normalize_kind(kind)]
+        return _BY_KIND[kind]
     except KeyError:
         raise UnknownKind(f"finding kind {kind!r} is listed by no rule of "
                           "ezskiros_runtime/codes.py") from None
@@ -577,7 +574,7 @@ def code_for(kind: str) -> str:
 
 def known_kind(kind: str) -> bool:
     """Whether the catalogue lists the kind explicitly (tests demand it for every kind)."""
-    return normalize_kind(kind) in _BY_KIND
+    return kind in _BY_KIND
 
 
 def matches(code: str, selector: str) -> bool:
@@ -594,4 +591,4 @@ def valid_selector(selector: str) -> bool:
 
 
 __all__ = ["BY_CODE", "CODE_PATTERN", "GROUPS", "RULES", "Rule", "UnknownKind", "code_for",
-           "known_kind", "matches", "normalize_kind", "rule_for", "valid_selector"]
+           "known_kind", "matches", "rule_for", "valid_selector"]

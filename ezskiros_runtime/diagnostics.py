@@ -26,7 +26,7 @@ SEVERITIES: tuple[str, ...] = ("error", "warning", "info")
 class Finding:
     """One problem found in a skill description.
 
-    ``kind`` is a stable identifier (``"range"``, ``"unknown_vocabulary"``, ...) that policy
+    ``kind`` is a stable identifier (``"range"``, ``"unknown-vocabulary"``, ...) that policy
     and reports key on; ``message`` is the human sentence without location, which ``str()``
     prefixes with ``file:line: Skill:`` so that editors and terminals can jump to the line.
     """

@@ -194,7 +194,7 @@ def legacy_hits(skill: str, path: str, facts: StaticDescription,
     for check in CHECKS:
         check(ctx)
     for f in ctx.findings:
-        if f.kind == "unknown_vocabulary" and f.actual in flagged:
+        if f.kind == "unknown-vocabulary" and f.actual in flagged:
             continue  # said more precisely by a spelling finding
         line = f.line or lines.get(f.param or "", 0)
         fix = f"Did you mean {f.suggestions[0]}?" if f.suggestions else None

@@ -157,7 +157,7 @@ def with_findings(skills: list[SkillResult], after: LoadOutcome,
     added: dict[str, list[ReviewFinding]] = {}
     names = {s.name for s in skills}
     for found in after.findings:
-        kind = found.kind.replace("_", "-")
+        kind = found.kind
         if found.skill not in names or kind in skip:
             continue
         added.setdefault(found.skill, []).append(

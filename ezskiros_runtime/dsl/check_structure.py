@@ -29,7 +29,7 @@ def check_defaults(ctx: CheckContext) -> None:
     for spec in ctx.trace.specs:
         if spec.mismatch is not None:
             file, line = ctx.param_location(spec.name)
-            ctx.add("default_type", f"parameter {spec.key}: {spec.mismatch}", file, line,
+            ctx.add("default-type", f"parameter {spec.key}: {spec.mismatch}", file, line,
                     param=spec.key)
 
 
@@ -80,7 +80,7 @@ def check_declared(ctx: CheckContext) -> None:
             if key in ctx.params or key == ROBOT_KEY:
                 continue
             hints = tuple(closest_names(key, declared))
-            ctx.add("undeclared_parameter",
+            ctx.add("undeclared-parameter",
                     f"{record.which}-condition {record.condition.final_label} refers to "
                     f"{key!r}, which the description does not declare (SkiROS2 keeps the "
                     "condition, but nothing can ever bind that key)"

@@ -67,7 +67,7 @@ def _check_side(ctx: CheckContext, record: Recorded, cond: Cond, key: str | None
     no class at or below its declared one satisfies every expectation. A parameter whose
     class is merely wider (``Robot: INFERRED[sumo.Agent]`` where ``sumo:Device`` is
     expected: ``cora:Robot`` is both) may be bound to a fitting element at run time, which
-    SkiROS2's legacy skills rely on, so that is the ``*_unproven`` kind (a warning).
+    SkiROS2's legacy skills rely on, so that is the ``*-unproven`` kind (a warning).
     File, line and skill are the finding's own fields (``str(finding)`` shows them).
     """
     if key is None:
@@ -96,7 +96,7 @@ def _check_side(ctx: CheckContext, record: Recorded, cond: Cond, key: str | None
         return
     if possible:
         example = index.compact(str(index.witness(iri, wanted)))
-        ctx.add(f"{kind}_unproven",
+        ctx.add(f"{kind}-unproven",
                 f"{cond.vocabulary} expects {side} of class {expected}, but parameter {key} "
                 f"is {actual}, which only some elements are ({example} is): narrow the "
                 f"parameter's type (e.g. to {example}) to be sure", record.file,
@@ -124,7 +124,7 @@ def _check_value(ctx: CheckContext, record: Recorded, cond: Cond, ranges: Sequen
     value_type = type(cond.value)
     for name, accepted in datatypes:
         if value_type not in accepted:
-            ctx.add("value_type",
+            ctx.add("value-type",
                     f"{cond.vocabulary} expects a {name} value, but the condition compares "
                     f"{cond.subject} with {cond.value!r} ({value_type.__name__})",
                     record.file, record.line, param=cond.subject, relation=cond.vocabulary,
@@ -142,7 +142,7 @@ def _check_value(ctx: CheckContext, record: Recorded, cond: Cond, ranges: Sequen
 def _check_condition(ctx: CheckContext, record: Recorded, cond: Cond) -> None:
     kind = cond.kind
     if kind == "property" and cond.operator not in OPERATORS:
-        ctx.add("unknown_operator",
+        ctx.add("unknown-operator",
                 f"{cond.vocabulary}: operator {cond.operator!r} is none of "
                 f"{', '.join(OPERATORS)} (SkiROS2 does not validate it)", record.file,
                 record.line, param=cond.subject, relation=cond.vocabulary)
@@ -155,14 +155,14 @@ def _check_condition(ctx: CheckContext, record: Recorded, cond: Cond) -> None:
     relational = kind in ("relation", "abstract_relation")
     local = (cond.vocabulary or "").partition(":")[2]
     if relational and info.kind == "data":
-        ctx.add("property_kind",
+        ctx.add("property-kind",
                 f"{cond.vocabulary} is a datatype property: compare it with a value "
                 f"({cond.subject}.{local} == ...) instead of "
                 "relating two parameters", record.file, record.line, param=cond.subject,
                 relation=cond.vocabulary, expected="object property", actual="data property")
         return
     if kind == "property" and info.kind == "object":
-        ctx.add("property_kind",
+        ctx.add("property-kind",
                 f"{cond.vocabulary} is an object property: relate two parameters "
                 f"({cond.subject}.{local}(Other)) instead of "
                 "comparing with a value", record.file, record.line, param=cond.subject,

@@ -85,7 +85,7 @@ def check_parameter_classes(ctx: CheckContext) -> None:
             continue
         hints = suggestions(ctx.index, normalized_name(ctx.index, name), ("class",))
         file, line = ctx.param_location(spec.name)
-        ctx.add("unknown_vocabulary",
+        ctx.add("unknown-vocabulary",
                 f"parameter {spec.key}: {_unknown_reason(ctx, name, 'class')}"
                 f"{did_you_mean(hints)}", file, line, _undefined_prefix(ctx, name),
                 param=spec.key, actual=name, suggestions=hints)
@@ -100,7 +100,7 @@ def _check_condition(ctx: CheckContext, record: Recorded, cond: Cond) -> None:
         options = " or ".join(f'{cond.subject}.relation("{c}", ...)' if cond.kind != "property"
                               else f'{cond.subject}.property("{c}", ...)'
                               for c in note.candidates)
-        ctx.add("ambiguous_vocabulary",
+        ctx.add("ambiguous-vocabulary",
                 f"{cond.subject}.{note.written}: {note.written!r} is defined under several "
                 f"prefixes ({', '.join(note.candidates)}); write {options}",
                 record.file, record.line, param=cond.subject, relation=note.written,
@@ -122,7 +122,7 @@ def _check_condition(ctx: CheckContext, record: Recorded, cond: Cond) -> None:
                    f"{did_you_mean(hints)}")
     else:
         message = f"{_unknown_reason(ctx, cond.vocabulary, what)}{did_you_mean(hints)}"
-    ctx.add("unknown_vocabulary", message, record.file, record.line,
+    ctx.add("unknown-vocabulary", message, record.file, record.line,
             note is None and _undefined_prefix(ctx, cond.vocabulary), param=cond.subject,
             relation=cond.vocabulary if what != "class" else None,
             actual=cond.vocabulary, suggestions=hints)

@@ -87,7 +87,7 @@ def check(target: Any) -> list[Finding]:
         except SkillTypeError as exc:  # a subclass raising on its own
             return list(exc.findings)
         except UnknownVocabularyError as exc:
-            return [_failure("unknown_vocabulary", exc, target.__name__)]
+            return [_failure("unknown-vocabulary", exc, target.__name__)]
         except DescriptionError as exc:
             return [_failure("description", exc, target.__name__)]
     return list(getattr(instance, "findings", []))

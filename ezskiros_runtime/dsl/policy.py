@@ -21,9 +21,10 @@ STRICT_ENV = "EZSKIROS_STRICT"
 LEVELS: tuple[str, ...] = ("error", "warning", "info", "off")
 
 DEFAULT_SEVERITY: dict[str, str] = {
-    kind.replace("-", "_"): rule.severity for rule in RULES for kind in rule.kinds}
-"""Each finding kind's severity, in the runtime's spelling (``range_unproven``), as the one
-catalogue (``codes.RULES``) gives it: nothing here is typed by hand."""
+    kind: rule.severity for rule in RULES for kind in rule.kinds}
+"""Each finding kind's severity (``range-unproven``, the one spelling from the runtime to
+the reports), as the one catalogue (``codes.RULES``) gives it: nothing here is typed by
+hand."""
 
 _overrides: dict[str, str] = {}
 _strict: list[bool | None] = [None]

@@ -45,8 +45,8 @@ def emitted_kinds() -> set[str]:
                 if name in EMITTERS and isinstance(first, ast.Constant) \
                         and isinstance(first.value, str):
                     kinds.add(first.value)
-                elif name == "add" and isinstance(first, ast.JoinedStr):  # f"{kind}_unproven"
-                    kinds |= {"domain_unproven", "range_unproven"}
+                elif name == "add" and isinstance(first, ast.JoinedStr):  # f"{kind}-unproven"
+                    kinds |= {"domain-unproven", "range-unproven"}
     return kinds
 
 
@@ -76,10 +76,10 @@ def test_runtime_and_catalogue_agree_on_severity():
 
 
 def test_findings_carry_their_code():
-    finding = Finding("range_unproven", "warning", "m", None, 3, "Pick")
+    finding = Finding("range-unproven", "warning", "m", None, 3, "Pick")
     assert finding.code == "EZ204" and finding.to_json()["code"] == "EZ204"
     assert ReportFinding("description-in-options", 4, "m").code == "EZ101"
-    assert ReportFinding("undeclared-key", 4, "m").code == code_for("undeclared_parameter")
+    assert ReportFinding("undeclared-key", 4, "m").code == code_for("undeclared-parameter")
 
 
 def test_not_migrated_is_off_by_default():

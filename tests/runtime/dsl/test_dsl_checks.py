@@ -43,7 +43,7 @@ def test_unknown_class_in_a_verbatim_element_type_warns_with_a_suggestion():
             pass
 
     finding = only(Skill)
-    assert (finding.kind, finding.severity, finding.param) == ("unknown_vocabulary", "warning",
+    assert (finding.kind, finding.severity, finding.param) == ("unknown-vocabulary", "warning",
                                                                "Box")
     assert finding.message == ("parameter Box: class skiros:Prodcut is not in the loaded "
                                "ontology (did you mean skiros:Product?)")
@@ -81,7 +81,7 @@ def test_unknown_relation_name_falls_back_to_the_default_prefix_and_warns():
                                "the loaded ontology; lowered as skiros:contian (did you mean "
                                "skiros:contain?)")
     line = line_of("A.contian(B)", HERE)
-    assert (finding.kind, finding.line, finding.relation) == ("unknown_vocabulary", line,
+    assert (finding.kind, finding.line, finding.relation) == ("unknown-vocabulary", line,
                                                               "skiros:contian")
     assert [(Path(w.filename).name, w.lineno) for w in caught] == [(HERE.name, line)]
     assert str(caught[0].message).startswith("Skill: A.contian: no object or datatype")
@@ -116,7 +116,7 @@ def test_vocabulary_of_the_wrong_kind_says_what_it_is(condition, start):
     if start is None:
         assert found == []
         return
-    assert (found[0].kind, found[0].severity) == ("unknown_vocabulary", "warning")
+    assert (found[0].kind, found[0].severity) == ("unknown-vocabulary", "warning")
     assert found[0].message.startswith(start)
 
 
@@ -133,7 +133,7 @@ def test_a_local_name_two_prefixes_define_is_an_error_pointing_to_the_verbatim_f
             self.pre_conditions += G.robotPart(R)
 
     finding = only(Skill)
-    assert (finding.kind, finding.severity) == ("ambiguous_vocabulary", "error")
+    assert (finding.kind, finding.severity) == ("ambiguous-vocabulary", "error")
     assert finding.message == (
         "G.robotPart: 'robotPart' is defined under several prefixes (cora:robotPart, "
         'skiros:robotPart); write G.relation("cora:robotPart", ...) or '
@@ -205,7 +205,7 @@ def test_a_wider_class_is_advice_a_disjoint_one_an_error():
             self.pre_conditions += P.hasA(Q)
 
     wider = only(Wider)
-    assert (wider.kind, wider.severity, wider.param) == ("range_unproven", "info", "L")
+    assert (wider.kind, wider.severity, wider.param) == ("range-unproven", "info", "L")
     assert "skiros:TransformationPose" in wider.message and "narrow" in wider.message
     with warnings.catch_warnings():
         warnings.simplefilter("error")
@@ -233,7 +233,7 @@ ex:odd a owl:ObjectProperty ; rdfs:range [ a owl:Class ; owl:intersectionOf ( ex
 
 
 @pytest.mark.parametrize(("relation", "expected"), [
-    ("ex:wide", [("range_unproven", "info")]),  # ex:A, below ex:P, fits
+    ("ex:wide", [("range-unproven", "info")]),  # ex:A, below ex:P, fits
     ("ex:narrow", [("range", "error")]),  # must be ex:A and ex:B: no class below ex:P is both
     ("ex:odd", []),  # ex:A may fit, the restriction is undecidable: no guessing
 ])
@@ -264,7 +264,7 @@ def test_the_automatic_robot_may_be_a_device(tmp_path: Path) -> None:
             self.pre_conditions += Robot.relation("cora:robotPart", Other)
 
     finding = only(Skill)
-    assert (finding.kind, finding.severity, finding.param) == ("domain_unproven", "info",
+    assert (finding.kind, finding.severity, finding.param) == ("domain-unproven", "info",
                                                                "Robot")
     assert finding.line == line_of('relation("cora:robotPart", Other)', HERE)
     assert finding.message == (
@@ -330,7 +330,7 @@ def test_property_values_must_have_the_ranges_python_type(condition, expected, a
 
     finding = only(Skill)
     assert (finding.kind, finding.severity, finding.expected, finding.actual) == (
-        "value_type", "error", expected, actual)
+        "value-type", "error", expected, actual)
     assert finding.message.startswith(f"skiros:{condition.split()[0]} expects a {expected} "
                                       "value, but the condition compares A with ")
 
@@ -364,7 +364,7 @@ def test_object_and_datatype_properties_are_not_interchangeable():
         def description(self, A: skiros.Location, B: skiros.Location):
             self.pre_conditions += A.PositionX(B)
 
-    assert (only(Compared).kind, only(Compared).expected) == ("property_kind", "data property")
+    assert (only(Compared).kind, only(Compared).expected) == ("property-kind", "data property")
     assert only(Related).message.startswith("skiros:PositionX is a datatype property")
 
 
@@ -374,7 +374,7 @@ def test_an_unknown_operator_is_a_warning():
             self.pre_conditions += A.property("skiros:PositionX", "!=", 1.0)
 
     finding = only(Skill)
-    assert (finding.kind, finding.severity) == ("unknown_operator", "warning")
+    assert (finding.kind, finding.severity) == ("unknown-operator", "warning")
     assert "operator '!=' is none of =, >, <, >=, <=" in finding.message
 
 
@@ -472,7 +472,7 @@ def test_a_condition_on_an_undeclared_key_is_kept_and_reported():
             self.pre_conditions += A.contain(self.param("Objct"))
 
     finding = only(Skill)
-    assert (finding.kind, finding.param) == ("undeclared_parameter", "Objct")
+    assert (finding.kind, finding.param) == ("undeclared-parameter", "Objct")
     assert "refers to 'Objct', which the description does not declare" in finding.message
 
 
@@ -492,7 +492,7 @@ def test_a_default_that_does_not_fit_its_annotation_is_a_type_error(annotation, 
     with pytest.raises(SkillTypeError) as raised:
         namespace["Skill"]()  # type: ignore[operator]
     assert str(raised.value).endswith(f"Skill: {message}")
-    assert raised.value.findings[0].kind == "default_type"
+    assert raised.value.findings[0].kind == "default-type"
 
 
 class Mixed(SkillDescription):
@@ -506,7 +506,7 @@ def test_findings_are_data_and_check_neither_raises_nor_warns():
         warnings.simplefilter("error")
         findings = check(Mixed)
     assert [(f.kind, f.severity) for f in findings] == [
-        ("unknown_vocabulary", "warning"), ("domain", "error"), ("range_unproven", "info")]
+        ("unknown-vocabulary", "warning"), ("domain", "error"), ("range-unproven", "info")]
     data = findings[1].to_json()
     assert data["kind"] == "domain" and data["param"] == "B" and data["suggestions"] == []
     line = line_of("self.pre_conditions += B.contain(A)", HERE)
@@ -522,7 +522,7 @@ def test_an_instance_keeps_its_findings():
 
     with pytest.warns(EzSkirosWarning):
         built = Skill()
-    assert [f.kind for f in built.findings] == ["unknown_vocabulary"]
+    assert [f.kind for f in built.findings] == ["unknown-vocabulary"]
     assert check(built) == built.findings
 
 

@@ -42,11 +42,11 @@ class Pick(SkillDescription):
 '''
 TYPOS = {
     # written in the file -> (kind, the line's marker, the first suggestion)
-    "skiros:TarnsformationPose": ("unknown_vocabulary", 'Pose: ELEMENT("skiros:Tarns',
+    "skiros:TarnsformationPose": ("unknown-vocabulary", 'Pose: ELEMENT("skiros:Tarns',
                                   "skiros:TransformationPose"),
-    "Hreon": ("undeclared_parameter", 'self.param("Hreon")', "Hero"),
-    "skiros:contian": ("unknown_vocabulary", '"skiros:contian"', "skiros:contain"),
-    "skiros:FrameID": ("unknown_vocabulary", '"skiros:FrameID"', "skiros:FrameId"),
+    "Hreon": ("undeclared-parameter", 'self.param("Hreon")', "Hero"),
+    "skiros:contian": ("unknown-vocabulary", '"skiros:contian"', "skiros:contain"),
+    "skiros:FrameID": ("unknown-vocabulary", '"skiros:FrameID"', "skiros:FrameId"),
 }
 FIXED = {"skiros:TarnsformationPose": "skiros:TransformationPose", '"Hreon"': '"Hero"',
          "skiros:contian": "skiros:contain", "skiros:FrameID": "skiros:FrameId"}
@@ -76,7 +76,7 @@ def _migrated(folder: Path, text: str = MIGRATED) -> tuple[ModuleType, Path]:
 
 
 def _by_name(found: list[Any]) -> dict[str, Any]:
-    return {f.actual if f.kind == "unknown_vocabulary" else f.param: f for f in found}
+    return {f.actual if f.kind == "unknown-vocabulary" else f.param: f for f in found}
 
 
 def test_each_verbatim_typo_warns_at_its_line_with_a_suggestion(tmp_path: Path) -> None:
@@ -110,7 +110,7 @@ def test_the_undeclared_key_is_matched_against_the_descriptions_own_keys(
 def test_a_key_like_no_declared_one_is_reported_without_a_guess(tmp_path: Path) -> None:
     module, _ = _migrated(tmp_path, MIGRATED.replace('"Hreon"', '"Workpiece"'))
     found = _by_name(check(module.Pick))["Workpiece"]
-    assert found.kind == "undeclared_parameter" and found.suggestions == ()
+    assert found.kind == "undeclared-parameter" and found.suggestions == ()
     assert "did you mean" not in found.message
 
 
