@@ -42,6 +42,11 @@ class Finding:
     expected: str | None = None
     actual: str | None = None
     suggestions: tuple[str, ...] = ()
+    subject: str = ""
+    """What else the finding is about: a scene's element, an ontology term, a child skill
+    (the scene diagram highlights it; one cause is reported once by it)."""
+    fix: str | None = None
+    """The suggested fix, when the pass knows one (``Did you mean ...?``)."""
 
     @property
     def code(self) -> str:

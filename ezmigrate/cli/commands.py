@@ -685,12 +685,12 @@ def scene(file: Path, ontology: tuple[Path, ...], markdown: bool, debug: bool) -
     read = read_scenes([file], index)[0]
     if read.scene is None:
         for f in read.findings:
-            click.echo(f"{f.path}:{f.line}: {f.code} {f.message}", err=True)
+            click.echo(f"{f.file}:{f.line}: {f.code} {f.message}", err=True)
         sys.exit(EXIT_ERROR)
     if markdown:
         click.echo("\n".join(markdown_section([file], index)), nl=False)
     else:
         click.echo(mermaid(read.scene, read.findings, index), nl=False)
         for f in read.findings:
-            click.echo(f"{f.path}:{f.line}: {f.code} {f.message}", err=True)
+            click.echo(f"{f.file}:{f.line}: {f.code} {f.message}", err=True)
     sys.exit(EXIT_ATTENTION if any(f.severity == "error" for f in read.findings) else EXIT_OK)

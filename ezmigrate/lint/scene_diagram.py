@@ -15,7 +15,7 @@ from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ezskiros_runtime.world.findings import WorldFinding
+from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.world.scene import Relation, Scene, individuals_of
 from ezskiros_runtime.world.scene_checks import bookkeeping
 from ezskiros_runtime.world.vocabulary import spatial_properties
@@ -32,7 +32,7 @@ def _text(value: str) -> str:
             .replace(">", "&gt;"))
 
 
-def mermaid(scene: Scene, findings: Iterable[WorldFinding],
+def mermaid(scene: Scene, findings: Iterable[Finding],
             index: OntologyIndex | None) -> str:
     """The flowchart (Mermaid source, no fence)."""
     own = bookkeeping(scene, index)

@@ -14,11 +14,12 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.model import SkillModel
 from ezskiros_runtime.ontology.consistency import ontology_findings, unknown_predicates
 from ezskiros_runtime.ontology.errors import OntologyLoadError
 from ezskiros_runtime.ontology.index import bundled_ontology_path
-from ezskiros_runtime.world.findings import WorldFinding, finding
+from ezskiros_runtime.world.findings import finding
 from ezskiros_runtime.world.grounding import can_start
 from ezskiros_runtime.world.postconditions import (
     RelationUse,
@@ -47,7 +48,7 @@ class SceneRead:
     path: Path
     text: str
     scene: Scene | None
-    findings: list[WorldFinding]
+    findings: list[Finding]
 
 
 def read_scenes(paths: Iterable[Path], index: OntologyIndex | None) -> list[SceneRead]:
@@ -89,7 +90,8 @@ def ontology_diagnostics(index: OntologyIndex | None, sources: dict[str, str]
         return []
     out: list[Diagnostic] = []
     for f in found:
-        text = sources.setdefault(f.path, _read(Path(f.path)))
+        path = f.file or ""
+        text = sources.setdefault(path, _read(Path(path)))
         out += diagnostics_of([f], text)
     return out
 
@@ -113,7 +115,7 @@ def readable_scenes(paths: Iterable[Path]) -> list[Scene]:
     return found
 
 
-def once_per_project(per_scene: list[list[WorldFinding]]) -> list[list[WorldFinding]]:
+def once_per_project(per_scene: list[list[Finding]]) -> list[list[Finding]]:
     """The scenes' findings with each declaration-caused EZ403 (a property the ontology
     makes spatial, the finding's subject) kept at its first scene only, counting the
     others: one cause, one finding."""
@@ -126,11 +128,12 @@ def once_per_project(per_scene: list[list[WorldFinding]]) -> list[list[WorldFind
     return [[f for number, f in kept if number == scene] for scene in range(len(per_scene))]
 
 
-def diagnostics_of(found: Iterable[WorldFinding], text: str, skill: str = ""
+def diagnostics_of(found: Iterable[Finding], text: str, skill: str = ""
                    ) -> list[Diagnostic]:
     """World findings of one file as diagnostics (columns from ``text``)."""
     where = Positions(text)
-    return [diagnostic(f.path, where, f.kind, f.line, f.message, skill, f.fix, f.lowered,
+    return [diagnostic(f.file or "", where, f.kind, f.line or 0, f.message, skill, f.fix,
+                       f.severity if f.severity == "info" else None,
                        term=f.subject if f.kind == UNKNOWN_PREDICATE else None)
             for f in found]
 
@@ -142,7 +145,7 @@ vocabulary (``robot_vocabulary``), like an unknown name in the code."""
 
 def legacy_double_places(path: str, skill: str, facts: StaticDescription,
                          index: OntologyIndex | None, entries: list[SingleValued]
-                         ) -> list[WorldFinding]:
+                         ) -> list[Finding]:
     """EZ401 for a legacy description read statically (lines from the source);
     ``entries``: the single-valued relations (``single_valued``)."""
     uses = [RelationUse(which, c.vocabulary, c.subject, c.object, bool(c.desired), c.line,
@@ -156,7 +159,7 @@ def legacy_double_places(path: str, skill: str, facts: StaticDescription,
 
 def ezskiros_double_places(path: str, source: str, models: Iterable[SkillModel],
                            index: OntologyIndex | None, entries: list[SingleValued]
-                           ) -> list[WorldFinding]:
+                           ) -> list[Finding]:
     """EZ401 for loaded EzSkiROS descriptions; the line is that of the post-condition's
     ``+=`` in the class, found in the source (parsed only for a finding: on a migrated
     repository, parsing every file for its lines was a third of ``check``)."""
@@ -214,7 +217,7 @@ def _line_of(lines: list[tuple[int, str]], use: RelationUse) -> int:
 
 
 def cannot_start(path: str, skill: str, line: int, model: SkillModel, scene: Scene,
-                 index: OntologyIndex) -> WorldFinding | None:
+                 index: OntologyIndex) -> Finding | None:
     """EZ409 when the skill cannot be grounded in ``scene``."""
     grounded = can_start(model, scene, index)
     if grounded.ok:

@@ -23,7 +23,8 @@ import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Iterable, List, Sequence, Set, Tuple
 
-from ..world.findings import WorldFinding, finding
+from ..diagnostics import Finding
+from ..world.findings import finding
 from .naming import OWL, RDF_TYPE, WELL_KNOWN_PREFIXES, split_iri
 from .suggest import closest_names
 
@@ -49,7 +50,7 @@ Declarations = Tuple[List[Triple], Set[str], Set[str]]
 
 
 def ontology_findings(files: Sequence[Path], index: OntologyIndex,
-                      loaded: Sequence[Path] = ()) -> list[WorldFinding]:
+                      loaded: Sequence[Path] = ()) -> list[Finding]:
     """Findings of the ontology ``files`` (the repository's own) against ``index`` (every
     file loaded, ``loaded`` besides ``files``): undefined references and properties
     declared with a class's IRI. The index alone cannot tell a defined class from one an
@@ -57,7 +58,7 @@ def ontology_findings(files: Sequence[Path], index: OntologyIndex,
     declared = [(path, _declarations(path)) for path in files]
     others = [_declarations(path) for path in loaded if path not in files]
     defined = _Defined([d for _, d in declared] + others)
-    found: list[WorldFinding] = []
+    found: list[Finding] = []
     for path, (triples, _classes, _properties) in declared:
         found += _undefined_references(str(path), _text(path), triples, index, defined)
     found += _property_class_clashes(declared, index)
@@ -84,7 +85,7 @@ class _Defined:
         return iri in (self.classes if kind == "class" else self.properties)
 
 
-def unknown_predicates(scene: Scene, index: OntologyIndex) -> list[WorldFinding]:
+def unknown_predicates(scene: Scene, index: OntologyIndex) -> list[Finding]:
     """One finding per predicate of ``scene`` that no loaded ontology declares, at its
     first use (one cause, one finding), with the nearest declared property."""
     uses: dict[str, list[int]] = {}
@@ -182,7 +183,7 @@ def _is_iri(term: object) -> bool:
 
 
 def _undefined_references(path: str, text: str, triples: Iterable[Triple],
-                          index: OntologyIndex, defined: _Defined) -> list[WorldFinding]:
+                          index: OntologyIndex, defined: _Defined) -> list[Finding]:
     """An axiom naming a term no loaded file defines, in a namespace that defines some:
     what a typo looks like (a namespace nothing defines is another ontology not loaded)."""
     found = []
@@ -251,7 +252,7 @@ def _did_you_mean(iri: str, candidates: Iterable[str], index: OntologyIndex) -> 
 
 def _property_class_clashes(declared: Sequence[tuple[Path, tuple[list[Triple], set[str],
                                                                     set[str]]]],
-                            index: OntologyIndex) -> list[WorldFinding]:
+                            index: OntologyIndex) -> list[Finding]:
     """A property a repository file declares with the IRI of a class (its own, another
     file's, or the core's), at the property's declaration, naming the class's."""
     class_at: dict[str, str] = {}

@@ -6,7 +6,6 @@ leave it inconsistent, and whether a skill can start from a scene.
 
 from __future__ import annotations
 
-from .findings import WorldFinding
 from .grounding import Grounding, can_start
 from .postconditions import DoublePlace, RelationUse, double_places
 from .scene import Scene, SceneError, read_scene
@@ -14,5 +13,5 @@ from .scene_checks import check_scene, check_scene_file
 from .vocabulary import DEFAULT_SINGLE_VALUED, single_valued
 
 __all__ = ["DEFAULT_SINGLE_VALUED", "DoublePlace", "Grounding", "RelationUse", "Scene",
-           "SceneError", "WorldFinding", "can_start", "check_scene", "check_scene_file",
+           "SceneError", "can_start", "check_scene", "check_scene_file",
            "double_places", "read_scene", "single_valued"]

@@ -17,8 +17,9 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..diagnostics import Finding
 from ..ontology.naming import XSD
-from .findings import WorldFinding, finding
+from .findings import finding
 from .scene import (
     Relation,
     Scene,
@@ -49,7 +50,7 @@ _INTEGERS = ("int", "integer", "long", "short", "byte", "nonNegativeInteger",
 
 def check_scene_file(path: str | Path, index: OntologyIndex | None,
                      text: str | None = None,
-                     elsewhere: dict[str, list[str]] | None = None) -> list[WorldFinding]:
+                     elsewhere: dict[str, list[str]] | None = None) -> list[Finding]:
     """Every finding of the scene at ``path`` (``text``: its content, when already read);
     a scene that does not parse is one finding at the line rdflib names. ``elsewhere``:
     individuals the ontology files declare (by default those the index holds:
@@ -61,14 +62,14 @@ def check_scene_file(path: str | Path, index: OntologyIndex | None,
     return check_scene(scene, index, elsewhere)
 
 
-def unreadable(error: SceneError) -> WorldFinding:
+def unreadable(error: SceneError) -> Finding:
     """The one finding of a scene the world model cannot load (EZ402)."""
     return finding("scene-syntax", error.path, error.line,
                    f"scene {Path(error.path).name} cannot be loaded: {error.reason}")
 
 
 def check_scene(scene: Scene, index: OntologyIndex | None,
-                elsewhere: dict[str, list[str]] | None = None) -> list[WorldFinding]:
+                elsewhere: dict[str, list[str]] | None = None) -> list[Finding]:
     """Every finding of a scene already read, in line order."""
     if elsewhere is None:
         elsewhere = individuals_of(index) if index is not None else {}
@@ -114,7 +115,7 @@ class _SceneChecker:
     def vocabulary(self, iri: str) -> str:
         return self.index.compact(iri) if self.index is not None else self.name(iri)
 
-    def parents(self) -> list[WorldFinding]:
+    def parents(self) -> list[Finding]:
         """Elements with two spatial parents. Through the core's ``contain``/``hasA``: a
         warning for an element with a pose of its own (its frame is re-expressed in the
         first parent found), info for one without (a second node in the GUI's tree).
@@ -148,7 +149,7 @@ class _SceneChecker:
                 "containment.", severity="info"))
         return found
 
-    def _two_parents(self, r: Relation, first: str) -> WorldFinding:
+    def _two_parents(self, r: Relation, first: str) -> Finding:
         """The finding of ``r.object``'s second parent ``r.subject`` (``first`` the other)."""
         posed = any(self.scene.values_of(r.object, SKIROS + name) for name in POSE)
         tail = ("its pose, in a frame of its own, is expressed in whichever parent "
@@ -161,7 +162,7 @@ class _SceneChecker:
             f"Keep one of the two relations to {self.name(r.object)}.",
             severity=None if posed else "info")
 
-    def dangling(self) -> list[WorldFinding]:
+    def dangling(self) -> list[Finding]:
         found = []
         for r in self.scene.relations:
             if r.object in self.scene.elements or r.object in self.elsewhere \
@@ -181,7 +182,7 @@ class _SceneChecker:
         return self.index is not None and (self.index.is_class(iri)
                                            or self.index.property(iri) is not None)
 
-    def types(self) -> list[WorldFinding]:
+    def types(self) -> list[Finding]:
         if self.index is None:
             return []
         found = []
@@ -207,7 +208,7 @@ class _SceneChecker:
                         break
         return found
 
-    def datatypes(self) -> list[WorldFinding]:
+    def datatypes(self) -> list[Finding]:
         if self.index is None:
             return []
         found = []
@@ -228,7 +229,7 @@ class _SceneChecker:
                     break
         return found
 
-    def unknown_types(self) -> list[WorldFinding]:
+    def unknown_types(self) -> list[Finding]:
         if self.index is None:
             return []
         found = []
@@ -245,7 +246,7 @@ class _SceneChecker:
                         "Load the ontology that defines it (--ontology), or fix the name."))
         return found
 
-    def unattached(self) -> list[WorldFinding]:
+    def unattached(self) -> list[Finding]:
         """Elements outside the tree rooted at the scene (only when there is one)."""
         elements = self.scene.elements
         roots = [e for e in elements.values() if any(_below(self.index, t, SCENE_CLASS)
