@@ -14,7 +14,7 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..lint.diagnostic import Diagnostic, Positions, diagnostic
+from ..lint.diagnostic import Diagnostic, Positions, diagnostic, from_finding
 from ..report.results import FileResult
 from .run import CheckRun
 
@@ -56,10 +56,9 @@ def legacy_diagnostics(path: str, result: FileResult, positions: Positions,
                     found.append(diagnostic(path, positions, f.kind, f.line or skill.line,
                                             f.message, skill.name))
             if skill.static is not None:
-                for hit in legacy_hits(skill.name, path, skill.static, index):
-                    found.append(diagnostic(path, positions, hit.kind, hit.line or skill.line,
-                                            hit.message, skill.name, hit.fix, param=hit.param,
-                                            term=hit.term, term_is_class=hit.term_is_class))
+                found += [from_finding(path, positions, hit, hit.line or skill.line,
+                                       lowered=False)
+                          for hit in legacy_hits(skill.name, path, skill.static, index)]
         elif skill.status == "skipped":
             reason = (skill.reason or "").splitlines()[0] if skill.reason else ""
             found.append(diagnostic(path, positions, "kept-legacy", skill.line,
@@ -140,11 +139,7 @@ def _load_diagnostics(run: CheckRun) -> list[Diagnostic]:
         found += [diagnostic(path, where, "description", error.line or 0, error.message,
                              error.name)
                   for error in loaded.errors if (path, error.name) not in kept]
-        found += [diagnostic(path, where, f.kind, f.line or 0, f.message, f.skill,
-                             f"Did you mean {f.suggestions[0]}?" if f.suggestions else None,
-                             f.severity if f.severity == "info" else None, f.param,
-                             f.actual, f.actual is not None and f.relation is None)
-                  for f in loaded.findings]
+        found += [from_finding(path, where, f, f.line or 0) for f in loaded.findings]
     return found
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ezskiros_runtime.codes import rule_for
+from ezskiros_runtime.diagnostics import Finding
 
 
 @dataclass(frozen=True)
@@ -72,6 +73,18 @@ def diagnostic(path: str, positions: Positions, kind: str, line: int, message: s
     return Diagnostic(path, max(line, 1), column, rule.code, severity or rule.severity,
                       message, fix or without_suggestion(rule.fix), skill, end_line,
                       end_column, param, term, term_is_class)
+
+
+def from_finding(path: str, positions: Positions, found: Finding, line: int,
+                 lowered: bool = True) -> Diagnostic:
+    """The diagnostic of one of the runtime's findings (``ezskiros_runtime.diagnostics``):
+    its fix, or its first suggestion; its parameter; the vocabulary it names as the term
+    (a class when no relation is involved); its info severity when ``lowered`` (a finding
+    whose rule's condition does not hold here)."""
+    fix = found.fix or (f"Did you mean {found.suggestions[0]}?" if found.suggestions else None)
+    return diagnostic(path, positions, found.kind, line, found.message, found.skill, fix,
+                      "info" if lowered and found.severity == "info" else None, found.param,
+                      found.actual, found.actual is not None and found.relation is None)
 
 
 def without_suggestion(fix: str) -> str:

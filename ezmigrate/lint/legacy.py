@@ -14,10 +14,12 @@ import builtins
 import difflib
 import re
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import replace
 from types import SimpleNamespace
 from typing import TYPE_CHECKING, Any, cast
 
+from ezskiros_runtime.codes import rule_for
+from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.dsl.check_context import CheckContext, Trace
 from ezskiros_runtime.dsl.checking import CHECKS
 from ezskiros_runtime.dsl.collectors import Recorded
@@ -34,21 +36,6 @@ _QUALIFIED = re.compile(r"[A-Za-z][\w.-]*:[A-Za-z_][\w.-]*\Z")
 _NO_SOURCE = cast(Any, SimpleNamespace())
 """The traced function: none (no ``__code__``), so parameter findings take our lines."""
 _SPELLING_KINDS = frozenset({"prefix-typo", "class-spelling", "element-type-spelling"})
-
-
-@dataclass(frozen=True)
-class Hit:
-    """One finding of a legacy description: kind (catalogue key), line, message, fix."""
-
-    kind: str
-    line: int
-    message: str
-    fix: str | None = None
-    param: str | None = None
-    term: str | None = None
-    """The parameter and the vocabulary it names, when the finding has them (the runtime's
-    ``Finding.param`` and ``.actual``)."""
-    term_is_class: bool = False
 
 
 def _cond(fact: CondFact) -> Cond:
@@ -135,21 +122,26 @@ def _prefix_typo(term: str, spell: _Spellings) -> str | None:
     return f"{fixed}:{stripped}" if fixed is not None and stripped else None
 
 
-def spelling_hits(facts: StaticDescription, index: OntologyIndex) -> list[tuple[str, Hit]]:
-    """``(term, hit)``: mistyped prefixes, unqualified Element types, misspelt classes."""
+def _found(kind: str, line: int, message: str, fix: str | None = None) -> Finding:
+    """A finding of a legacy description's own checks; ``legacy_hits`` says whose."""
+    return Finding(kind, rule_for(kind).severity, message, None, line, "", fix=fix)
+
+
+def spelling_hits(facts: StaticDescription, index: OntologyIndex) -> list[tuple[str, Finding]]:
+    """``(term, finding)``: mistyped prefixes, unqualified Element types, misspelt classes."""
     spell = _spellings(index)
-    found: list[tuple[str, Hit]] = []
+    found: list[tuple[str, Finding]] = []
     for term, what, line in _terms(facts):
         fixed = _prefix_typo(term, spell)
         is_type = any(p.element_type == term for p in facts.params)
         if fixed is not None:
-            found.append((term, Hit("prefix-typo", line,
+            found.append((term, _found("prefix-typo", line,
                                     f"{what} {term!r}: the prefix is mistyped; SkiROS2 "
                                     f"stores it verbatim and matches nothing (did you mean "
                                     f"{fixed}?)", f"Write {fixed!r}.")))
             continue
         if is_type and not _QUALIFIED.match(term):
-            found.append((term, Hit("element-type-spelling", line,
+            found.append((term, _found("element-type-spelling", line,
                                     f"Element type {term!r} is not written as prefix:Name; "
                                     "SkiROS2 stores it verbatim")))
             continue
@@ -158,14 +150,14 @@ def spelling_hits(facts: StaticDescription, index: OntologyIndex) -> list[tuple[
             prefix, _, local = term.partition(":")
             exact = spell.classes.get((prefix, _squash(local)))
             if exact is not None and exact != term:
-                found.append((term, Hit("class-spelling", line,
+                found.append((term, _found("class-spelling", line,
                                         f"class {term!r} differs from {exact} only in "
                                         f"spelling; SkiROS2 compares type strings exactly",
                                         f"Write {exact!r}.")))
     return found
 
 
-def _duplicates(facts: StaticDescription) -> list[Hit]:
+def _duplicates(facts: StaticDescription) -> list[Finding]:
     """Keys declared twice by the class itself (redeclaring a base's key is an override)."""
     first: dict[str, int] = {}
     hits = []
@@ -173,7 +165,7 @@ def _duplicates(facts: StaticDescription) -> list[Hit]:
         if not p.own:
             continue
         if p.key in first:
-            hits.append(Hit("duplicate-key", p.line,
+            hits.append(_found("duplicate-key", p.line,
                             f"addParam({p.key!r}) declares the key again (first at line "
                             f"{first[p.key]}); SkiROS2 keeps only this one"))
         first.setdefault(p.key, p.line)
@@ -181,13 +173,13 @@ def _duplicates(facts: StaticDescription) -> list[Hit]:
 
 
 def legacy_hits(skill: str, path: str, facts: StaticDescription,
-                index: OntologyIndex | None) -> list[Hit]:
+                index: OntologyIndex | None) -> list[Finding]:
     """Every finding for one converted legacy description, in source order."""
-    hits = _duplicates(facts)
+    hits = [replace(h, file=path, skill=skill) for h in _duplicates(facts)]
     if index is None:
         return hits
     spelled = spelling_hits(facts, index)
-    hits += [h for _, h in spelled]
+    hits += [replace(h, file=path, skill=skill) for _, h in spelled]
     flagged = {term for term, _ in spelled}
     lines = {p.key: p.line for p in facts.params}
     ctx = CheckContext(trace_of(skill, path, facts), index)
@@ -196,11 +188,8 @@ def legacy_hits(skill: str, path: str, facts: StaticDescription,
     for f in ctx.findings:
         if f.kind == "unknown-vocabulary" and f.actual in flagged:
             continue  # said more precisely by a spelling finding
-        line = f.line or lines.get(f.param or "", 0)
-        fix = f"Did you mean {f.suggestions[0]}?" if f.suggestions else None
-        hits.append(Hit(f.kind, line, f.message, fix, f.param, f.actual,
-                        f.actual is not None and f.relation is None))
-    return sorted(hits, key=lambda h: h.line)
+        hits.append(replace(f, line=f.line or lines.get(f.param or "", 0)))
+    return sorted(hits, key=lambda h: h.line or 0)
 
 
-__all__ = ["Hit", "legacy_hits", "spelling_hits", "trace_of"]
+__all__ = ["legacy_hits", "spelling_hits", "trace_of"]
