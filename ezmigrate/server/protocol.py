@@ -45,6 +45,17 @@ class EzServer(LanguageServer):
         self.pending: dict[str, asyncio.TimerHandle] = {}
         self.found: dict[str, list[Diagnostic]] = {}
 
+    def forget_finished(self) -> None:
+        """Drop the finished handler futures pygls keeps. pygls 2.1 files the future of a
+        notification whose built-in handler is a generator (``didOpen``, ``didChange``,
+        ``didSave``, ``didClose``) under a fresh id that nothing ever removes: one future,
+        a lock and a condition per keystroke, for the whole session. A finished one has
+        nothing left to answer or cancel."""
+        futures = getattr(self.protocol, "_request_futures", None)
+        if isinstance(futures, dict):
+            for key in [key for key, future in futures.items() if future.done()]:
+                del futures[key]
+
     def cancel_waiting(self, uri: str) -> None:
         """Drop the debounced check a change of ``uri`` left waiting, if any."""
         waiting = self.pending.pop(uri, None)
@@ -77,6 +88,7 @@ def _lsp_diagnostic(d: Diagnostic) -> lsp.Diagnostic:
 def publish(server: EzServer, uri: str) -> None:
     """Check the document at ``uri`` as it stands in the editor and publish the findings."""
     server.cancel_waiting(uri)  # a save or an open while a change waits: check once
+    server.forget_finished()
     if server.ws is None:
         return
     document = server.workspace.get_text_document(uri)
