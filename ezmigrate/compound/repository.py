@@ -11,7 +11,11 @@ Files not named are read here with ``ast`` only (no codemod, no tracing): plain 
 descriptions with their keys, every other description class as a type whose keys are not
 judged, implementation labels, description bases, and literal trees. A file ``ast`` cannot
 parse (Python 2, a syntax error) still gives its class names, recovered by a tolerant
-``tokenize`` scan, so that its descriptions are never reported as unknown child types.
+``tokenize`` scan, so that its descriptions are never reported as unknown child types; and
+a description class of it that parses on its own (the Python 2 syntax elsewhere: a
+``print x`` in an implementation, an ``except X, e:``) is read with the module's imports
+like a plain one, its keys known (``read_classes``): a Python 2 module is loaded by a
+Python 2 skill manager, so its descriptions are real.
 """
 
 from __future__ import annotations
@@ -19,6 +23,7 @@ from __future__ import annotations
 import ast
 import io
 import os
+import re
 import tokenize
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -47,6 +52,7 @@ SCAN_WHEN = (*READ_WHEN, b"SkillDescription")
 description class with no ``createDescription`` of its own."""
 UNPARSED = "in a file Python 3 cannot parse"
 TOP_CLASS = "class@0"
+_LINES = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")
 _LAYOUT = frozenset({tokenize.NL, tokenize.NEWLINE, tokenize.COMMENT, tokenize.INDENT,
                      tokenize.DEDENT})
 
@@ -99,7 +105,7 @@ def scan_repository(named: Sequence[Path], exclude: Sequence[str] = (),
     for candidate, data in read:  # the run reads these itself, unless ast cannot parse them
         path = str(candidate.path)
         if recovered is not None and path in recovered:
-            _add_recovered(candidate, recovered[path], scan)
+            _add_recovered(candidate, recovered[path], scan, data)
         elif path not in skipped and any(m in data for m in SCAN_WHEN):
             _scan_file(candidate, data, scan, unparsable_only=True)
     items: list[tuple[Candidate, bytes]] = []
@@ -130,7 +136,7 @@ def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan,
         if unparsable_only:
             return
     except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
-        _add_recovered(candidate, recover_classes(data), scan)
+        _add_recovered(candidate, recover_classes(data), scan, data)
         return
     scan.labels += implementations(tree)
     scan.bases += class_bases(tree)
@@ -158,17 +164,106 @@ def _scan_file(candidate: Candidate, data: bytes, scan: RepositoryScan,
             scan.compounds.append(found)
 
 
-def _add_recovered(candidate: Candidate, recovered: Recovered, scan: RepositoryScan) -> None:
-    """What a module ``ast`` cannot parse adds to the scan (``recover_classes``)."""
+def _add_recovered(candidate: Candidate, recovered: Recovered, scan: RepositoryScan,
+                   data: bytes) -> None:
+    """What a module ``ast`` cannot parse adds to the scan (``recover_classes``): its
+    description classes with their keys where they read on their own (``read_classes``),
+    else as types whose keys are unknown."""
     if recovered is None:
         scan.unread.append(candidate.relative)
         return
+    models = read_classes(data, candidate.relative) \
+        if any(described is None for _, _, described in recovered) else {}
     for name, line, described in recovered:
         if described is None:
-            scan.descriptions.append(DescriptionInfo(name, {}, f"repository ({UNPARSED})",
-                                                     str(candidate.path), line, complete=False))
+            scan.descriptions.append(description_of(name, models.get((name, line)),
+                                                    f"repository ({UNPARSED})",
+                                                    str(candidate.path), line))
         else:
             scan.labels.append((name, described))
+
+
+def read_classes(data: bytes, path: str) -> dict[tuple[str, int], dict[str, Any]]:
+    """``(class, line)`` -> model of the plain descriptions of a module ``ast`` cannot
+    parse, read class by class: each top-level class that parses on its own, with the
+    module's top-level imports that do (every other line blanked, so lines stay where they
+    are), is read by ``read_plain`` as in a parsable file. A class that does not parse on
+    its own (Python 2 syntax in it), or that ``read_plain`` declines or keeps, is left
+    out: its keys stay unknown."""
+    split = _statements(data)
+    if split is None:
+        return {}
+    lines, statements = split
+    imports: list[tuple[int, int]] = []
+    classes: list[tuple[int, int]] = []
+    for start, end in statements:
+        tree = _parse_lines(lines, [(start, end)])
+        if tree is None or not tree.body:
+            continue
+        if all(isinstance(node, (ast.Import, ast.ImportFrom)) for node in tree.body):
+            imports.append((start, end))
+        elif len(tree.body) == 1 and isinstance(tree.body[0], ast.ClassDef):
+            classes.append((start, end))
+    from ..lint.plain_reader import Declined, read_plain  # libcst: only a scan that reads
+
+    models: dict[tuple[str, int], dict[str, Any]] = {}
+    for start, end in classes:
+        kept = [*imports, (start, end)]
+        tree = _parse_lines(lines, kept)
+        if tree is None:
+            continue
+        verdict = read_plain(_blanked(lines, kept).encode("utf-8"), path, tree)
+        if isinstance(verdict, Declined):
+            continue
+        for skill in verdict.skills:
+            if skill.status == "converted" and skill.model is not None:
+                models[(skill.name, skill.line)] = skill.model
+    return models
+
+
+def _statements(data: bytes) -> tuple[list[str], list[tuple[int, int]]] | None:
+    """The module's lines and the ``(first, last)`` lines (1-based) of its top-level
+    statements, by ``tokenize`` (a decorated statement with its decorators). A statement
+    the tokens stop in (an error) is left out; None when the text cannot be decoded."""
+    try:
+        encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
+        text = data.decode(encoding)
+    except (SyntaxError, UnicodeError, LookupError):
+        return None
+    if text.startswith("\ufeff"):
+        text = text[1:]
+    lines = _LINES.findall(text)  # not ``splitlines``: Python ends a line at these alone
+    starts: list[int] = []
+    fresh, decorated = True, False
+    try:
+        for token in tokenize.generate_tokens(iter([*lines, ""]).__next__):
+            if token.type == tokenize.NEWLINE:
+                fresh = True
+            elif token.type in _LAYOUT or token.type == tokenize.ENDMARKER or not fresh:
+                continue
+            else:
+                fresh = False
+                if token.start[1] == 0 and not decorated:
+                    starts.append(token.start[0])
+                decorated = token.start[1] == 0 and token.string == "@"
+        ends = [*(s - 1 for s in starts[1:]), len(lines)]
+    except (tokenize.TokenError, SyntaxError):
+        ends = [s - 1 for s in starts[1:]]  # the last statement never closed
+    return lines, list(zip(starts, ends, strict=False))  # ends: one short after an error
+
+
+def _blanked(lines: list[str], kept: list[tuple[int, int]]) -> str:
+    """The module's text with only the ``kept`` lines, the others left empty."""
+    keep = {n for start, end in kept for n in range(start, end + 1)}
+    return "".join(line if n in keep else "\n" for n, line in enumerate(lines, 1))
+
+
+def _parse_lines(lines: list[str], kept: list[tuple[int, int]]) -> ast.Module | None:
+    """``ast`` of the ``kept`` lines alone (``_blanked``), or None."""
+    try:
+        return ast.parse(_blanked(lines, kept))
+    except (SyntaxError, ValueError, UnicodeError, MemoryError, RecursionError):
+        return None
 
 
 def _looks_described(node: ast.ClassDef) -> bool:

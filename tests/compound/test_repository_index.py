@@ -13,7 +13,7 @@ import textwrap
 from pathlib import Path
 
 from ezmigrate.checking.pipeline import run_check
-from ezmigrate.compound.repository import recover_classes
+from ezmigrate.compound.repository import read_classes, recover_classes
 from ezmigrate.files.discover import repository_root
 from ezmigrate.lint.diagnostic import Diagnostic
 from ezmigrate.verify.pool import PoolConfig
@@ -94,7 +94,7 @@ def test_one_named_file_gets_exactly_the_findings_of_the_repository_run(tmp_path
 
 
 def test_descriptions_of_a_python_2_file_are_recovered_not_reported(tmp_path: Path):
-    py2 = description("Scan", "Area") + "\n\ndef legacy():\n    print 'python 2'\n"
+    py2 = description("Scan", "Area") + "        print 'python 2'\n"  # in the class itself
     repo = write(tmp_path / "repo", {"pkg/old.py": HEADER + py2,
                                      "pkg/tasks.py": HEADER + compound("Scan", "Nope")})
     assert ez3([repo / "pkg" / "tasks.py"]) == []  # the type exists; its keys are unknown
@@ -194,3 +194,95 @@ def test_a_file_naming_a_description_in_a_comment_is_read_where_the_run_reads(
     assert brief(found) == {("tasks.py", 18, "EZ301", "info")}
     assert "notes.py" in found[0].message and "could not be read" in found[0].message
     assert scanned == []
+
+
+# A module ``ast`` cannot parse (Python 2) is read class by class (``read_classes``): a
+# description class that parses on its own, with the module's imports, has its keys known;
+# one holding Python 2 syntax itself stays a type whose keys are unknown.
+IMPLEMENTATION = textwrap.dedent('''
+
+
+    class scan(SkillBase):
+        def createDescription(self):
+            self.setDescription(Scan(), self.__class__.__name__)
+
+        def execute(self):
+            try:
+                pass
+            except Exception, e:
+                print "failed", e
+            return self.success("")
+    ''')
+
+
+def remapping(child: str, key: str) -> str:
+    return textwrap.dedent(f'''
+
+
+        class Task(SkillDescription):
+            def createDescription(self):
+                self.addParam("Place", Element("skiros:Location"), ParamTypes.Required)
+
+
+        class task(SkillBase):
+            def createDescription(self):
+                self.setDescription(Task(), self.__class__.__name__)
+
+            def expand(self, skill):
+                skill(self.skill("{child}", "", remap={{"{key}": "Place"}}))
+        ''')
+
+
+def test_a_python_2_module_whose_description_parses_alone_has_its_keys_known(
+        tmp_path: Path):
+    py2 = HEADER + description("Scan", "Area") + IMPLEMENTATION
+    repo = write(tmp_path / "repo", {"pkg/old.py": py2,
+                                     "pkg/tasks.py": HEADER + remapping("Scan", "Aera")})
+    found = brief(ez3([repo / "pkg" / "tasks.py"]))
+    assert {(f[0], f[2]) for f in found} == {("tasks.py", "EZ304")}
+    assert {(f[0], f[2]) for f in brief(ez3([repo]))} == {("tasks.py", "EZ304")}
+    (repo / "pkg" / "tasks.py").write_text(HEADER + remapping("Scan", "Area"),
+                                           encoding="utf-8")
+    assert ez3([repo / "pkg" / "tasks.py"]) == []
+    assert ez3([repo]) == []
+    (repo / "pkg" / "tasks.py").write_text(HEADER + compound("Scan", "Nope"),
+                                           encoding="utf-8")
+    assert {f[2] for f in brief(ez3([repo]))} == {"EZ307"}
+
+
+def test_a_python_2_description_class_stays_unknown(tmp_path: Path):
+    """Near miss: the Python 2 syntax in the description class itself."""
+    py2 = (HEADER + description("Scan", "Area") + "        print 'python 2'\n"
+           + IMPLEMENTATION)
+    repo = write(tmp_path / "repo", {"pkg/old.py": py2,
+                                     "pkg/tasks.py": HEADER + remapping("Scan", "Aera")})
+    assert ez3([repo / "pkg" / "tasks.py"]) == []
+    assert ez3([repo]) == []
+
+
+def test_read_classes_reads_only_what_parses_on_its_own():
+    source = (HEADER + "X = 'Area'\n" + description("Scan", "Area")
+              + description("Wave") + "        print 'x'\n"
+              + "\n\n@decorated\nclass Marked(SkillDescription):\n"
+              "    def createDescription(self):\n        self.addParam('A', 1, "
+              "ParamTypes.Optional)\n"
+              + "\n\nclass Named(SkillDescription):\n    def createDescription(self):\n"
+              "        self.addParam(X, 1, ParamTypes.Optional)\n"
+              + "\n\nclass Derived(Scan):\n    pass\n"
+              + IMPLEMENTATION).encode()
+    models = read_classes(source, "old.py")
+    assert list(models) == [("Scan", 8)]  # not Wave (print), Marked, Named, Derived
+    assert {p["key"] for p in models[("Scan", 8)]["params"]} >= {"Area"}
+
+
+def test_read_classes_keeps_lines_and_encoding():
+    source = ("# -*- coding: latin-1 -*-\r\nfrom skiros2_common.core.abstract_skill import "
+              "SkillDescription\r\nfrom skiros2_common.core.params import ParamTypes\r\n"
+              "\r\nprint 'caf\xe9'\r\n\r\nclass Scan(SkillDescription):\r\n"
+              "    def createDescription(self):\r\n"
+              "        self.addParam('Caf\xe9', 1, ParamTypes.Optional)\r\n").encode("latin-1")
+    models = read_classes(source, "old.py")
+    assert list(models) == [("Scan", 7)]
+    assert {p["key"] for p in models[("Scan", 7)]["params"]} >= {"Caf\xe9"}
+    assert read_classes(b"\xff\xfeclass Scan(SkillDescription):\n", "x.py") == {}
+    assert read_classes(source[:-30], "old.py") == {}  # the tokens stop in the class
