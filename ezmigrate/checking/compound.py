@@ -32,8 +32,8 @@ def run(run: CheckRun) -> None:
     found: dict[tuple[str, int, str, str], Diagnostic] = {}
     for path, finding in run.compound_run.findings:
         where = Positions(run.outcome.sources.get(path, ""))
-        item = diagnostic(path, where, finding.kind, finding.line, finding.message,
-                          finding.implementation, finding.suggestion, finding.severity)
+        item = diagnostic(path, where, finding.kind, finding.line or 0, finding.message,
+                          finding.skill, finding.fix, finding.severity)
         found.setdefault((path, item.line, item.code, item.message), item)
     run.diagnostics.extend(found.values())
     run.compound = CompoundFound([m for _, m in run.compound_run.models

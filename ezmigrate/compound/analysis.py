@@ -16,10 +16,11 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ezskiros_runtime.compound.checks import CompoundFinding, check_model
+from ezskiros_runtime.compound.checks import check_model, compound_finding
 from ezskiros_runtime.compound.library import SkillIndex
 from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.compound.trace import Unanalysable
+from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.ontology.discovery import package_root
 from ezskiros_runtime.ontology.vendored import package_name
 
@@ -54,7 +55,7 @@ class CompoundRun:
     """Every compound skill of a run (by file) and its findings."""
 
     models: list[tuple[str, CompoundModel | Unanalysable]] = field(default_factory=list)
-    findings: list[tuple[str, CompoundFinding]] = field(default_factory=list)
+    findings: list[tuple[str, Finding]] = field(default_factory=list)
 
 
 @dataclass
@@ -286,7 +287,7 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
         # what the syntax shows of every self.skill call: a traced tree took one branch of
         # expand, so a mistake in another (a keyword typo behind an if) shows only here
         seen = {(f.kind, f.line) for f in found}
-        run.findings += [(path, CompoundFinding(kind, line, message, model.implementation))
+        run.findings += [(path, compound_finding(kind, line, message, model.implementation))
                          for kind, line, message in trees.syntax.get(
                              (path, model.implementation), ())
                          if (kind, line) not in seen]
@@ -297,7 +298,7 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
 
 
 def _undescribed(trees: Trees, bases: list[tuple[str, str]],
-                 launched: frozenset[str] | None) -> list[tuple[str, CompoundFinding]]:
+                 launched: frozenset[str] | None) -> list[tuple[str, Finding]]:
     """An implementation (its bases reach SkiROS2's) that no class derives from, whose
     ``createDescription`` never calls ``setDescription``: its type stays SkillCore's
     empty one, and the skill manager cannot add it to the world model (issue #109). Info
@@ -319,7 +320,7 @@ def _undescribed(trees: Trees, bases: list[tuple[str, str]],
                 or not any(implementation(b, frozenset({cls})) for b in own):
             continue
         unloaded = launched is not None and cls not in launched
-        found.append((path, CompoundFinding(
+        found.append((path, compound_finding(
             "no-set-description", line,
             f"{cls}'s createDescription never calls self.setDescription(Description(), "
             "label): the implementation keeps SkillCore's empty type and label, so when "
@@ -332,13 +333,13 @@ def _undescribed(trees: Trees, bases: list[tuple[str, str]],
     return found
 
 
-def once_per_project(findings: list[tuple[str, CompoundFinding]]
-                     ) -> list[tuple[str, CompoundFinding]]:
+def once_per_project(findings: list[tuple[str, Finding]]
+                     ) -> list[tuple[str, Finding]]:
     """A processor that upstream lacks is one finding per project (at its first use, with
     its count of uses), not one per tree that uses it."""
     return once_per_cause(
         findings,
-        lambda item: item[1].child if item[1].kind == "processor-not-upstream" else None,
+        lambda item: item[1].subject if item[1].kind == "processor-not-upstream" else None,
         lambda item, name, uses: (item[0], replace(
             item[1], message=f"{item[1].message}; {uses} uses of {name} in the project, "
                              "reported once")))

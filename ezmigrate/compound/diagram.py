@@ -12,7 +12,6 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from ezskiros_runtime.codes import rule_for
-from ezskiros_runtime.compound.checks import CompoundFinding
 from ezskiros_runtime.compound.model import (
     CallProblem,
     Child,
@@ -21,6 +20,7 @@ from ezskiros_runtime.compound.model import (
     SkillNode,
 )
 from ezskiros_runtime.compound.trace import Unanalysable
+from ezskiros_runtime.diagnostics import Finding
 
 STYLES = ("    classDef error fill:#fde0e0,stroke:#c62828,stroke-width:2px",
           "    classDef warning fill:#fff4d6,stroke:#b7791f",
@@ -48,13 +48,14 @@ def _edge(index: int, node: Child) -> str:
     return _text(" · ".join(parts))
 
 
-def mermaid(model: CompoundModel, findings: Sequence[CompoundFinding] = ()) -> str:
+def mermaid(model: CompoundModel, findings: Sequence[Finding] = ()) -> str:
     """The flowchart of one tree (a fenced ``mermaid`` block)."""
     worst: dict[int, str] = {}
     for finding in findings:
         severity = rule_for(finding.kind).severity
-        if _RANK[severity] < _RANK.get(worst.get(finding.line, "info"), 3):
-            worst[finding.line] = severity
+        line = finding.line or 0
+        if _RANK[severity] < _RANK.get(worst.get(line, "info"), 3):
+            worst[line] = severity
     lines = ["```mermaid", "flowchart TD",
              f'    n0{{{{"{_text(model.implementation)}<br/>{_text(model.processor)}"}}}}']
     counter = [0]
@@ -82,13 +83,13 @@ def mermaid(model: CompoundModel, findings: Sequence[CompoundFinding] = ()) -> s
 
 
 def markdown_section(models: Sequence[tuple[str, CompoundModel | Unanalysable]],
-                     findings: Sequence[tuple[str, CompoundFinding]]) -> list[str]:
+                     findings: Sequence[tuple[str, Finding]]) -> list[str]:
     """``## Compound skills``: a diagram and the findings of each, or ``[]`` for none."""
     if not models:
         return []
     out = ["## Compound skills", ""]
     for path, model in models:
-        own = [f for p, f in findings if p == path and f.implementation == model.implementation]
+        own = [f for p, f in findings if p == path and f.skill == model.implementation]
         name = Path(path).name
         if isinstance(model, Unanalysable):
             out += [f"### `{model.implementation}` ({name}, line {model.line})", "",

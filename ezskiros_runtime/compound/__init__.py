@@ -13,7 +13,8 @@ from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from ..codes import rule_for
-from .checks import CompoundFinding, check_model
+from ..diagnostics import Finding
+from .checks import check_model, compound_finding
 from .library import DescriptionInfo, SkillIndex
 from .model import CompoundModel, ProcessorNode, SkillNode
 from .trace import Unanalysable, trace
@@ -25,9 +26,9 @@ if TYPE_CHECKING:
 class CompoundSkillError(TypeError):
     """A compound skill's tree has a mistake SkiROS2 would only log when it runs."""
 
-    def __init__(self, findings: list[CompoundFinding]) -> None:
+    def __init__(self, findings: list[Finding]) -> None:
         self.findings = findings
-        super().__init__("; ".join(f"{rule_for(f.kind).code} {f.implementation}: {f.message}"
+        super().__init__("; ".join(f"{rule_for(f.kind).code} {f.skill}: {f.message}"
                                    for f in findings))
 
 
@@ -50,7 +51,7 @@ def index_of(descriptions: Iterable[type], *, standard_library: bool = True) -> 
 
 def check_compound(implementation: type, index: SkillIndex | None = None, *,
                    ontology: OntologyIndex | None = None,
-                   strict: bool | None = None) -> list[CompoundFinding]:
+                   strict: bool | None = None) -> list[Finding]:
     """The findings of one compound skill implementation's tree (see the module doc)."""
     from ..dsl.policy import is_strict
 
@@ -64,6 +65,17 @@ def check_compound(implementation: type, index: SkillIndex | None = None, *,
     return findings
 
 
-__all__ = ["CompoundFinding", "CompoundModel", "CompoundSkillError", "DescriptionInfo",
-           "ProcessorNode", "SkillIndex", "SkillNode", "Unanalysable", "check_compound",
-           "index_of", "trace"]
+__all__ = [
+    "CompoundModel",
+    "CompoundSkillError",
+    "DescriptionInfo",
+    "Finding",
+    "ProcessorNode",
+    "SkillIndex",
+    "SkillNode",
+    "Unanalysable",
+    "check_compound",
+    "compound_finding",
+    "index_of",
+    "trace",
+]

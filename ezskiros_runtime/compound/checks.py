@@ -17,6 +17,8 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
+from ..codes import rule_for
+from ..diagnostics import Finding
 from .library import ROBOT, DescriptionInfo, SkillIndex, type_name
 from .model import COMPUTED, CallProblem, CompoundModel, Node, ProcessorNode, SkillNode
 from .trace import PARAMETER_OBJECT, Unanalysable, parameter_object_message
@@ -46,29 +48,26 @@ def _did_you_mean(key: str, candidates: set[str]) -> str | None:
     return f"Did you mean {left[0]!r}?" if len(left) == 1 else None
 
 
-@dataclass(frozen=True)
-class CompoundFinding:
-    """One finding: its kind (a catalogue key), line, the compound class and the child."""
-
-    kind: str
-    line: int
-    message: str
-    implementation: str
-    child: str = ""
-    suggestion: str | None = None
-    severity: str | None = None
-    """Lower than the code's own when the finding rests on something not resolved."""
+def compound_finding(kind: str, line: int, message: str, implementation: str,
+                     child: str = "", suggestion: str | None = None,
+                     severity: str | None = None) -> Finding:
+    """One finding of a compound skill, as the runtime's one ``Finding`` type: its kind (a
+    catalogue key), line, the compound class (``skill``) and the child (``subject``);
+    ``severity`` lower than the code's own when the finding rests on something not
+    resolved."""
+    return Finding(kind, severity or rule_for(kind).severity, message, None, line,
+                   implementation, subject=child, fix=suggestion)
 
 
 def check_model(model: CompoundModel | Unanalysable, index: SkillIndex,
-                ontology: OntologyIndex | None = None) -> list[CompoundFinding]:
+                ontology: OntologyIndex | None = None) -> list[Finding]:
     """Every finding of one compound skill, in tree order."""
     if isinstance(model, Unanalysable):
-        return [CompoundFinding("compound-unanalysable", model.line,
+        return [compound_finding("compound-unanalysable", model.line,
                                 f"the tree of {model.implementation} could not be read "
                                 f"statically nor traced ({model.reason}); it is not checked",
                                 model.implementation)]
-    unread = [CompoundFinding("compound-unanalysable", model.gaps[0][0],
+    unread = [compound_finding("compound-unanalysable", model.gaps[0][0],
                               f"part of the tree of {model.implementation} is not read: "
                               f"{'; '.join(why for _, why in model.gaps)}, which only "
                               "running expand gives (check --trace runs it in the sandbox); "
@@ -270,7 +269,7 @@ class _Checker:
         self.model = model
         self.index = index
         self.ontology = ontology
-        self.found: list[CompoundFinding] = []
+        self.found: list[Finding] = []
         self.parent = index.descriptions.get(model.description or "")
         self.nodes = model.walk()
         self.view = _View(index, model.path)
@@ -289,11 +288,11 @@ class _Checker:
     def add(self, kind: str, line: int, message: str, child: str = "",
             suggestion: str | None = None, severity: str | None = None) -> None:
         how = OBTAINED[self.model.obtained]
-        self.found.append(CompoundFinding(kind, line or self.model.expand_line,
+        self.found.append(compound_finding(kind, line or self.model.expand_line,
                                           f"{message} ({how})", self.model.implementation,
                                           child, suggestion, severity))
 
-    def run(self) -> list[CompoundFinding]:
+    def run(self) -> list[Finding]:
         self._processor(self.model.processor, self.model.expand_line)
         for node, _ in self.nodes:
             if isinstance(node, CallProblem):

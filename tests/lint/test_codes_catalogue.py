@@ -23,7 +23,7 @@ from ezskiros_runtime.diagnostics import SEVERITIES, Finding
 from ezskiros_runtime.dsl.policy import DEFAULT_SEVERITY
 
 ROOT = Path(__file__).resolve().parents[2]
-EMITTERS = {"add", "finding", "Finding", "_failure", "emit", "CompoundFinding"}
+EMITTERS = {"add", "finding", "Finding", "_failure", "emit", "compound_finding"}
 """Calls whose first string argument is a finding kind: the runtime's ``ctx.add``, the
 codemod's ``skill.finding``, both ``Finding`` types, the lint's ``emit``."""
 

@@ -148,7 +148,7 @@ def test_check_compound_traces_and_returns_findings_as_data() -> None:
     index = index_of([Task])
     index.add_description(DescriptionInfo("Navigate", {"Target": "skiros:Location"}))
     findings = check_compound(task, index, ontology=ONTOLOGY, strict=False)
-    assert [(code_for(f.kind), f.child, f.suggestion) for f in findings] == [
+    assert [(code_for(f.kind), f.subject, f.fix) for f in findings] == [
         ("EZ307", "Wait", "Did you mean 'Duration'?")]
     with pytest.raises(CompoundSkillError, match="EZ307 task"):
         check_compound(task, index, strict=True)

@@ -17,9 +17,10 @@ from typing import Any
 
 import pytest
 
-from ezskiros_runtime.compound.checks import CompoundFinding, check_model
+from ezskiros_runtime.compound.checks import check_model
 from ezskiros_runtime.compound.library import DescriptionInfo, SkillIndex
 from ezskiros_runtime.compound.model import CompoundModel, ProcessorNode, SkillNode
+from ezskiros_runtime.diagnostics import Finding
 
 LOCATION = "skiros:Location"
 
@@ -86,7 +87,7 @@ def _wide(copies: int, index: SkillIndex) -> CompoundModel:
                          "/lab/cell_a/src/cell_a/tasks.py", 1, 2)
 
 
-def _check_wide(copies: int) -> tuple[list[CompoundFinding], dict[str, int]]:
+def _check_wide(copies: int) -> tuple[list[Finding], dict[str, int]]:
     index = CountingIndex()
     _steps(index)
     model = _wide(copies, index)
@@ -123,7 +124,7 @@ def _lattice(levels: int, width: int, index: SkillIndex) -> None:
             tuple(SkillNode(below, "", (("Where", "Where"),)) for _ in range(width))))
 
 
-def _check_deep(levels: int, width: int) -> tuple[list[CompoundFinding], int]:
+def _check_deep(levels: int, width: int) -> tuple[list[Finding], int]:
     index = SkillIndex.with_standard_library()
     index.add_description(DescriptionInfo("Mission", {"Site": LOCATION}))
     _lattice(levels, width, index)
