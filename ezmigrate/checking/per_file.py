@@ -43,7 +43,8 @@ def legacy_diagnostics(path: str, result: FileResult, positions: Positions,
         if result.error_kind == "unreadable":  # issue 42: EZ905 by where the file lives
             from ..lint.skill_library import unreadable_severity
 
-            severity, message = unreadable_severity(path, message, libraries)
+            severity, message = unreadable_severity(path, message, result.python2,
+                                                    libraries)
         found.append(diagnostic(path, positions, result.error_kind, result.error_line or 0,
                                 message, severity=severity))
     for skill in result.skills:

@@ -25,9 +25,6 @@ from ezskiros_runtime.ontology.discovery import package_root
 
 from ..files.package_xml import ros_flavour
 
-PYTHON2 = ("cannot parse: Python 2 syntax", "cannot parse: Missing parentheses in call to")
-"""How a ``FileResult.error`` for Python 2 syntax starts (``codemod.core.python2``)."""
-
 
 def library_of(path: Path, libraries: Iterable[str] = ()) -> tuple[Path, Path] | None:
     """``(library folder, ROS package folder)`` of a module the skill manager imports, or
@@ -61,18 +58,19 @@ def python3_robot(package: Path) -> bool:
         and "ROS_PYTHON_VERSION == 2" not in text  # a manifest for both: maybe Python 2
 
 
-def unreadable_severity(path: str, message: str, libraries: Iterable[str] = ()
-                        ) -> tuple[str, str]:
+def unreadable_severity(path: str, message: str, python2: bool,
+                        libraries: Iterable[str] = ()) -> tuple[str, str]:
     """``(severity, message)`` of an EZ905 finding for the file at ``path``: an error in a
     module of a skill library the robot's Python cannot import, info elsewhere (the
-    message then says why)."""
+    message then says why). ``python2``: the error is Python 2 syntax
+    (``FileResult.python2``)."""
     file = Path(path).resolve()
     found = library_of(file, libraries)
     if found is None:
         return "info", (f"{message}; info: the file is in no skill library package the skill "
                         "manager imports (PluginLoader.__import_plugins)")
     top, package = found
-    if message.startswith(PYTHON2) and not python3_robot(package):
+    if python2 and not python3_robot(package):
         return "info", (f"{message}; info: Python 2 syntax, and nothing says the ROS package "
                         f"{package.name} runs on Python 3 (a Python 2 ROS imports it)")
     if file.name == "__init__.py" and file.parent != top:

@@ -109,6 +109,9 @@ class FileResult:
     error_kind: str = "unreadable"
     """The catalogue kind of ``error``: ``unreadable`` (EZ905), or ``lossy-rewrite`` (EZ906)
     for a file the line guard (``core/guard.py``) kept from being written."""
+    python2: bool = False
+    """``error`` is Python 2 syntax no Python 3 grammar has (``codemod/core/python2``): a
+    Python 2 robot imports the file (``lint/skill_library`` judges it so)."""
     notes: list[str] = field(default_factory=list)
     python: str = ""
     """The interpreter that loaded the file when verifying, when it was not the run's own

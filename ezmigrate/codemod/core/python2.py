@@ -21,6 +21,7 @@ import ast
 import io
 import re
 import tokenize
+from dataclasses import replace
 
 from ...report.results import FileResult, unparsable
 
@@ -52,7 +53,8 @@ def python2_refusal(path: str, raw: bytes, error: SyntaxError) -> FileResult | N
     if not error.lineno or b"\0" in raw:
         return None  # a NUL byte is reported as binary data (``syntax_error_location``)
     if _STATEMENT.match(error.msg or ""):
-        return unparsable(path, error.msg, error.lineno, error.offset or 1)
+        return replace(unparsable(path, error.msg, error.lineno, error.offset or 1),
+                       python2=True)
     if error.msg != _TUPLE_CLAUSE or not EXCEPT_COMMA.search(raw):
         return None  # (``error`` is Python's own parse failing: no need to parse again)
     found = comma_handler(raw)
@@ -63,8 +65,9 @@ def python2_refusal(path: str, raw: bytes, error: SyntaxError) -> FileResult | N
 
 def except_comma(path: str, line: int, column: int) -> FileResult:
     """The result for a file with Python 2's ``except X, e:`` at ``line``, ``column``."""
-    return unparsable(path, "Python 2 syntax `except X, e:`", line, column,
-                      "port the file to Python 3 (`except X as e:`) first")
+    return replace(unparsable(path, "Python 2 syntax `except X, e:`", line, column,
+                              "port the file to Python 3 (`except X as e:`) first"),
+                   python2=True)
 
 
 def python_parses(raw: bytes) -> bool:
