@@ -154,15 +154,15 @@ RECALL: tuple[Recalled, ...] = (
     Recalled("EZ209", "relation-typo", 40, 40),
     Recalled("EZ209", "property-typo", 40, 36),
     Recalled("EZ301", "child-type-typo", 40, 40),
-    Recalled("EZ304", "remap-key-typo", 40, 33),
-    Recalled("EZ307", "specify-key-typo", 40, 38),
+    Recalled("EZ304", "remap-key-typo", 40, 38),
+    Recalled("EZ307", "specify-key-typo", 40, 39),
     Recalled("EZ317", "processor-typo", 40, 39),
     Recalled("EZ318", "child-label-typo", 40, 36),
 )
 """``python bench/bench_recall.py /work/labs`` (seed 42, 11 repositories), the run of
 bench/RESULTS.md's last section: per rule, the operator whose mutants it is there to find
 and how many of them it found."""
-RECALL_ALL = (440, 419)
+RECALL_ALL = (440, 425)
 """Mutants made and found (any code) in that run."""
 COLLATERAL = 2
 """Mutants of that run with a new warning or error outside the mutated statement."""
