@@ -13,7 +13,7 @@ import os
 import shutil
 import sys
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any, List
 
@@ -30,6 +30,22 @@ for _folder in (_CACHE, _CHECK_CACHE):  # nothing of the session is left in /tmp
 
 
 _SUMMARY = pytest.StashKey[List[str]]()
+
+
+@pytest.fixture
+def core_ontology() -> Iterator[None]:
+    """The bundled SkiROS2 core as the runtime's active ontology for one test, the one
+    before it restored after (tests that read EzSkiROS code as the runtime would)."""
+    from ezskiros_runtime.ontology import active_index, use_ontology
+    from ezskiros_runtime.ontology.index import bundled_ontology_path
+    from ezskiros_runtime.ontology.load import load_index
+
+    previous = active_index()
+    use_ontology(load_index([bundled_ontology_path()]))
+    try:
+        yield
+    finally:
+        use_ontology(previous)
 
 
 @pytest.fixture

@@ -12,9 +12,6 @@ import pytest
 from ezmigrate.lint.ezskiros_static import read_ezskiros_statically
 from ezskiros_runtime.dsl.policy import collecting
 from ezskiros_runtime.legacy.loader import load_bytes
-from ezskiros_runtime.ontology import active_index, use_ontology
-from ezskiros_runtime.ontology.index import bundled_ontology_path
-from ezskiros_runtime.ontology.load import load_index
 
 MODULE = '''\
 from ezskiros_runtime import SkillDescription, Annotated, INFERRED, OPTIONAL, REQUIRED, ELEMENT
@@ -42,14 +39,7 @@ class Broken(SkillDescription):
 '''
 
 
-@pytest.fixture(autouse=True)
-def core():
-    previous = active_index()
-    use_ontology(load_index([bundled_ontology_path()]))
-    try:
-        yield
-    finally:
-        use_ontology(previous)
+pytestmark = pytest.mark.usefixtures("core_ontology")
 
 
 def test_the_annotated_form_reads_as_it_loads(tmp_path: Path) -> None:

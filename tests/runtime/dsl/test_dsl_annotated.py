@@ -22,9 +22,6 @@ from ezskiros_runtime.diagnostics import DescriptionError
 from ezskiros_runtime.dsl.markers import ParamAnnotation
 from ezskiros_runtime.dsl.policy import collecting
 from ezskiros_runtime.legacy.loader import load_bytes
-from ezskiros_runtime.ontology import active_index, use_ontology
-from ezskiros_runtime.ontology.index import bundled_ontology_path
-from ezskiros_runtime.ontology.load import load_index
 
 HEADER = ("from ezskiros_runtime import (SkillDescription, Annotated, INFERRED, OPTIONAL, "
           "REQUIRED, ELEMENT, KEY, DESC, Lock, Consume)\n"
@@ -54,14 +51,7 @@ PAIRS = [
 ]
 
 
-@pytest.fixture(autouse=True)
-def core():
-    previous = active_index()
-    use_ontology(load_index([bundled_ontology_path()]))
-    try:
-        yield
-    finally:
-        use_ontology(previous)
+pytestmark = pytest.mark.usefixtures("core_ontology")
 
 
 def _models(folder: Path, name: str, line: str, future: bool) -> list[str]:
