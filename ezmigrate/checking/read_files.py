@@ -38,6 +38,8 @@ class FileReadings:
     files: list[tuple[Candidate, bytes | None, FileFacts | None]] = field(default_factory=list)
     alone: dict[str, tuple[bytes, FileResult]] = field(default_factory=dict)
     """The codemod's readings, taken already (by the reading pool or from the cache)."""
+    typed: set[str] = field(default_factory=set)
+    """Files whose bytes are an overlay's (an editor's unsaved buffer), not the disk's."""
 
 
 def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache | None,
@@ -56,6 +58,8 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
     missing: list[tuple[Candidate, bytes, bool | None, str | None]] = []
     for candidate in candidates:
         data: bytes | None = overlay.get(candidate.path.resolve()) if overlay else None
+        if data is not None:
+            readings.typed.add(str(candidate.path))
         try:
             data = candidate.path.read_bytes() if data is None else data
         except OSError:
@@ -116,6 +120,11 @@ def declarations(readings: FileReadings, index: OntologyIndex | None, workers: i
         else:
             plain.append((candidate, data, reading.static))
     yield from plain
+    for candidate, data in [(c, d) for c, d in declined if str(c.path) in readings.typed
+                            and str(c.path) in readings.alone]:
+        # an unsaved buffer the codemod read alone: ``settle`` would read the disk's bytes
+        declined.remove((candidate, data))
+        yield candidate, data or b"", readings.alone[str(candidate.path)][1]
     if declined:
         yield from _settled(declined, [(c, d, r) for c, d, r in plain if c.root in whole_package],
                             index, workers, cache, readings.alone)

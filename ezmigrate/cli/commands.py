@@ -659,7 +659,8 @@ def server(ontology: tuple[Path, ...], stdio: bool) -> None:
         return Workspace(root, index, replace(options.pool(files), workers=1), CheckSettings(
             exclude=options.exclude, skill_libraries=options.skill_libraries,
             compounds=needs_trees(selection.codes()),
-            world=_world_run((root,), options, None)), selection)
+            world=_world_run((root,), options, None),
+            launch=_launch(root, None, quiet=False)), selection)
 
     serve(open_workspace)
 
