@@ -30,7 +30,8 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from ezskiros_runtime.codes import code_for
+from ezskiros_runtime.codes import code_for, rule_for
+from ezskiros_runtime.diagnostics import Finding
 
 if TYPE_CHECKING:  # the compound library: not for ``IMPLEMENTATION`` alone
     from ezskiros_runtime.compound.library import SkillIndex
@@ -39,8 +40,12 @@ IMPLEMENTATION = (code_for("implementation-unknown-key"), code_for("implementati
                   code_for("implementation-unknown-property"))
 """The codes of these checks, which need the skill index the compound pass builds."""
 
-Finding = tuple[str, int, str, str, "str | None", "str | None"]
-"""``(kind, line, message, implementation class, fix, the key or name it is about)``."""
+def _found(kind: str, line: int, message: str, cls: str, fix: str | None, name: str
+           ) -> Finding:
+    """A finding of these checks: the runtime's one type, the implementation class its
+    skill, the key or name it is about its subject."""
+    return Finding(kind, rule_for(kind).severity, message, None, line, cls, subject=name,
+                   fix=fix)
 
 
 @dataclass(frozen=True)
@@ -166,7 +171,7 @@ def implementation_findings(facts: ModuleFacts, path: str, skills: SkillIndex,
     for cls in facts.classes:
         for name, line in cls.properties:
             if not known_property(name):
-                found.append(("implementation-unknown-property", line,
+                found.append(_found("implementation-unknown-property", line,
                               f"{name}: nothing in the repository sets this property and "
                               "no loaded ontology or scene declares it, so every element "
                               "SkiROS2 holds lacks it (Element.hasProperty is False)",
@@ -174,7 +179,7 @@ def implementation_findings(facts: ModuleFacts, path: str, skills: SkillIndex,
         declared = _declared(cls.description, skills, path)
         for kind, name, line in cls.uses:
             if kind == "param" and declared is not None and name not in declared:
-                found.append(("implementation-unknown-key", line,
+                found.append(_found("implementation-unknown-key", line,
                               f"self.params[{name!r}]: {cls.description} declares no such "
                               "parameter, so SkiROS2's ParamHandler returns None (\"Param "
                               "... is not in the map\") and the line raises when it runs",
@@ -182,7 +187,7 @@ def implementation_findings(facts: ModuleFacts, path: str, skills: SkillIndex,
             elif kind == "element" and not known_class(name):
                 near = [c for c in known if _one_edit(name, c)]
                 if near:
-                    found.append(("implementation-element-typo", line,
+                    found.append(_found("implementation-element-typo", line,
                                   f"Element({name!r}): no loaded ontology, owl file or "
                                   f"scene defines {name}; did you mean {near[0]}? The "
                                   "world model matches types verbatim", cls.name,

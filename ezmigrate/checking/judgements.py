@@ -93,9 +93,10 @@ def _implementations(run: CheckRun, implementing: list[tuple[Candidate, ModuleFa
     for candidate, facts in implementing:
         path = str(candidate.path)
         where = Positions(run.outcome.sources.get(path, ""))
-        found += [diagnostic(path, where, kind, line, message, skill, fix, term=term)
-                  for kind, line, message, skill, fix, term in implementation_findings(
-                      facts, path, skills, known, classes, property_known)]
+        found += [diagnostic(path, where, f.kind, f.line or 0, f.message, f.skill, f.fix,
+                             term=f.subject)
+                  for f in implementation_findings(facts, path, skills, known, classes,
+                                                   property_known)]
     unknown_property = code_for("implementation-unknown-property")
     return once_per_cause(  # an unknown property: once per project
         found, lambda d: d.term if d.code == unknown_property else None,
