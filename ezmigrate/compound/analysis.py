@@ -75,7 +75,7 @@ class Trees:
     """``(path, class, line, bases)`` of classes whose ``createDescription`` never calls
     ``setDescription`` (``static.undescribed``)."""
     seen: set[str] = field(default_factory=set)
-    syntax: dict[tuple[str, str], list[tuple[str, int, str]]] = field(default_factory=dict)
+    syntax: dict[tuple[str, str], list[Finding]] = field(default_factory=dict)
     """``(path, class)`` -> mistakes its ``self.skill`` calls show in the syntax alone
     (``static.expand_findings``): reported when the tree can be neither read nor traced."""
     launched: frozenset[str] | None = None
@@ -147,7 +147,7 @@ class TreeFacts:
     labels: tuple[tuple[str, str | None], ...] = ()
     bases: tuple[tuple[str, str], ...] = ()
     modified: tuple[tuple[str, str, str | None, bool, str], ...] = ()
-    syntax: tuple[tuple[str, tuple[tuple[str, int, str], ...]], ...] = ()
+    syntax: tuple[tuple[str, tuple[Finding, ...]], ...] = ()
     found: tuple[CompoundModel | Unanalysable | NeedsTrace, ...] = ()
     undescribed: tuple[tuple[str, int, tuple[str, ...]], ...] = ()
     """Classes whose ``createDescription`` never calls ``setDescription``
@@ -287,10 +287,8 @@ def analyse(items: Sequence[tuple[Candidate, bytes]], index: SkillIndex,
         # what the syntax shows of every self.skill call: a traced tree took one branch of
         # expand, so a mistake in another (a keyword typo behind an if) shows only here
         seen = {(f.kind, f.line) for f in found}
-        run.findings += [(path, compound_finding(kind, line, message, model.implementation))
-                         for kind, line, message in trees.syntax.get(
-                             (path, model.implementation), ())
-                         if (kind, line) not in seen]
+        run.findings += [(path, f) for f in trees.syntax.get((path, model.implementation), ())
+                         if (f.kind, f.line) not in seen]
     run.findings += _undescribed(trees, [*library.bases, *around.bases, *trees.bases],
                                  index.launched)
     run.findings = once_per_project(run.findings)

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ezskiros_runtime.compound.checks import ELSEWHERE, UPSTREAM_PROCESSORS
+from ezskiros_runtime.compound.checks import ELSEWHERE, UPSTREAM_PROCESSORS, compound_finding
 from ezskiros_runtime.compound.model import (
     COMPUTED,
     CallProblem,
@@ -35,6 +35,7 @@ from ezskiros_runtime.compound.trace import (
     call_problem,
     parameter_object_message,
 )
+from ezskiros_runtime.diagnostics import Finding
 
 from ..codemod.core.ast_names import ast_dotted_name
 from ..lint.ezskiros_static import shape_of
@@ -663,12 +664,12 @@ def syntax_problem(call: ast.Call) -> str | None:
     return call_problem(keywords, bound, len(call.args))
 
 
-def expand_findings(tree: ast.Module) -> dict[str, list[tuple[str, int, str]]]:
-    """``{class: [(kind, line, message)]}``: mistakes in every ``self.skill(...)`` call of a
+def expand_findings(tree: ast.Module) -> dict[str, list[Finding]]:
+    """``{class: [finding]}``: mistakes in every ``self.skill(...)`` call of a
     compound class's ``expand``, read from the syntax alone, so that they are reported even
     when the tree can be neither read nor traced (a branch on the world model). Readable
     trees report the same mistakes from their model."""
-    found: dict[str, list[tuple[str, int, str]]] = {}
+    found: dict[str, list[Finding]] = {}
     for cls in compound_classes(tree):
         expand = [m for m in cls.body if isinstance(m, ast.FunctionDef)
                   and m.name == "expand"][-1]
@@ -682,11 +683,12 @@ def expand_findings(tree: ast.Module) -> dict[str, list[tuple[str, int, str]]]:
                 continue
             problem = syntax_problem(node)
             if problem is not None:
-                found.setdefault(cls.name, []).append(("compound-call-shape", node.lineno,
-                                                       problem))
+                found.setdefault(cls.name, []).append(compound_finding(
+                    "compound-call-shape", node.lineno, problem, cls.name))
             for key in _specified_objects(node, me):
-                found.setdefault(cls.name, []).append(
-                    ("specify-parameter-object", node.lineno, parameter_object_message(key)))
+                found.setdefault(cls.name, []).append(compound_finding(
+                    "specify-parameter-object", node.lineno, parameter_object_message(key),
+                    cls.name))
     return found
 
 
