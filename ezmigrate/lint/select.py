@@ -17,6 +17,10 @@ from ezskiros_runtime.codes import BY_CODE, RULES, matches, valid_selector
 from .diagnostic import Diagnostic, Positions, diagnostic
 
 SUPPRESSION = re.compile(r"#\s*ezskiros:\s*ignore\[([^\]]*)\]")
+NOQA = re.compile(r"#\s*noqa:\s*([A-Za-z]+[0-9]+(?:\s*,?\s*[A-Za-z]+[0-9]+)*)", re.IGNORECASE)
+"""ruff's and flake8's ``# noqa: EZ209`` (its ``EZ`` codes are ours; the others are the
+lab's other linters', and a bare ``# noqa`` silences nothing of ours: a CI gate does not
+lose an error to a comment written for another tool)."""
 UNUSED = "EZ100"
 
 
@@ -56,14 +60,20 @@ class Selection:
 
 
 def suppressions(source: str) -> dict[int, list[str]]:
-    """``{line: [codes]}`` of the ``# ezskiros: ignore[...]`` comments of a file."""
+    """``{line: [codes]}`` of the ``# ezskiros: ignore[...]`` and ``# noqa: EZ...``
+    comments of a file."""
     found: dict[int, list[str]] = {}
-    if "ezskiros:" not in source:
+    if "ezskiros:" not in source and "noqa" not in source.lower():
         return found
     for number, text in enumerate(source.splitlines(), start=1):
-        match = SUPPRESSION.search(text)
-        if match:
-            found[number] = [c.strip() for c in match.group(1).split(",") if c.strip()]
+        codes: list[str] = []
+        for match in SUPPRESSION.finditer(text):
+            codes += [c.strip() for c in match.group(1).split(",") if c.strip()]
+        for noqa in NOQA.finditer(text):
+            codes += [c.upper() for c in re.split(r"[\s,]+", noqa.group(1))
+                      if c.upper().startswith("EZ")]
+        if codes:
+            found[number] = list(dict.fromkeys(codes))
     return found
 
 

@@ -3,7 +3,7 @@
 Diagnostics are ``check``'s findings from ``check``'s pipeline (``workspace``), published
 when a document opens, after it changes (debounced: one check per pause in typing) and
 when it is saved. Hover, completion and go-to-definition answer from the ontology
-(``terms``). Code actions: suppressing a finding with ``# ezskiros: ignore[CODE]`` on its
+(``terms``). Code actions: suppressing a finding with ``# noqa: CODE`` on its
 line, and the safe fixes ``check --fix`` applies (EZ101). Nothing is written to disk:
 every edit goes back to the editor as a workspace edit, and no code of the repository
 runs.
@@ -240,7 +240,7 @@ def _actions(ls: EzServer, params: lsp.CodeActionParams) -> list[lsp.CodeAction]
             title=f"Suppress {d.code} on this line", kind=lsp.CodeActionKind.QuickFix,
             diagnostics=[_lsp_diagnostic(d)],
             edit=lsp.WorkspaceEdit(changes={uri: [lsp.TextEdit(
-                lsp.Range(end, end), f"  # ezskiros: ignore[{d.code}]")]})))
+                lsp.Range(end, end), f"  # noqa: {d.code}")]})))
     actions += _migration(ls, uri, document.source, params.range.start.line)
     after = fixed_text(document.source, here)
     if after is not None and after != document.source:

@@ -206,6 +206,21 @@ def test_suppression_comments_and_unused_ones(tmp_path: Path):
     assert "EZ100" not in cli(".", "--select", "EZ2", cwd=folder).stdout
 
 
+def test_noqa_comments_of_our_codes_suppress_as_ruff_and_flake8_write_them(tmp_path: Path):
+    """``# noqa: EZ212`` (after another linter's ``# noqa: E501`` too) silences that code
+    on its line; a bare ``# noqa`` or one naming only other tools' codes silences nothing of
+    ours, and an EZ code that finds nothing there is reported unused (EZ100)."""
+    typo_line = next(t for t in PREFIX_TYPO.splitlines() if "ParamTypes.Required)" in t)
+    for comment, left in (("  # noqa: EZ212", []), ("  # noqa: E501  # noqa: EZ212", []),
+                          ("  # noqa", ["EZ212"]), ("  # noqa: E501", ["EZ212"]),
+                          ("  # noqa: EZ212, EZ209", ["EZ100"])):
+        folder = write(tmp_path / str(abs(hash(comment))), PREFIX_TYPO.replace(
+            typo_line, typo_line + comment))
+        run = cli(".", cwd=folder)
+        found = [m["code"] for line in run.stdout.splitlines() if (m := TEXT_LINE.match(line))]
+        assert found == left, (comment, run.stdout)
+
+
 def test_statistics(tmp_path: Path):
     folder = write(tmp_path, UNKNOWN + UNKNOWN.split("\n\n\n", 1)[1].replace(
         "class Skill", "class Skill2"))

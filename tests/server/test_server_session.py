@@ -201,7 +201,7 @@ async def test_code_actions_fix_and_suppress_and_their_edits_pass_check(
         if action.title in ("Apply the safe fixes (check --fix)", "Suppress EZ209 on this line"):
             text = _applied(text, list(action.edit.changes[path.as_uri()]))  # type: ignore[index]
             again = await _open(client, path, text)
-    assert 'description="how fast"' in text and "ezskiros: ignore[EZ209]" in text
+    assert 'description="how fast"' in text and "# noqa: EZ209" in text
     assert not [d for d in again if d.code in ("EZ101", "EZ209")]
 
 
