@@ -59,6 +59,7 @@ from .core.python2 import (
     comma_handler,
     except_comma,
     python2_refusal,
+    python2_statement,
     python_parses,
 )
 from .core.reader import (
@@ -136,7 +137,8 @@ def _migrate_text(text: bytes | str, source: bytes | str, settings: Settings, pa
         if holes is not None:
             return None
         message, line, column = syntax_error_location(source, error)
-        return unparsable(path, message, line, column)
+        return replace(unparsable(path, message, line, column),
+                       python2=python2_statement(message))
     except (UnicodeDecodeError, LookupError, SyntaxError) as error:
         if holes is not None:
             return None

@@ -52,7 +52,7 @@ def python2_refusal(path: str, raw: bytes, error: SyntaxError) -> FileResult | N
     """
     if not error.lineno or b"\0" in raw:
         return None  # a NUL byte is reported as binary data (``syntax_error_location``)
-    if _STATEMENT.match(error.msg or ""):
+    if python2_statement(error.msg or ""):
         return replace(unparsable(path, error.msg, error.lineno, error.offset or 1),
                        python2=True)
     if error.msg != _TUPLE_CLAUSE or not EXCEPT_COMMA.search(raw):
@@ -61,6 +61,12 @@ def python2_refusal(path: str, raw: bytes, error: SyntaxError) -> FileResult | N
     if found is None or found[0] != error.lineno:
         return None  # the tokens do not tell, or Python stopped elsewhere first
     return except_comma(path, *found)
+
+
+def python2_statement(message: str) -> bool:
+    """Whether Python's own error message (``SyntaxError.msg``) is its word for a Python 2
+    ``print`` or ``exec`` statement."""
+    return bool(_STATEMENT.match(message))
 
 
 def except_comma(path: str, line: int, column: int) -> FileResult:
