@@ -17,10 +17,9 @@ from typing import Literal
 from ..files.paths import shown as shown_path
 from ..lint.diagnostic import Diagnostic
 from ..lint.select import Selection, apply
+from ..project.exit_codes import EXIT_ATTENTION, EXIT_OK
 from ..report.reports import counted
 from .run import CheckOutcome
-
-EXIT_OK, EXIT_ATTENTION = 0, 1
 
 FixMode = Literal["fix", "diff"]
 

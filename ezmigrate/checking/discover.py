@@ -14,7 +14,7 @@ from ..cache.outcome_cache import OutcomeCache, read_all, run_key
 from ..files.discover import Discovery, library_candidates, start_discovery
 from ..lint.scene_search import SCENE_SUFFIX, WorldRun, scene_files
 from .launch import with_init_scene
-from .run import CheckOutcome, CheckRun
+from .run import CheckOutcome, CheckRun, text_of
 
 
 def checked_files(paths: list[Path], exclude: tuple[str, ...] = (),
@@ -24,10 +24,6 @@ def checked_files(paths: list[Path], exclude: tuple[str, ...] = (),
     file and the scenes, which it does while git says what it ignores."""
     return start_discovery([p for p in paths if p.suffix != SCENE_SUFFIX], exclude,
                            include_vendored=include_vendored)
-
-
-def _text(data: bytes) -> str:
-    return data.decode("utf-8", errors="replace")
 
 
 def _kept(run: CheckRun) -> None:
@@ -55,7 +51,7 @@ def _kept(run: CheckRun) -> None:
     if hit is None:
         return
     read = {str(c.path) for c in run.candidates} | {str(p) for p in world.scenes}
-    sources = {path: _text(data) for path, data in files if path in read}
+    sources = {path: text_of(data) for path, data in files if path in read}
     run.outcome = CheckOutcome(files=hit["files"], skills=hit["skills"],
                                diagnostics=hit["diagnostics"], sources=sources,
                                notes=hit["notes"])

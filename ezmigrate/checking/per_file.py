@@ -111,7 +111,7 @@ def _loaded(run: CheckRun) -> list[LoadOutcome]:
         cache_dir, [(str(c.path), data) for c, data in run.read],
         run.index.fingerprint if run.index is not None else "", pool.python)
     return cached_loads([job_for(c.path, None, c.root) for c in run.loadable],
-                        [run.data_of(c) for c in run.loadable],
+                        run.loadable_data(),
                         lambda jobs: run_batched(jobs, pool, BATCH,
                                                  alone=lambda found: not found.loaded),
                         cache)
@@ -156,7 +156,8 @@ def run(run: CheckRun) -> None:
     if run.settings.trace:
         run.loads = _loaded(run)
     else:
-        run.loads = read_ezskiros([(c.path, run.data_of(c)) for c in run.loadable], run.index,
+        run.loads = read_ezskiros(list(zip((c.path for c in run.loadable), run.loadable_data(),
+                                           strict=True)), run.index,
                                   run.facts_cache)
     run.outcome.read = sorted({path for loaded in run.loads for path in loaded.read})
     run.diagnostics.extend(_load_diagnostics(run))

@@ -20,7 +20,7 @@ from ..files.discover import Candidate
 from ..project import holdpoint
 from ..project.cross_file import RUNTIME_MARKER
 from ..report.results import FileResult
-from .run import CheckRun
+from .run import CheckRun, text_of
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -224,10 +224,6 @@ class _Definers:
         return self.packages.union(*(self.by_module.get(w, ()) for w in words))
 
 
-def _text(data: bytes) -> str:
-    return data.decode("utf-8", errors="replace")
-
-
 def _take(run: CheckRun, candidate: Candidate, found: FileFacts) -> None:
     """What the compound pass and the implementation checks read of a file (of a file with
     no description, kept for the compound pass to take in its own turn)."""
@@ -268,7 +264,7 @@ def run(run: CheckRun) -> None:
                                                     run.facts_cache):
             run.read.append((candidate, data))
             run.results.append((candidate, result))
-            run.outcome.sources[str(candidate.path)] = _text(data)
+            run.outcome.sources[str(candidate.path)] = text_of(data)
             skills = sum(1 for s in result.skills if s.status != "unchanged")
             run.outcome.skills += skills
             line.advance(1, skills)

@@ -142,14 +142,12 @@ class CheckRun:
     def diagnostics(self) -> list[Diagnostic]:
         return self.outcome.diagnostics
 
-    def data_of(self, candidate: Candidate) -> bytes:
-        """The bytes the run read of one of its files."""
-        return self._data[candidate.path]
+    def loadable_data(self) -> list[bytes]:
+        """The bytes the run read of each EzSkiROS file, in ``loadable``'s order."""
+        data = {c.path: d for c, d in self.read}
+        return [data[c.path] for c in self.loadable]
 
-    @property
-    def _data(self) -> dict[Path, bytes]:
-        cached: dict[Path, bytes] | None = getattr(self, "_data_cache", None)
-        if cached is None or len(cached) != len(self.read):
-            cached = {c.path: data for c, data in self.read}
-            self._data_cache = cached
-        return cached
+
+def text_of(data: bytes) -> str:
+    """A file's bytes as the findings quote it (undecodable bytes replaced)."""
+    return data.decode("utf-8", errors="replace")

@@ -26,6 +26,7 @@ from ..files.discover import excluded_under
 from ..files.paths import from_repository, in_report, scrub
 from ..files.paths import shown as shown_path
 from ..project import interrupt
+from ..project.exit_codes import EXIT_ATTENTION, EXIT_ERROR, EXIT_OK
 from ..project.target import robot_python, target_for, verified_with
 from ..report.diffs import unified_diff
 from ..report.reports import (
@@ -57,7 +58,6 @@ from .shared_options import (
 )
 from .terminal import coloured_text, echo_diff, wants_colour
 
-EXIT_OK, EXIT_ATTENTION, EXIT_ERROR = 0, 1, 2
 EXIT_BROKEN_PIPE = 128 + 13  # as a shell reports a process ended by SIGPIPE
 
 

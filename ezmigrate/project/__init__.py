@@ -10,6 +10,7 @@ under `interrupt`'s deferral) and `earlier` adds what an earlier run migrated to
 `frozen_heap` keeps the heap a run starts with out of the collector's reach; `target` says
 which robot's Python the code is for; `progress` draws the progress line; `lifetime` ends a
 pool worker with its run; `holdpoint` lets a test stop a run at a named point; `stdin` is
-``rewrite -`` and ``check -`` (one file in, one whole file out). May import `compound`,
+``rewrite -`` and ``check -`` (one file in, one whole file out); `exit_codes` are the
+commands' exit codes. May import `compound`,
 `lint`, `codemod`, `verify`, `report` and `files`; never the command line.
 """

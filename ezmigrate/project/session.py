@@ -24,6 +24,7 @@ from ..files.writing import WriteRefused, atomic_write, digest, remove_stale_tem
 from ..report.reports import Summary
 from ..verify.verdicts import Comparison
 from . import holdpoint, interrupt
+from .exit_codes import EXIT_ATTENTION, EXIT_OK
 from .progress import Progress
 from .runner import Extras, Migrated, default_jobs
 from .settle import Checks, settle
@@ -262,4 +263,5 @@ def exit_code(summary: Summary, check: bool, strict: bool, refused: Sequence[str
     changes, a verification failed, a file could not be processed or written (with
     ``--strict`` also a skipped skill), else 0. Pure: the command line only exits with it."""
     would_change = summary.changed_files > 0 and check
-    return 1 if would_change or summary.needs_attention(strict) or refused else 0
+    return EXIT_ATTENTION if would_change or summary.needs_attention(strict) or refused \
+        else EXIT_OK
