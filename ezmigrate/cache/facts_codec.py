@@ -15,6 +15,7 @@ from __future__ import annotations
 import base64
 import dataclasses
 import importlib
+import json
 import sys
 from typing import Any
 
@@ -27,7 +28,9 @@ class CodecError(ValueError):
 
 
 def encode(value: Any) -> Any:
-    """``value`` as JSON-ready data (lists, dicts of strings, literals)."""
+    """``value`` as JSON-ready data (lists, dicts of strings, literals). Every dict of the
+    encoding is a tagged node (``t``, ``b``, ``fs``, ``s``, ``d``, or ``c`` with ``f``), so
+    that the JSON parser can rebuild each node as it reads it (``loads``)."""
     if value is None or isinstance(value, (bool, int, float, str)):
         return value
     if isinstance(value, list):
@@ -45,7 +48,7 @@ def encode(value: Any) -> Any:
     name = f"{kind.__module__}:{kind.__qualname__}"
     if not name.startswith(OWN):
         raise CodecError(f"not a reading of ours: {name}")
-    return {"c": name, "f": {key: encode(v) for key, v in _fields(value).items()}}
+    return {"c": name, "f": [[key, encode(v)] for key, v in _fields(value).items()]}
 
 
 def _fields(value: Any) -> dict[str, Any]:
@@ -58,32 +61,43 @@ def _fields(value: Any) -> dict[str, Any]:
     return found
 
 
+def loads(payload: bytes | str) -> Any:
+    """The value ``encode`` gave the JSON text ``payload`` for, each node rebuilt by the
+    JSON parser as it reads it (``_node``: a Python call per tagged node, not per value);
+    ``CodecError`` for anything else (``ValueError`` for text that is no JSON)."""
+    return json.loads(payload, object_hook=_node)
+
+
 def decode(data: Any) -> Any:
-    """The value ``encode`` gave ``data`` for; ``CodecError`` for anything else."""
+    """``loads`` of data already parsed from JSON."""
     if data is None or isinstance(data, (bool, int, float, str)):
         return data
     if isinstance(data, list):
         return [decode(v) for v in data]
-    if not isinstance(data, dict) or len(data) not in (1, 2):
-        raise CodecError("unexpected data")
-    if "t" in data:
-        return tuple(decode(v) for v in _list(data["t"]))
-    if "b" in data and isinstance(data["b"], str):
-        try:
-            return base64.b64decode(data["b"], validate=True)
-        except ValueError as error:
-            raise CodecError("bytes that are not base64") from error
-    if "fs" in data:
-        return frozenset(decode(v) for v in _list(data["fs"]))
-    if "s" in data:
-        return {decode(v) for v in _list(data["s"])}
-    if "d" in data:
-        pairs = _list(data["d"])
-        if not all(isinstance(p, list) and len(p) == 2 for p in pairs):
-            raise CodecError("a dict entry is no pair")
-        return {decode(k): decode(v) for k, v in pairs}
-    if "c" in data and isinstance(data.get("f"), dict):
-        return _instance(str(data["c"]), data["f"])
+    if isinstance(data, dict):
+        return _node({key: decode(v) for key, v in data.items()})
+    raise CodecError("unexpected data")
+
+
+def _node(node: dict[str, Any]) -> Any:
+    """One tagged node of an encoding, its contents rebuilt already."""
+    if len(node) == 1:
+        [(tag, value)] = node.items()
+        if tag == "t":
+            return tuple(_list(value))
+        if tag == "b" and isinstance(value, str):
+            try:
+                return base64.b64decode(value, validate=True)
+            except ValueError as error:
+                raise CodecError("bytes that are not base64") from error
+        if tag == "fs":
+            return frozenset(_list(value))
+        if tag == "s":
+            return set(_list(value))
+        if tag == "d":
+            return dict(_pairs(value))
+    elif len(node) == 2 and isinstance(node.get("c"), str) and "f" in node:
+        return _instance(node["c"], _pairs(node["f"]))
     raise CodecError("unexpected data")
 
 
@@ -93,14 +107,22 @@ def _list(data: Any) -> list[Any]:
     return data
 
 
-def _instance(name: str, fields: dict[str, Any]) -> Any:
+def _pairs(data: Any) -> list[tuple[Any, Any]]:
+    """The ``[key, value]`` pairs of a dict's or an object's encoding."""
+    pairs = _list(data)
+    if not all(isinstance(p, list) and len(p) == 2 for p in pairs):
+        raise CodecError("an entry is no pair")
+    return [(key, value) for key, value in pairs]
+
+
+def _instance(name: str, fields: list[tuple[Any, Any]]) -> Any:
     """An object of our own class ``name`` with ``fields`` set, its constructor not run."""
     kind, allowed = _class(name)
     value: Any = object.__new__(kind)
-    for key, item in fields.items():
+    for key, item in fields:
         if not isinstance(key, str) or (allowed is not None and key not in allowed):
             raise CodecError(f"{name} has no field {key!r}")
-        object.__setattr__(value, key, decode(item))
+        object.__setattr__(value, key, item)
     return value
 
 

@@ -10,8 +10,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ezskiros_runtime.ontology.vendored import PACKAGE_XML
+
 from ..cache.outcome_cache import OutcomeCache, read_all, run_key
-from ..files.discover import Discovery, library_candidates, start_discovery
+from ..files.discover import Candidate, Discovery, library_candidates, start_discovery
 from ..lint.scene_search import SCENE_SUFFIX, WorldRun, scene_files
 from .launch import with_init_scene
 from .run import CheckOutcome, CheckRun, text_of
@@ -26,6 +28,23 @@ def checked_files(paths: list[Path], exclude: tuple[str, ...] = (),
                            include_vendored=include_vendored)
 
 
+def package_manifests(candidates: list[Candidate]) -> list[Path]:
+    """The ``package.xml`` of each candidate's ROS package (the nearest above it): the
+    compound stage reads a package's flavour (catkin or ament) and name from it
+    (``ros_package_of``), so a kept run depends on its bytes too."""
+    found: dict[Path, Path | None] = {}
+
+    def manifest(folder: Path) -> Path | None:
+        if folder not in found:
+            here = folder / PACKAGE_XML
+            found[folder] = here if here.is_file() else \
+                manifest(folder.parent) if folder.parent != folder else None
+        return found[folder]
+
+    return sorted({m for c in candidates for m in (manifest(c.path.parent.resolve()),)
+                   if m is not None})
+
+
 def _kept(run: CheckRun) -> None:
     """Look the run up in the outcome cache (runs over folders with a cache only: a run
     over named files also reads the repository around them, which the key would have to
@@ -35,7 +54,8 @@ def _kept(run: CheckRun) -> None:
             or not all(p.is_dir() for p in run.paths):
         return
     files = read_all([*(c.path for c in run.candidates), *world.scenes,
-                      *([launch.path] if launch is not None else [])])
+                      *([launch.path] if launch is not None else []),
+                      *package_manifests(run.candidates)])
     if files is None:
         return
     files += [(str(c.path), data) for c, data in library_candidates(list(settings.skill_libraries))]

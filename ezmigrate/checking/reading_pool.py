@@ -180,14 +180,25 @@ class ReadingPool:
         self._waiting = []
 
     def seed_scenes(self) -> None:
-        """Hand ``read_scene`` every scene parsed in the workers."""
+        """Hand ``read_scene`` every scene parsed in the workers. The main process, done
+        with its own work by now, parses from the end the scenes no worker has started
+        (as it does the files' chunks): it does its share instead of waiting for the
+        workers' last ones."""
         from ezskiros_runtime.world.scene import seed_scene
 
         self._start_scenes()
+        for path, future in reversed(self._scenes):
+            if not future.cancel():
+                break
+            parsed = _parse_scene(str(path))
+            if parsed is not None:
+                seed_scene(path, *parsed)
         for path, future in self._scenes:
+            if future.cancelled():
+                continue
             try:
                 parsed = future.result()
-            except (BrokenProcessPool, OSError):  # the main process parses it
+            except (BrokenProcessPool, OSError):  # read_scene parses it when asked
                 continue
             if parsed is not None:
                 seed_scene(path, *parsed)

@@ -4,8 +4,8 @@ its findings are those of a run without a cache.
 
 What is read again is observed, not timed: the real reading functions are wrapped to note
 the files they are given (their work is unchanged). The kept entries are JSON signed with a
-key of this user's cache folder: a pack another key signed, or one naming a class that is
-not ours, is a miss.
+key of this user's cache folder: an entry another key signed, or one naming a class that
+is not ours, is a miss.
 """
 
 from __future__ import annotations
@@ -18,8 +18,8 @@ from pathlib import Path
 import pytest
 
 from ezmigrate.cache.cache_folder import Store, project_folder, user_key
-from ezmigrate.cache.facts_cache import PACK, FactsCache
-from ezmigrate.cache.facts_codec import CodecError, decode, encode
+from ezmigrate.cache.facts_cache import FOLDER, FactsCache
+from ezmigrate.cache.facts_codec import CodecError, decode, encode, loads
 from ezmigrate.cache.outcome_cache import OUTCOMES
 from ezmigrate.checking import reading_pool
 from ezmigrate.checking.pipeline import run_check
@@ -182,37 +182,43 @@ def test_a_changed_base_reads_the_files_deriving_from_it_again(
     assert derived == [d for d in uncached if d.path.endswith("derived.py")]
 
 
-def test_a_pack_signed_with_another_key_is_a_miss(repo: Path, own_key: Path,
-                                                  tmp_path: Path) -> None:
-    """A pack made by somebody else (another user's key, or a file planted in the cache
-    folder) is ignored, even when it holds readings of our own classes."""
-    _run(repo, cached=True)
-    pack = _folder(repo) / PACK
-    assert pack.exists()
-    mine = FactsCache.open(_folder(repo))
-    assert mine is not None and mine._old  # what the first run kept is read back
-    stranger = Store(_folder(repo), b"another key of 32 bytes, not ours")
-    stranger.write(PACK, pack.read_bytes().split(b"\n", 1)[1])
-    assert FactsCache.open(_folder(repo))._old == {}  # type: ignore[union-attr]
-    assert _run(repo, cached=True) == _run(repo, cached=False)  # the run reads everything
+def _entries(repo: Path) -> list[Path]:
+    return sorted((_folder(repo) / FOLDER).glob("*.json"))
 
 
-def test_a_corrupt_entry_of_a_signed_pack_is_a_miss_for_its_file_alone(
-        repo: Path, own_key: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    """Entries are decoded when a run asks for them: one that does not decode (here, it
-    names a class outside our packages, in a pack signed with our own key) is read again,
-    and the others are still taken from the pack."""
+def test_entries_signed_with_another_key_are_misses(repo: Path, own_key: Path,
+                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    """Entries made by somebody else (another user's key, or files planted in the cache
+    folder) are ignored, even when they hold readings of our own classes."""
     first = _run(repo, cached=True)
+    entries = _entries(repo)
+    assert entries
     mine = FactsCache.open(_folder(repo))
     assert mine is not None
-    entries = dict(mine._old)
-    [spoiled] = [k for k, v in entries.items()
-                 if str(v.get("c")).endswith(":FileFacts") and "plain.py" in json.dumps(v)]
-    entries[spoiled] = {"c": "os:system", "f": {}}
+    keys = [entry.stem for entry in entries]
+    assert all(mine.get(key) is not None for key in keys)  # what the first run kept
+    stranger = Store(_folder(repo), b"another key of 32 bytes, not ours")
+    for entry, key in zip(entries, keys, strict=True):
+        stranger.write(FactsCache.entry(key), entry.read_bytes().split(b"\n", 1)[1])
+    fresh = FactsCache.open(_folder(repo))
+    assert fresh is not None and all(fresh.get(key) is None for key in keys)
+    shutil.rmtree(_folder(repo) / OUTCOMES)  # the whole run is not answered at once
+    reads = Reads(monkeypatch)
+    assert _run(repo, cached=True) == first == _run(repo, cached=False)
+    assert sorted(set(reads.parsed)) == ["base.py", "derived.py", "other.py", "plain.py"]
+
+
+def test_a_corrupt_entry_is_a_miss_for_its_file_alone(
+        repo: Path, own_key: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """An entry that does not decode (here, it names a class outside our packages, signed
+    with our own key) is read again, and the others are still taken from the cache."""
+    first = _run(repo, cached=True)
+    [spoiled] = [e for e in _entries(repo) if b":FileFacts" in e.read_bytes()
+                 and b"plain.py" in e.read_bytes()]
     key = user_key(own_key)
     assert key is not None
-    Store(_folder(repo), key).write(
-        PACK, json.dumps(entries).encode("utf-8"))
+    Store(_folder(repo), key).write(FactsCache.entry(spoiled.stem),
+                                    b'{"c":"os:system","f":[]}')
     shutil.rmtree(_folder(repo) / OUTCOMES)  # the whole run is not answered at once
     reads = Reads(monkeypatch)
     assert _run(repo, cached=True) == first
@@ -223,17 +229,21 @@ def test_the_codec_makes_nothing_but_our_own_readings(tmp_path: Path) -> None:
     """Decoding never calls what the data names: a class outside our packages, a function
     or a name that is no class is refused, and so is a field a dataclass does not have."""
     marker = tmp_path / "ran.marker"
-    for forged in ({"c": "os:system", "f": {}},
-                   {"c": "pathlib:Path", "f": {"_raw_paths": [str(marker)]}},
-                   {"c": "ezmigrate.cache.facts_codec:decode", "f": {}},
-                   {"c": "ezmigrate.lint.diagnostic:Diagnostic", "f": {"__class__": 1}}):
+    for forged in ({"c": "os:system", "f": []},
+                   {"c": "pathlib:Path", "f": [["_raw_paths", [str(marker)]]]},
+                   {"c": "ezmigrate.cache.facts_codec:decode", "f": []},
+                   {"c": "ezmigrate.lint.diagnostic:Diagnostic", "f": [["__class__", 1]]},
+                   {"t": [1], "extra": 2}, {"unknown": 1}):
         with pytest.raises(CodecError):
             decode(json.loads(json.dumps(forged)))
+        with pytest.raises(CodecError):
+            loads(json.dumps(forged))
     assert not marker.exists()
     index = load_index([bundled_ontology_path()])
     found = run_check([Path(__file__).parents[2] / "fixtures" / "legacy"], index,
                       PoolConfig(workers=1)).diagnostics
     assert decode(json.loads(json.dumps(encode(found)))) == found
+    assert loads(json.dumps(encode(found))) == found
 
 
 def test_without_a_key_there_is_no_cache_and_the_same_findings(
@@ -243,7 +253,7 @@ def test_without_a_key_there_is_no_cache_and_the_same_findings(
     assert user_key(blocked) is None
     assert FactsCache.open(_folder(repo)) is None
     assert _run(repo, cached=True) == _run(repo, cached=False)
-    assert not (_folder(repo) / PACK).exists()
+    assert not (_folder(repo) / FOLDER).exists()
 
 
 STAR_TREE = '''\

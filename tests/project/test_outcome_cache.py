@@ -96,3 +96,33 @@ def test_a_run_over_named_files_is_not_kept(tmp_path: Path) -> None:
                          text=True, timeout=600, check=False)
     assert run.returncode == 0, run.stderr
     assert not (entries(repo) / OUTCOMES).exists()
+
+
+MANIFEST = """<package format="2"><name>tours</name>
+<buildtool_depend>{tool}</buildtool_depend></package>
+"""
+
+
+def test_the_package_manifests_are_part_of_the_key(tmp_path: Path) -> None:
+    """The compound stage reads a package's flavour and name from its ``package.xml``
+    (``ros_package_of``): a kept run is not taken once the manifest changed."""
+    from ezmigrate.checking.pipeline import check_run
+    from ezmigrate.checking.run import CheckSettings
+    from ezmigrate.verify.pool import PoolConfig
+    from ezskiros_runtime.ontology.index import bundled_ontology_path
+    from ezskiros_runtime.ontology.load import load_index
+
+    repo = _repo(tmp_path)
+    manifest = repo / "pkg" / "package.xml"
+    manifest.write_text(MANIFEST.format(tool="catkin"), encoding="utf-8")
+    index = load_index([bundled_ontology_path()])
+    settings = CheckSettings(cache_dir=tmp_path / "cache" / "projects" / "repo")
+
+    def answered_whole() -> bool:
+        return check_run([repo], index, PoolConfig(workers=1), settings).done
+
+    assert not answered_whole()
+    assert answered_whole()  # unchanged: the kept run answers
+    manifest.write_text(MANIFEST.format(tool="ament_cmake"), encoding="utf-8")
+    assert not answered_whole()
+    assert answered_whole()
