@@ -25,6 +25,7 @@ calls ``setDescription(Desc(), ...)``), against what the repository declares:
 from __future__ import annotations
 
 import ast
+import bisect
 from collections import deque
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
@@ -77,14 +78,14 @@ def module_facts(tree: ast.Module, data: bytes) -> ModuleFacts:
     any of its code sets (only when its text holds a setter at all)."""
     from ..compound.static import described_classes
 
-    setting = any(m in data for m in _SETTERS)
+    setters = _setter_lines(data)
     described = {id(cls): description for description, cls in described_classes(tree)}
     classes = []
     sets: set[str] = set()
     for stmt in tree.body:
         description = described.get(id(stmt))
         if description is None:
-            if setting:
+            if _spans(stmt, setters):
                 sets |= properties_set((stmt,))
             continue
         uses: list[tuple[str, str, int]] = []
@@ -100,7 +101,7 @@ def module_facts(tree: ast.Module, data: bytes) -> ModuleFacts:
                 if key is not None:
                     uses.append(("param", *key))
             elif kind is ast.Call:
-                if setting:
+                if setters:
                     _set_by(node, sets)
                 read = _property_call(node, ("getProperty", "hasProperty"))
                 if read is not None:
@@ -132,6 +133,26 @@ def _walk(root: ast.AST) -> Iterator[ast.AST]:
 _SETTERS = (b"setProperty", b"PropCond")
 """Text every property-setting call holds (``setProperty``, ``getPropCond``,
 ``getHasPropCond``): a module without it sets none."""
+
+
+def _setter_lines(data: bytes) -> list[int]:
+    """The lines (1-based, as ``ast`` counts them) whose text holds a setter's name: a
+    statement that spans none of them sets no property, and is not walked (most of a
+    large module)."""
+    if not any(m in data for m in _SETTERS):
+        return []
+    return [number for number, line in enumerate(data.splitlines(), start=1)
+            if any(m in line for m in _SETTERS)]
+
+
+def _spans(stmt: ast.stmt, lines: list[int]) -> bool:
+    """Whether ``stmt`` (with its decorators, written above it) spans one of ``lines``."""
+    if not lines:
+        return False
+    first = min([stmt.lineno, *(d.lineno for d in getattr(stmt, "decorator_list", ()))])
+    last = stmt.end_lineno or stmt.lineno
+    at = bisect.bisect_left(lines, first)
+    return at < len(lines) and lines[at] <= last
 
 
 def properties_set(trees: Iterable[ast.AST]) -> set[str]:

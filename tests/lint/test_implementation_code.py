@@ -130,3 +130,38 @@ def test_an_implementation_reads_the_nearest_description_of_its_name(tmp_path: P
     found = json.loads(cli(".", "--output-format", "json", "--select", "EZ109",
                            cwd=tmp_path).stdout)
     assert [(d["code"], d["path"].split("/")[-2]) for d in found] == [("EZ109", "b_pkg")]
+
+
+SETTERS = '''\
+import lab
+
+
+@lab.register(lambda element: element.setProperty("lab:FromDecorator", 1))
+def helper(element):
+    return element
+
+
+def setter(element):
+    element.setProperty(
+        "lab:Spread", 2)
+    return element.getPropCond("c", "lab:Cond", "Object", "=", 1, True)
+
+
+def unrelated(element):
+    return element.getProperty("lab:Read")
+'''
+
+
+@pytest.mark.parametrize("newline", ["\n", "\r\n", "\r"])
+def test_the_properties_a_module_sets_are_found_wherever_they_are_written(
+        newline: str) -> None:
+    """Only the statements whose lines name a setter are walked for the properties set: one
+    whose setter sits in a decorator, above its ``def``, or on a continuation line, counts
+    too, whatever the file's line endings."""
+    import ast
+
+    from ezmigrate.checking.implementation_code import module_facts
+
+    data = SETTERS.replace("\n", newline).encode()
+    facts = module_facts(ast.parse(data), data)
+    assert facts.sets == {"lab:FromDecorator", "lab:Spread", "lab:Cond"}
