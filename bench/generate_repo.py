@@ -709,27 +709,36 @@ def generate(out: Path, files: int, skill_share: float = 0.1, seed: int = 0, *,
                 init.write_text(doc, encoding="utf-8")
                 summary.init_files += 1
         folder.mkdir(parents=True, exist_ok=True)
-    used: dict[int, set[str]] = {}
-    for path, text in _modules(out, packages, assignment, used, skill_indices, trap_indices,
-                               seed, files, py2_share, messy_share, summary):
+    layout = _Layout(packages, assignment, skill_indices, trap_indices)
+    for path, text in _modules(out, layout, seed, py2_share, messy_share, summary):
         _write(path, text)
     return summary
 
 
-def _modules(out: Path, packages: list[tuple[str, ...]], assignment: list[int],
-             used: dict[int, set[str]], skill_indices: set[int], trap_indices: set[int],
-             seed: int, files: int, py2_share: float, messy_share: float,
+@dataclass(frozen=True)
+class _Layout:
+    """Where each module goes (``assignment``: its package's index, one per module) and
+    which modules are skill files or traps, as ``generate`` drew them."""
+
+    packages: list[tuple[str, ...]]
+    assignment: list[int]
+    skill_indices: set[int]
+    trap_indices: set[int]
+
+
+def _modules(out: Path, layout: _Layout, seed: int, py2_share: float, messy_share: float,
              summary: Summary) -> Iterator[tuple[Path, str]]:
-    for index in range(files):
+    """Each module's path and text, counted into ``summary`` as it is made."""
+    used: dict[int, set[str]] = {}
+    for index, pkg_index in enumerate(layout.assignment):
         file_rng = random.Random(seed * 1_000_003 + index)
-        pkg_index = assignment[index]
         taken = used.setdefault(pkg_index, set())
         stem = f"{file_rng.choice(VERBS)}_{file_rng.choice(NOUNS)}"
         if stem in taken:
             stem = f"{stem}_{index}"
         taken.add(stem)
-        path = out.joinpath(*packages[pkg_index], stem + ".py")
-        if index in skill_indices:
+        path = out.joinpath(*layout.packages[pkg_index], stem + ".py")
+        if index in layout.skill_indices:
             skill = skill_module(file_rng, file_rng.random() < py2_share, messy_share)
             text = skill.text
             summary.skill_files += 1
@@ -741,7 +750,7 @@ def _modules(out: Path, packages: list[tuple[str, ...]], assignment: list[int],
                 "convertible": skill.convertible, "python2": skill.python2,
             })
         else:
-            text = ordinary_module(file_rng, index in trap_indices)
+            text = ordinary_module(file_rng, index in layout.trap_indices)
         summary.files += 1
         summary.lines += text.count("\n") + (0 if text.endswith("\n") or not text else 1)
         yield path, text

@@ -17,7 +17,7 @@ import traceback
 from collections.abc import Sequence
 from dataclasses import replace
 from pathlib import Path
-from typing import Any, NoReturn
+from typing import TYPE_CHECKING, Any, NoReturn
 
 import click
 
@@ -40,6 +40,7 @@ from ..report.reports import (
 from ..report.results import FileResult
 from ..report.written_lines import as_written, written_diff
 from ..verify.interpreters import never_search, version_of
+from .arguments import CheckArguments, RewriteArguments, VerifyArguments
 from .config import ConfigError, load_project_config
 from .options import CommandLine, Options
 from .output_formats import printable
@@ -57,6 +58,12 @@ from .shared_options import (
     report_option,
 )
 from .terminal import coloured_text, echo_diff, wants_colour
+
+if TYPE_CHECKING:
+    from ..checking.command import Subject
+    from ..checking.run import CheckSettings
+    from ..files.discover import Discovery
+    from ..lint.select import Selection
 
 EXIT_BROKEN_PIPE = 128 + 13  # as a shell reports a process ended by SIGPIPE
 
@@ -236,53 +243,33 @@ def main() -> None:
               help="Declare the runtime (<exec_depend>) in the package.xml of each ROS "
                    "package whose files were migrated.")
 @DEBUG
-def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | None,
-            exclude: tuple[str, ...], ontology: tuple[Path, ...], jobs: int | None,
-            output_dir: Path | None, verify: bool, timeout: float | None, python: str | None,
-            ignore_order: bool, ignore_labels: bool, color: bool | None, strict: bool,
-            package_xml: bool, include_vendored: bool, debug: bool,
-            stdin_filename: Path | None = None) -> None:
+def rewrite(**given: Any) -> None:
     """Rewrite legacy descriptions under PATHS into EzSkiROS (`-` reads stdin).
 
     Temporary files (.NAME.XXXXXXXX.ezmigrate) that a killed run left beside PATHS are
     listed; a run that writes removes them (they never hold the only copy of anything).
     """
-    reads_stdin = [str(p) for p in paths] == ["-"]
-    start = (stdin_filename or Path.cwd()) if reads_stdin else paths[0]
-    options = _options(start, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
-                                          python=python), paths)
-    if reads_stdin:
-        from ..project.stdin import rewrite_stdin, stdin_roots
-
-        index, ontology_files, used = _load_index(ontology, start, stdin_roots(stdin_filename),
-                                                  options)
-        data = sys.stdin.buffer.read()
-        result = rewrite_stdin(data, index, options.pool(ontology_files),
-                               options.target_version, verify=verify,
-                               ignore_order=ignore_order, ignore_labels=ignore_labels,
-                               filename=stdin_filename)
-        shown = str(stdin_filename) if stdin_filename else "-"
-        _print_result(shown, shown, data, result, dry_run, check, color, debug)
-        if not (dry_run or check):  # whatever happened, stdout gets a whole file
-            new = result.new_source
-            sys.stdout.buffer.write(new if isinstance(new, bytes) else data)
-        _finish([as_written(replace(result, path=in_report(result.path)), data)], report,
-                not (dry_run or check), check, strict, [],
-                MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used))
+    args = RewriteArguments(**given)
+    start = (args.stdin_filename or Path.cwd()) if args.reads_stdin else args.paths[0]
+    options = _options(start, args.command_line(), args.paths)
+    if args.reads_stdin:
+        _rewrite_stdin(args, start, options)
     from ..project.session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
 
-    index, ontology_files, used = _load_index(ontology, start, paths, options)
-    robot = target_for(paths, options.target_version, f"{options.source}: target-version")
-    python = robot_python(robot, options.python, verify)
-    verifier = verified_with(python, robot) if verify else ""
+    index, ontology_files, used = _load_index(args.ontology, start, args.paths, options)
+    robot = target_for(args.paths, options.target_version,
+                       f"{options.source}: target-version")
+    python = robot_python(robot, options.python, args.verify)
+    verifier = verified_with(python, robot) if args.verify else ""
     if verifier:
         click.echo(f"ezmigrate: {printable(verifier)}", err=True)
     pool = replace(options.pool(ontology_files), python=python)  # verification and tracing
     request = RewriteOptions(
-        paths=list(paths), dry_run=dry_run, check=check, exclude=options.exclude,
-        jobs=options.jobs, output_dir=output_dir, verify=verify, pool=pool,
-        ignore_order=ignore_order, ignore_labels=ignore_labels, project=options.project,
-        target=robot.version, include_vendored=include_vendored, package_xml=package_xml)
+        paths=list(args.paths), dry_run=args.dry_run, check=args.check,
+        exclude=options.exclude, jobs=options.jobs, output_dir=args.output_dir,
+        verify=args.verify, pool=pool, ignore_order=args.ignore_order,
+        ignore_labels=args.ignore_labels, project=options.project, target=robot.version,
+        include_vendored=args.include_vendored, package_xml=args.package_xml)
     from ..project.earlier import whole_tree
 
     outcome = run_rewrite(request, index)
@@ -295,17 +282,16 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
                 s.status in ("skipped", "failed") for s in result.skills):  # else nothing to say
             _print_result(shown_path(item.candidate.path),
                           from_repository(item.candidate.path, item.candidate.relative),
-                          item.original if result.changed else b"", result, dry_run, check,
-                          color, debug)
+                          item.original if result.changed else b"", result, args)
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {printable(refused)}", err=True)
-    declared = _show_manifests(outcome, request, color)
-    newer = newer_python_lines(results, python, version_of(python)) if verify else []
+    declared = _show_manifests(outcome, request, args.color)
+    newer = newer_python_lines(results, python, version_of(python)) if args.verify else []
     for line in newer:
         click.echo(f"ezmigrate: {printable(line)}", err=True)
     compounds: list[str] = []
     scenes: list[str] = []
-    if report is not None and report.suffix.lower() == ".md":
+    if args.report is not None and args.report.suffix.lower() == ".md":
         from ..checking.compound import compound_report
         from ..checking.pipeline import scene_report
         from ..checking.run import CheckSettings
@@ -313,13 +299,34 @@ def rewrite(paths: tuple[Path, ...], dry_run: bool, check: bool, report: Path | 
         compounds = compound_report(
             [(m.candidate, m.original, m.result) for m in outcome.migrated], index, pool,
             CheckSettings(exclude=options.exclude, skill_libraries=options.skill_libraries),
-            paths)
-        scenes = scene_report(paths, options.exclude, index)
-    _finish(results, report, request.writes, check, strict,
-            outcome.refused, MarkdownOptions(verify, ignore_order, ignore_labels, ontology=used,
-                                             compounds=compounds, verifier=verifier,
-                                             scenes=scenes, notes=[*newer, *declared]),
-            reported=results if report else None)
+            args.paths)
+        scenes = scene_report(args.paths, options.exclude, index)
+    _finish(args, results, outcome.refused,
+            MarkdownOptions(args.verify, args.ignore_order, args.ignore_labels, ontology=used,
+                            compounds=compounds, verifier=verifier, scenes=scenes,
+                            notes=[*newer, *declared]),
+            reported=results if args.report else None)
+
+
+def _rewrite_stdin(args: RewriteArguments, start: Path, options: Options) -> NoReturn:
+    """``rewrite -``: stdin's file migrated (and verified) to stdout, whole whatever
+    happened, problems and the summary on stderr as for a file."""
+    from ..project.stdin import rewrite_stdin, stdin_roots
+    from ..verify.verdicts import Comparison
+
+    index, ontology_files, used = _load_index(args.ontology, start,
+                                              stdin_roots(args.stdin_filename), options)
+    data = sys.stdin.buffer.read()
+    result = rewrite_stdin(data, index, options.pool(ontology_files), options.target_version,
+                           Comparison(args.ignore_order, args.ignore_labels) if args.verify
+                           else None, args.stdin_filename)
+    shown = str(args.stdin_filename) if args.stdin_filename else "-"
+    _print_result(shown, shown, data, result, args)
+    if args.writes:  # whatever happened, stdout gets a whole file
+        new = result.new_source
+        sys.stdout.buffer.write(new if isinstance(new, bytes) else data)
+    _finish(args, [as_written(replace(result, path=in_report(result.path)), data)], [],
+            MarkdownOptions(args.verify, args.ignore_order, args.ignore_labels, ontology=used))
 
 
 def _as_written(migrated: Sequence[Any],
@@ -371,36 +378,36 @@ def _show_manifests(outcome: Any, request: Any, color: bool | None) -> list[str]
 
 
 def _print_result(shown: str, relative: str, original: bytes, result: FileResult,
-                  dry_run: bool, check: bool, color: bool | None, debug: bool) -> None:
+                  args: RewriteArguments) -> None:
     """One file's problems on stderr; its diff (``--dry-run``) or name (``--check``)."""
     if result.error:
-        click.echo(f"{printable(shown, path=True)}: {_said(result.error, debug)}", err=True)
+        click.echo(f"{printable(shown, path=True)}: {_said(result.error, args.debug)}",
+                   err=True)
     for skill in result.skills:
         if skill.status in ("skipped", "failed"):
             reason = (skill.reason or "").splitlines()[0] if skill.reason else ""
             click.echo(f"{printable(shown, path=True)}:{skill.line}: {printable(skill.name)}: "
                        f"{skill.status}: {printable(reason)}", err=True)
-    if result.changed and dry_run:
+    if result.changed and args.dry_run:
         assert isinstance(result.new_source, bytes)
         diff = unified_diff(printable(relative), original, result.new_source,
                             written_diff(result))
-        echo_diff(diff, color)
-    elif result.changed and check:
+        echo_diff(diff, args.color)
+    elif result.changed and args.check:
         click.echo(f"would rewrite {printable(shown)}")
 
 
-def _finish(results: list[FileResult], report: Path | None, writes: bool, check: bool,
-            strict: bool, refused: list[str], options: MarkdownOptions,
-            reported: list[FileResult] | None = None) -> NoReturn:
+def _finish(args: RewriteArguments, results: list[FileResult], refused: list[str],
+            options: MarkdownOptions, reported: list[FileResult] | None = None) -> NoReturn:
     """The report (of ``reported``, the whole tree, when given), the summary line, and the
     exit code every ``rewrite`` ends with."""
-    if report is not None:
-        _write_report(report, results if reported is None else reported, options)
+    if args.report is not None:
+        _write_report(args.report, results if reported is None else reported, options)
     from ..project.session import exit_code
 
     summary = Summary.of(results)
-    click.echo(f"ezmigrate: {summary.line(dry=not writes)}", err=True)
-    sys.exit(exit_code(summary, check, strict, refused))
+    click.echo(f"ezmigrate: {summary.line(dry=not args.writes)}", err=True)
+    sys.exit(exit_code(summary, args.check, args.strict, refused))
 
 
 @main.command()
@@ -415,52 +422,51 @@ def _finish(results: list[FileResult], report: Path | None, writes: bool, check:
 @IGNORE_ORDER
 @IGNORE_LABELS
 @DEBUG
-def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path, ...],
-           jobs: int | None, timeout: float | None, python: str | None,
-           exclude: tuple[str, ...],
-           ignore_order: bool, ignore_labels: bool, debug: bool) -> None:
+def verify(**given: Any) -> None:
     """Prove AFTER means what BEFORE meant (two files, or two folders by relative path)."""
     from ..verify.command import PathsMismatch, VerifyOptions, run_verify
 
-    options = _options(before, CommandLine(exclude=exclude, jobs=jobs, timeout=timeout,
-                                           python=python), (after,))
-    _, ontology_files, used = _load_index(ontology, before, [before], options)
-    robot = target_for([after], options.target_version, f"{options.source}: target-version")
+    args = VerifyArguments(**given)
+    options = _options(args.before, args.command_line(), (args.after,))
+    _, ontology_files, used = _load_index(args.ontology, args.before, [args.before], options)
+    robot = target_for([args.after], options.target_version,
+                       f"{options.source}: target-version")
     python = robot_python(robot, options.python, True)
     verifier = verified_with(python, robot)
     click.echo(f"ezmigrate: {printable(verifier)}", err=True)
     pool = replace(options.pool(ontology_files), python=python)
     try:
         results, unloadable = run_verify(VerifyOptions(
-            before, after, pool, ignore_order, ignore_labels, options.exclude))
+            args.before, args.after, pool, args.ignore_order, args.ignore_labels,
+            options.exclude))
     except PathsMismatch as error:
         raise click.UsageError(str(error)) from None
     for result in results:
+        where = printable(result.path, path=True)
         if result.error:
-            click.echo(f"{printable(result.path, path=True)}: {_said(result.error, debug)}",
-                       err=True)
+            click.echo(f"{where}: {_said(result.error, args.debug)}", err=True)
         for note in result.notes:  # an unchanged file that cannot load; captured output
-            click.echo(f"{printable(result.path, path=True)}: {_said(note, debug)}", err=True)
+            click.echo(f"{where}: {_said(note, args.debug)}", err=True)
         for skill in result.skills:
             if skill.status == "failed":
-                click.echo(f"{printable(result.path, path=True)}:{skill.line}: "
-                           f"{printable(skill.name)}: {_said(skill.reason or '', debug)}",
-                           err=True)
+                click.echo(f"{where}:{skill.line}: {printable(skill.name)}: "
+                           f"{_said(skill.reason or '', args.debug)}", err=True)
                 for d in skill.diff or ():
                     click.echo(f"    {d['where']}: {d['message']}", err=True)
                     if d.get("before") is not None:
                         click.echo(f"      - {d['before']}", err=True)
                     if d.get("after") is not None:
                         click.echo(f"      + {d['after']}", err=True)
-    if report is not None:
-        _write_report(report, results,
-                      MarkdownOptions(True, ignore_order, ignore_labels, ontology=used,
-                                      verifier=verifier))
+    if args.report is not None:
+        _write_report(args.report, results,
+                      MarkdownOptions(True, args.ignore_order, args.ignore_labels,
+                                      ontology=used, verifier=verifier))
     total = sum(len(r.skills) for r in results)
     bad = sum(1 for r in results for s in r.skills if s.status == "failed")
+    relax = relaxed(args.ignore_order, args.ignore_labels)
     click.echo(f"ezmigrate: {len(results)} files compared, {total} classes, "
                f"{total - bad} equivalent, {bad} not equivalent"
-               + (f" ({relax})" if (relax := relaxed(ignore_order, ignore_labels)) else "")
+               + (f" ({relax})" if relax else "")
                + (", some files could not be loaded" if unloadable else ""), err=True)
     sys.exit(EXIT_ERROR if unloadable else EXIT_ATTENTION if bad else EXIT_OK)
 
@@ -510,14 +516,7 @@ def verify(before: Path, after: Path, report: Path | None, ontology: tuple[Path,
                    "its workspace_dir, init_scene and skill_list are used (default: the "
                    "only one in the repository).")
 @DEBUG
-def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str, ...],
-          ignore: tuple[str, ...], extend_select: tuple[str, ...], output_format: str,
-          statistics: bool, exit_zero: bool, jobs: int | None, timeout: float | None,
-          python: str | None, exclude: tuple[str, ...], include_vendored: bool, quiet: bool,
-          scene: Path | None, debug: bool, no_cache: bool = False, trace: bool = False,
-          cache_folder: Path | None = None,
-          stdin_filename: Path | None = None, fix: bool = False,
-          show_diff: bool = False, launch_file: Path | None = None) -> None:
+def check(**given: Any) -> None:
     """Lint SkiROS2 and EzSkiROS descriptions under PATHS, the working directory when none
     is given, as ruff does (codes: docs/rules.md).
 
@@ -528,46 +527,56 @@ def check(paths: tuple[Path, ...], ontology: tuple[Path, ...], select: tuple[str
 
     from ..checking.command import Conclusion, conclude, subject
     from ..checking.discover import checked_files
-    from ..checking.pipeline import needs_trees, run_check
-    from ..checking.run import CheckSettings
+    from ..checking.pipeline import run_check
     from .output_formats import STATISTICS
 
-    if statistics and output_format not in STATISTICS:
-        raise click.UsageError(f"--statistics has no {output_format} form (it has "
+    args = CheckArguments(**given)
+    if args.statistics and args.output_format not in STATISTICS:
+        raise click.UsageError(f"--statistics has no {args.output_format} form (it has "
                                f"{' and '.join(STATISTICS)}): drop one of the two options")
-    stdin = [str(p) for p in paths] == ["-"]
-    if stdin and (fix or show_diff):
+    if args.reads_stdin and (args.fix or args.show_diff):
         raise click.UsageError("--fix and --diff work on files, not on stdin")
-    of = subject(paths, sys.stdin.buffer.read() if stdin else None, stdin_filename)
-    options = _options(of.anchor, CommandLine(
-        exclude=exclude, jobs=jobs, timeout=timeout, python=python, select=select or None,
-        ignore=ignore, extend_select=extend_select), of.roots)
+    of = subject(args.paths, sys.stdin.buffer.read() if args.reads_stdin else None,
+                 args.stdin_filename)
+    options = _options(of.anchor, args.command_line(), of.roots)
     selection = _selection(options)
     with shared_rules():  # the four searches of the repository share their answers
-        discovered = checked_files(list(of.paths), options.exclude, include_vendored)
-        index, ontology_files, _ = _load_index(ontology, of.anchor, of.roots, options)
-        pool = options.pool(ontology_files)
-        progress = (lambda line: click.echo(f"ezmigrate: {printable(line)}", err=True)) \
-            if sys.stderr.isatty() and not quiet else None
-        outcome = run_check(list(of.paths), index, pool, CheckSettings(
-            exclude=options.exclude, include_vendored=include_vendored,
-            skill_libraries=options.skill_libraries,
-            compounds=needs_trees(selection.codes()), trace=trace,
-            cache_dir=None if no_cache else _cache_dir(of.paths, options, cache_folder),
-            world=_world_run(of.paths, options, scene),
-            launch=_launch(of.anchor, launch_file, quiet), progress=progress,
-            discovered=discovered))
+        discovered = checked_files(list(of.paths), options.exclude, args.include_vendored)
+        index, ontology_files, _ = _load_index(args.ontology, of.anchor, of.roots, options)
+        outcome = run_check(list(of.paths), index, options.pool(ontology_files),
+                            _check_settings(args, of, options, selection, discovered))
     done = conclude(outcome, of, Conclusion(
-        selection, "diff" if show_diff else "fix" if fix else None, quiet, exit_zero))
+        selection, "diff" if args.show_diff else "fix" if args.fix else None, args.quiet,
+        args.exit_zero))
     for diff in done.diffs:
         echo_diff(diff)
     for message in done.messages:
         click.echo(f"ezmigrate: {printable(message)}", err=True)
     if done.findings:
-        _echo_findings(done.shown, output_format, statistics)
+        _echo_findings(done.shown, args.output_format, args.statistics)
     if done.summary is not None:
         click.echo(f"ezmigrate: {done.summary}", err=True)
     sys.exit(done.exit_code)
+
+
+def _check_settings(args: CheckArguments, of: Subject, options: Options,
+                    selection: Selection, discovered: Discovery) -> CheckSettings:
+    """The ``CheckSettings`` of a ``check`` run, the one place its command line, the
+    resolved ``options`` and the codes of ``selection`` become them; says the launch file
+    on stderr (``_launch``). ``discovered``: the paths' files, already being found."""
+    from ..checking.pipeline import needs_trees
+    from ..checking.run import CheckSettings
+
+    progress = (lambda line: click.echo(f"ezmigrate: {printable(line)}", err=True)) \
+        if sys.stderr.isatty() and not args.quiet else None
+    return CheckSettings(
+        exclude=options.exclude, include_vendored=args.include_vendored,
+        skill_libraries=options.skill_libraries, compounds=needs_trees(selection.codes()),
+        trace=args.trace,
+        cache_dir=None if args.no_cache else _cache_dir(of.paths, options, args.cache_folder),
+        world=_world_run(of.paths, options, args.scene),
+        launch=_launch(of.anchor, args.launch_file, args.quiet), progress=progress,
+        discovered=discovered)
 
 
 def _selection(options: Options) -> Any:

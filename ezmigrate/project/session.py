@@ -27,7 +27,7 @@ from . import holdpoint, interrupt
 from .exit_codes import EXIT_ATTENTION, EXIT_OK
 from .progress import Progress
 from .runner import Extras, Migrated, default_jobs
-from .settle import Checks, settle
+from .settle import Checks, Settling, settle
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -112,9 +112,9 @@ def run_rewrite(options: RewriteOptions, index: OntologyIndex | None,
     notes += _stale_notes(stale, options.writes)
     holdpoint.reach("discovered")
     with Progress.for_stream(len(candidates)) as progress:  # gone before anything is said
-        migrated = settle(candidates, index, options.jobs, options.verification, progress,
-                          options.target, refuse_unloadable=True,
-                          extras=Extras(written_lines=True, diffs=options.dry_run))
+        migrated = settle(candidates, index, options.jobs, Settling(
+            options.verification, options.target, refuse_unloadable=True,
+            extras=Extras(written_lines=True, diffs=options.dry_run)), progress)
     outcome = RewriteOutcome(migrated, notes)
     if not options.writes:
         outcome.manifests = _manifests(outcome, options)

@@ -50,36 +50,52 @@ class Checks:
     comparison: Comparison = field(default_factory=Comparison)
 
 
+@dataclass(frozen=True)
+class Settling:
+    """How a command settles its project, beyond its files, ontology and workers: decided
+    by the command in one place and passed to ``settle`` as one argument."""
+
+    checks: Checks | None = None
+    """How what changed is verified; None: not at all (``--no-verify``, ``check``)."""
+    target: tuple[int, int] | None = None
+    """The Python the migrated code must run on (None: the default, ``Settings.target``)."""
+    refuse_unloadable: bool = False
+    """Without verification, hold back what the runtime's early checks refuse
+    (``static_refusal``; ``rewrite --no-verify`` writes, ``check`` only reads)."""
+    extras: Extras = NO_EXTRAS
+    """What the workers add to each result for the report and the output
+    (``runner.Extras``; ``settle`` asks for the refusals itself, with
+    ``refuse_unloadable``)."""
+
+
+MIGRATE_ONLY = Settling()
+"""Migrate for the default target, verify and refuse nothing, add nothing (``check``)."""
+
+
 def settle(candidates: Sequence[Candidate], index: OntologyIndex | None, jobs: int,
-           checks: Checks | None = None, progress: Progress | None = None,
-           target: tuple[int, int] | None = None,
-           refuse_unloadable: bool = False,
-           read: Sequence[Migrated] = (), extras: Extras = NO_EXTRAS,
+           how: Settling = MIGRATE_ONLY, progress: Progress | None = None, *,
+           read: Sequence[Migrated] = (),
            known: Mapping[str, tuple[bytes, FileResult]] | None = None) -> list[Migrated]:
-    """Every candidate's settled result (see the module doc); ``checks`` None: no
-    verification (``--no-verify``, ``check``); ``target``: the Python the migrated code
-    must run on (None: the default, ``Settings.target``). ``refuse_unloadable``: without
-    verification, hold back what the runtime's early checks refuse (``static_refusal``;
-    ``rewrite --no-verify`` writes, ``check`` only reads).
+    """Every candidate's settled result (see the module doc), settled as ``how`` says.
 
     ``read``: files of the same package already read by other means (``check``'s plain
     reader, or its cache), not migrated here and not returned: only the cross-file pass
     sees them, as files that define bases for the candidates. Their readings are final
     (``exported`` only decides the imports a rewrite keeps, which ``check`` never
-    writes). ``extras``: what the workers add to each result for the report and the
-    output (``runner.Extras``; the refusals are asked for here, with
-    ``refuse_unloadable``). ``known``: files already migrated alone (``migrate_all``)."""
-    if refuse_unloadable and checks is None:
+    writes). ``known``: files already migrated alone (``migrate_all``)."""
+    extras = how.extras
+    if how.refuse_unloadable and how.checks is None:
         extras = replace(extras, refusals=True)
-    migrated = migrate_all(candidates, index, jobs, progress, target, extras, known)
-    base = Settings(index=index) if target is None else Settings(index=index, target=target)
+    migrated = migrate_all(candidates, index, jobs, progress, how.target, extras, known)
+    base = Settings(index=index) if how.target is None else Settings(index=index,
+                                                                     target=how.target)
     _settle_cross_file(migrated, base, read)
     if progress is not None:
         progress.close()  # the line is gone before verification says anything
     holdpoint.reach("migrated")
-    if checks is not None:
-        verify_changed(migrated, checks)
-    elif refuse_unloadable:
+    if how.checks is not None:
+        verify_changed(migrated, how.checks)
+    elif how.refuse_unloadable:
         refuse_statically(migrated, index)
     return migrated
 

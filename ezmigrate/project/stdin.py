@@ -26,6 +26,7 @@ from ..report.results import FileResult
 
 if TYPE_CHECKING:
     from ..verify.pool import PoolConfig
+    from ..verify.verdicts import Comparison
 
 NAME = "stdin_module.py"
 """What the one file of the project is called on disk while it is migrated and loaded."""
@@ -53,11 +54,11 @@ def stdin_roots(filename: Path | None) -> list[Path]:
 
 
 def rewrite_stdin(data: bytes, index: Any, pool: PoolConfig,
-                  target_version: tuple[int, int] | None, *, verify: bool,
-                  ignore_order: bool = False, ignore_labels: bool = False,
+                  target_version: tuple[int, int] | None, verification: Comparison | None,
                   filename: Path | None = None) -> FileResult:
     """The result of stdin's bytes; ``new_source`` is set only when it verified (or
-    verification is off). The command line prints and exits exactly as for a file.
+    verification is off: ``verification`` None, else how strictly the two versions must
+    agree). The command line prints and exits exactly as for a file.
 
     Stdin is a project of one file: written to a private folder, it is settled like any
     repository (``project.settle``: migrated, verified, classes that fail held back and
@@ -66,18 +67,17 @@ def rewrite_stdin(data: bytes, index: Any, pool: PoolConfig,
     that (a project that says ``jobs = 1`` has its reasons, memory most often).
     """
     from ..files.discover import Candidate
-    from ..verify.verdicts import Comparison
-    from .settle import Checks, settle
+    from .settle import Checks, Settling, settle
     from .target import robot_python, target_for
 
     robot = target_for([filename or Path.cwd()], target_version)
     pool = replace(pool, workers=min(2, pool.workers),
                    python=robot_python(robot, pool.python if pool.python_given else None,
-                                       verify))
-    checks = Checks(pool, Comparison(ignore_order, ignore_labels)) if verify else None
+                                       verification is not None))
+    checks = None if verification is None else Checks(pool, verification)
     with tempfile.TemporaryDirectory(prefix="ezmigrate-stdin-") as folder:
         path = Path(folder) / NAME
         path.write_bytes(data)
-        [item] = settle([Candidate(path, path.parent)], index, 1, checks, target=robot.version,
-                        refuse_unloadable=True)
+        [item] = settle([Candidate(path, path.parent)], index, 1,
+                        Settling(checks, robot.version, refuse_unloadable=True))
     return replace(item.result, path=str(filename) if filename else "-")

@@ -29,7 +29,7 @@ from rdflib import BNode, Graph, Literal, URIRef
 from rdflib.namespace import OWL, RDF, RDFS, XSD
 
 from .expressions import ClassExpr, ComplementOf, IntersectionOf, Named, UnionOf, Unsupported
-from .index import OntologyIndex, PropertyInfo
+from .index import ClassGraph, OntologyIndex, PropertyInfo
 from .individuals import add_individuals
 from .naming import (
     DEFAULT_PREFIX,
@@ -75,10 +75,8 @@ def build_index(files: Sequence[OntologyFile], fingerprint: str) -> OntologyInde
         add_individuals(graph, individuals)
     return OntologyIndex(
         prefixes=prefixes,
-        classes=classes,
+        classes=ClassGraph(classes, direct, equivalent),
         properties=properties,
-        direct_superclasses=direct,
-        equivalent_classes=equivalent,
         sources=[str(entry.path) for entry in files],
         fingerprint=fingerprint,
         default_prefix=DEFAULT_PREFIX,

@@ -72,6 +72,19 @@ class PropertyInfo:
         return self.lineage.ancestors(self.iri) - {self.iri}
 
 
+@dataclass(frozen=True)
+class ClassGraph:
+    """The named classes and the edges asserted between them, as the builder or the cache
+    read them: one argument of `OntologyIndex`, since the three only mean something
+    together (the index builds its ``Hierarchy`` from them and never stores a closure)."""
+
+    names: Iterable[str]
+    direct_superclasses: Mapping[str, Iterable[str]] = field(default_factory=dict)
+    """Each class's named ``rdfs:subClassOf`` targets (and intersection members)."""
+    equivalent_classes: Mapping[str, Iterable[str]] = field(default_factory=dict)
+    """Each class's named ``owl:equivalentClass`` partners, both directions."""
+
+
 class OntologyIndex:
     """Classes, properties and prefixes of the loaded ontology files, ready for lookups.
 
@@ -94,10 +107,8 @@ class OntologyIndex:
         self,
         *,
         prefixes: Mapping[str, str],
-        classes: Iterable[str],
+        classes: ClassGraph,
         properties: Mapping[str, PropertyInfo],
-        direct_superclasses: Mapping[str, Iterable[str]] | None = None,
-        equivalent_classes: Mapping[str, Iterable[str]] | None = None,
         sources: Iterable[str] = (),
         fingerprint: str = "",
         default_prefix: str = DEFAULT_PREFIX,
@@ -107,13 +118,13 @@ class OntologyIndex:
         self.individuals = None if individuals is None else {
             iri: list(types) for iri, types in individuals.items()}
         self.default_prefix = default_prefix
-        self.classes = frozenset(classes)
+        self.classes = frozenset(classes.names)
         self.sources = tuple(sources)
         self.fingerprint = fingerprint
-        direct = {c: frozenset(s) for c, s in (direct_superclasses or {}).items()}
+        direct = {c: frozenset(s) for c, s in classes.direct_superclasses.items()}
         self._direct_superclasses: dict[str, frozenset[str]] = direct
         self._equivalent_classes: dict[str, frozenset[str]] = {
-            c: frozenset(same) for c, same in (equivalent_classes or {}).items()}
+            c: frozenset(same) for c, same in classes.equivalent_classes.items()}
         edges: dict[str, set[str]] = {c: set(s) for c, s in direct.items()}
         for cls, same in self._equivalent_classes.items():
             edges.setdefault(cls, set()).update(same)
@@ -388,6 +399,7 @@ def _group_by_local_name(iris: Iterable[str]) -> dict[str, tuple[str, ...]]:
 
 __all__ = [
     "ClassExpr",
+    "ClassGraph",
     "ComplementOf",
     "IntersectionOf",
     "Named",

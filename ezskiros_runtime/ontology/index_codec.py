@@ -18,7 +18,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from .expressions import ClassExpr, ComplementOf, IntersectionOf, Named, UnionOf, Unsupported
-from .index import PROPERTY_KINDS, OntologyIndex, PropertyInfo
+from .index import PROPERTY_KINDS, ClassGraph, OntologyIndex, PropertyInfo
 
 FORMAT = "ezskiros-ontology-index"
 MAX_DEPTH = 64
@@ -79,10 +79,10 @@ def decode(data: object, fingerprint: str, version: str) -> OntologyIndex:
     individuals = top.get("individuals")
     return OntologyIndex(
         prefixes=_strings_to(top.get("prefixes"), _string),
-        classes=_strings(top.get("classes")),
+        classes=ClassGraph(_strings(top.get("classes")),
+                           _strings_to(top.get("superclasses"), _strings),
+                           _strings_to(top.get("equivalent"), _strings)),
         properties=_properties(top.get("properties")),
-        direct_superclasses=_strings_to(top.get("superclasses"), _strings),
-        equivalent_classes=_strings_to(top.get("equivalent"), _strings),
         sources=_strings(top.get("sources")),
         fingerprint=fingerprint,
         default_prefix=_string(top.get("default_prefix")),

@@ -489,15 +489,18 @@ def _filler(draw: st.DrawFn, state: _ClassState, constants: Sequence[str]) -> li
 
 @dataclass
 class _Knobs:
-    max_params: int
-    max_conditions: int
-    implementations: bool
-    comments: bool
-    condition_classes: bool
-    duplicate_keys: bool
-    undeclared_keys: bool
-    file_quirks: bool
-    consistent_vocabulary: bool
+    """The families of constructs a generated module may use (``legacy_modules_with_names``
+    takes them as keywords: one object here, not nine parameters down every helper)."""
+
+    max_params: int = 8
+    max_conditions: int = 8
+    implementations: bool = True
+    comments: bool = True
+    condition_classes: bool = True
+    duplicate_keys: bool = True
+    undeclared_keys: bool = False
+    file_quirks: bool = True
+    consistent_vocabulary: bool = False
 
 
 def _description_class(draw: st.DrawFn, name: str, style: ImportStyle, cond_prefix: str | None,
@@ -669,23 +672,13 @@ def _module(draw: st.DrawFn, min_classes: int, max_classes: int, knobs: _Knobs) 
 
 
 def legacy_modules_with_names(
-    *,
-    min_classes: int = 1,
-    max_classes: int = 3,
-    max_params: int = 8,
-    max_conditions: int = 8,
-    implementations: bool = True,
-    comments: bool = True,
-    condition_classes: bool = True,
-    duplicate_keys: bool = True,
-    undeclared_keys: bool = False,
-    file_quirks: bool = True,
-    consistent_vocabulary: bool = False,
+    *, min_classes: int = 1, max_classes: int = 3, **knobs: Any
 ) -> st.SearchStrategy[GeneratedModule]:
     """Legacy modules as ``GeneratedModule(text, class_names)``.
 
-    ``class_names`` are the description classes in source order. Knobs switch off whole
-    families of constructs (e.g. ``file_quirks=False`` gives ``\\n`` line endings, 4-space
+    ``class_names`` are the description classes in source order. Knobs (the fields of
+    ``_Knobs``, by name; an unknown one is a ``TypeError``) switch off whole families of
+    constructs (e.g. ``file_quirks=False`` gives ``\\n`` line endings, 4-space
     indentation and a final newline; ``undeclared_keys=True`` lets conditions name keys no
     ``addParam`` declares, a latent bug SkiROS2 accepts and EzSkiROS keeps via
     ``self.param(...)``).
@@ -698,9 +691,7 @@ def legacy_modules_with_names(
     """
     if not 1 <= min_classes <= max_classes:
         raise ValueError("need 1 <= min_classes <= max_classes")
-    knobs = _Knobs(max_params, max_conditions, implementations, comments, condition_classes,
-                   duplicate_keys, undeclared_keys, file_quirks, consistent_vocabulary)
-    return _module(min_classes, max_classes, knobs)
+    return _module(min_classes, max_classes, _Knobs(**knobs))
 
 
 def legacy_modules(**knobs: Any) -> st.SearchStrategy[str]:
