@@ -108,7 +108,7 @@ RULES: tuple[Rule, ...] = (
          "The EzSkiROS DSL is used in a way that cannot be lowered (`*args`, `~` on is_a, a "
          "malformed marker).",
          "Follow the message; docs/dsl.md lists the accepted forms.",
-         ("description",),
+         ("description", "not-upstream-api", "not-declarative"),
          skiros2="ezskiros_runtime raises SkillTypeError when the skill manager instantiates the "
          "description (SkillManager.add_skill), so the skill is not loaded"),
     Rule("EZ109", "implementation-unknown-key", "error",

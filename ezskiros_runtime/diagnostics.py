@@ -29,6 +29,9 @@ class Finding:
     ``kind`` is a stable identifier (``"range"``, ``"unknown-vocabulary"``, ...) that policy
     and reports key on; ``message`` is the human sentence without location, which ``str()``
     prefixes with ``file:line: Skill:`` so that editors and terminals can jump to the line.
+    It is the one finding type of every pass, here and in ``ezmigrate``: the early checks,
+    a class that could not be loaded (``class_error``), the compound and world checks and
+    the findings a migration keeps for its reviewer.
     """
 
     kind: str
@@ -43,10 +46,17 @@ class Finding:
     actual: str | None = None
     suggestions: tuple[str, ...] = ()
     subject: str = ""
-    """What else the finding is about: a scene's element, an ontology term, a child skill
-    (the scene diagram highlights it; one cause is reported once by it)."""
+    """What else the finding is about: a scene's element, an ontology term, a child skill,
+    the prefix no loaded ontology defines (the scene diagram highlights it; one cause is
+    reported once by it)."""
     fix: str | None = None
     """The suggested fix, when the pass knows one (``Did you mean ...?``)."""
+    legacy_line: int | None = None
+    """The line in the legacy file when ``line`` is that of the file migrated from it
+    (``ezmigrate rewrite``'s report names the written line, which a reviewer opens, and this
+    one beside it); None when no file was rewritten. A field of the finding rather than a
+    map beside the report, so that every printer reads one finding, as it reads a skill's
+    own ``legacy_line``."""
 
     @property
     def code(self) -> str:
@@ -80,26 +90,16 @@ class Finding:
         return cls(**{**fields, "suggestions": tuple(data.get("suggestions") or ())})
 
 
-@dataclass(frozen=True)
-class ClassError:
-    """A description class that could not be loaded.
-
-    ``kind`` is ``"not-upstream-api"`` (a fork's API, §7: report as skipped),
-    ``"not-declarative"`` (a ``ConditionFunction``), or ``"error"`` (anything else).
-    """
-
-    name: str
-    line: int | None
-    kind: str
-    message: str
-
-    def to_json(self) -> dict[str, Any]:
-        return asdict(self)
-
-    @classmethod
-    def from_json(cls, data: dict[str, Any]) -> ClassError:
-        return cls(str(data.get("name", "?")), data.get("line"),
-                   str(data.get("kind", "error")), str(data.get("message", "")))
+def class_error(skill: str, line: int | None, message: str, file: str | None = None,
+                kind: str = "description") -> Finding:
+    """The finding of a description class that could not be loaded at all (instantiating it
+    raised): an error at the ``class`` statement's ``line``, whose ``message`` is the
+    exception. ``kind`` is ``"not-upstream-api"`` for a fork's API (legacy-skiros2-api.md
+    §7), ``"not-declarative"`` for a ``ConditionFunction``, ``"description"`` for anything
+    else: all three EZ108, as ``check`` reports them. The loader and ``check``'s reading of
+    an EzSkiROS file (``ezmigrate/lint/ezskiros_static.py``) make them here, so that both
+    give the same finding."""
+    return Finding(kind, "error", message, file, line, skill)
 
 
 def _readable_path(path: str) -> str:
@@ -181,5 +181,6 @@ __all__ = [
     "Severity",
     "SkillTypeError",
     "UnknownVocabularyError",
+    "class_error",
     "did_you_mean",
 ]

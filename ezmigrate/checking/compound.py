@@ -7,7 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..lint.diagnostic import Diagnostic, Positions, diagnostic
+from ..lint.diagnostic import Diagnostic, Positions, from_finding
 from .run import CheckRun, CheckSettings, CompoundFound
 
 if TYPE_CHECKING:
@@ -32,8 +32,7 @@ def run(run: CheckRun) -> None:
     found: dict[tuple[str, int, str, str], Diagnostic] = {}
     for path, finding in run.compound_run.findings:
         where = Positions(run.outcome.sources.get(path, ""))
-        item = diagnostic(path, where, finding.kind, finding.line or 0, finding.message,
-                          finding.skill, finding.fix, finding.severity)
+        item = from_finding(path, where, finding)
         found.setdefault((path, item.line, item.code, item.message), item)
     run.diagnostics.extend(found.values())
     run.compound = CompoundFound([m for _, m in run.compound_run.models

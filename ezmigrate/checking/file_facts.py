@@ -30,6 +30,7 @@ from ..lint.newer_fstrings import older_spelling
 from ..lint.plain_reader import Declined, read_plain
 from ..project.cross_file import RUNTIME_MARKER
 from ..report.results import FileResult
+from ..verify.protocol import LoadOutcome
 from .implementation_code import ModuleFacts, module_facts
 
 
@@ -60,6 +61,11 @@ class FileFacts:
     depends: tuple[tuple[str, str], ...] = ()
     """``(path, sha256)`` of the other files the reading read (the lab's modules its star
     imports name, ``static.star_sources``): a kept reading is one of these bytes too."""
+    loaded: LoadOutcome | None = None
+    """For an EzSkiROS file read ``statically``, what loading it would give, read from the
+    same syntax tree against the active ontology (``lint/ezskiros_static``): taken here, in
+    the reading pool's workers, instead of parsing the file a second time in the main
+    process. It depends on the ontology, which the cache's key then names."""
 
     def moved(self, to: Candidate) -> FileFacts:
         """The facts of a file with the same bytes at ``to``: a file's facts name its path
@@ -74,7 +80,8 @@ class FileFacts:
         settled = replace(self.settled, path=relative) if self.settled is not None else None
         trees = None if self.trees is None else replace(self.trees, found=tuple(
             _moved(f, path) for f in self.trees.found))
-        return replace(self, static=static, settled=settled, trees=trees)
+        # the static load's findings name the file: the copy's is read where it is needed
+        return replace(self, static=static, settled=settled, trees=trees, loaded=None)
 
 
 def parse(data: bytes) -> ast.Module | None:
@@ -104,11 +111,13 @@ def _moved(found: CompoundModel | Unanalysable | NeedsTrace, path: str
 
 
 def file_facts(candidate: Candidate, data: bytes, compounds: bool,
-               verdict: bool | None = True) -> FileFacts:
+               verdict: bool | None = True, statically: bool = False) -> FileFacts:
     """The facts of a file; ``compounds``: also what the compound pass and the
-    implementation checks read. ``verdict``: the prefilter's text on it (``by_text``); when
-    it could not tell (None) the prefilter's parse is taken here, in the reading pool's
-    workers and kept by the cache, rather than file by file in the main process. A file
+    implementation checks read; ``statically``: an EzSkiROS file's descriptions too, read
+    from its syntax (``FileFacts.loaded``). ``verdict``: the prefilter's text on it
+    (``by_text``); when it could not tell (None) the prefilter's parse is taken here, in
+    the reading pool's workers and kept by the cache, rather than file by file in the main
+    process. A file
     ruled out (``described`` False) is parsed only for the compound pass (a tree or an
     implementation outside a description file) and the repository scan (a description
     class; ``SCAN_WHEN``), and read only when it parses."""
@@ -138,10 +147,23 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
     static = read_plain(data, candidate.relative, tree) if not runtime else Declined()
     settled = read_ezskiros(tree, candidate.relative) if runtime else None
     if not compounds:
-        return FileFacts(static, settled=settled, parsed=True)
-    trees = tree_facts(tree, str(candidate.path)) if read_when else None
-    return FileFacts(static, trees, _implementation(tree, data), settled=settled, parsed=True,
-                     depends=_depends(tree, str(candidate.path)) if read_when else ())
+        facts = FileFacts(static, settled=settled, parsed=True)
+    else:
+        trees = tree_facts(tree, str(candidate.path)) if read_when else None
+        facts = FileFacts(static, trees, _implementation(tree, data), settled=settled,
+                          parsed=True,
+                          depends=_depends(tree, str(candidate.path)) if read_when else ())
+    if runtime and statically:  # last: the reading may renumber the tree's annotations
+        facts = replace(facts, loaded=static_load(tree, str(candidate.path)))
+    return facts
+
+
+def static_load(tree: ast.Module, path: str) -> LoadOutcome:
+    """What loading the EzSkiROS module ``tree`` (the file ``path``) would give, read from
+    its syntax against the active ontology: no code of the repository runs."""
+    from ..lint.ezskiros_static import read_ezskiros_statically
+
+    return read_ezskiros_statically(tree, path).outcome()
 
 
 def _depends(tree: ast.Module, path: str) -> tuple[tuple[str, str], ...]:

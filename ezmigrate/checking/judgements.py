@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from ezskiros_runtime.codes import code_for
 
-from ..lint.diagnostic import Diagnostic, Positions, diagnostic
+from ..lint.diagnostic import Diagnostic, Positions, from_finding
 from .run import CheckRun
 from .uninferable import UNINFERABLE, UNKNOWN
 
@@ -93,8 +93,8 @@ def _implementations(run: CheckRun, implementing: list[tuple[Candidate, ModuleFa
     for candidate, facts in implementing:
         path = str(candidate.path)
         where = Positions(run.outcome.sources.get(path, ""))
-        found += [diagnostic(path, where, f.kind, f.line or 0, f.message, f.skill, f.fix,
-                             term=f.subject)
+        # the key, class or property a finding is about is its subject: the term below
+        found += [replace(from_finding(path, where, f), term=f.subject)
                   for f in implementation_findings(facts, path, skills, known, classes,
                                                    property_known)]
     unknown_property = code_for("implementation-unknown-property")

@@ -14,7 +14,7 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..lint.diagnostic import Diagnostic, Positions, diagnostic, from_finding
+from ..lint.diagnostic import Diagnostic, Positions, check_finding, from_finding
 from ..report.results import FileResult
 from .run import CheckRun
 
@@ -24,7 +24,7 @@ if TYPE_CHECKING:
     from ..cache.facts_cache import FactsCache
     from ..verify.protocol import LoadOutcome
 
-UNRESOLVED_LOAD = {"timeout": "info", "memory": "info", "crashed": "info"}
+UNRESOLVED_LOAD = frozenset({"timeout", "memory", "crashed"})
 """Loads that failed on the sandbox's limits, not on the module: nothing is known of it."""
 KEPT_FROM_CODEMOD = frozenset({"description-in-options", "options-ignored"})
 """Codemod findings ``check`` keeps; the others are found again by the runtime's checks."""
@@ -45,26 +45,24 @@ def legacy_diagnostics(path: str, result: FileResult, positions: Positions,
 
             severity, message = unreadable_severity(path, message, result.python2,
                                                     libraries)
-        found.append(diagnostic(path, positions, result.error_kind, result.error_line or 0,
-                                message, severity=severity))
+        found.append(from_finding(path, positions, check_finding(
+            result.error_kind, result.error_line or 0, message, lowered=severity == "info")))
     for skill in result.skills:
         if skill.status == "converted":
-            found.append(diagnostic(path, positions, "not-migrated", skill.line,
-                                    "legacy description not migrated yet (run `ezmigrate "
-                                    "rewrite`)", skill.name))
-            for f in skill.findings:
-                if f.kind in KEPT_FROM_CODEMOD:
-                    found.append(diagnostic(path, positions, f.kind, f.line or skill.line,
-                                            f.message, skill.name))
+            found.append(from_finding(path, positions, check_finding(
+                "not-migrated", skill.line, "legacy description not migrated yet (run "
+                "`ezmigrate rewrite`)", skill.name)))
+            found += [from_finding(path, positions, f, f.line or skill.line)
+                      for f in skill.findings if f.kind in KEPT_FROM_CODEMOD]
             if skill.static is not None:
                 found += [from_finding(path, positions, hit, hit.line or skill.line,
                                        lowered=False)
                           for hit in legacy_hits(skill.name, path, skill.static, index)]
         elif skill.status == "skipped":
             reason = (skill.reason or "").splitlines()[0] if skill.reason else ""
-            found.append(diagnostic(path, positions, "kept-legacy", skill.line,
-                                    f"legacy description kept, not checked: {reason}",
-                                    skill.name))
+            found.append(from_finding(path, positions, check_finding(
+                "kept-legacy", skill.line, f"legacy description kept, not checked: {reason}",
+                skill.name)))
     return found
 
 
@@ -128,19 +126,19 @@ def _load_diagnostics(run: CheckRun) -> list[Diagnostic]:
         path = str(candidate.path)
         where = Positions(run.outcome.sources[path])
         if not loaded.loaded:
-            found.append(diagnostic(path, where, "unloadable", loaded.line or 0,
-                                    f"{loaded.status}: {loaded.message}",
-                                    severity=UNRESOLVED_LOAD.get(loaded.status)))
+            found.append(from_finding(path, where, check_finding(
+                "unloadable", loaded.line or 0, f"{loaded.status}: {loaded.message}",
+                lowered=loaded.status in UNRESOLVED_LOAD)))
             continue
         run.outcome.skills += len(loaded.models)
-        found += [diagnostic(path, where, "not-read-statically", line,
-                             f"description not read without running the module: {shape}; "
-                             "it is not checked (check --trace loads it in the sandbox)", name)
+        found += [from_finding(path, where, check_finding(
+                      "not-read-statically", line, "description not read without running "
+                      f"the module: {shape}; it is not checked (check --trace loads it in "
+                      "the sandbox)", name))
                   for name, line, shape in loaded.unread if shape]
-        found += [diagnostic(path, where, "description", error.line or 0, error.message,
-                             error.name)
-                  for error in loaded.errors if (path, error.name) not in kept]
-        found += [from_finding(path, where, f, f.line or 0) for f in loaded.findings]
+        found += [from_finding(path, where, error) for error in loaded.errors
+                  if (path, error.skill) not in kept]
+        found += [from_finding(path, where, f) for f in loaded.findings]
     return found
 
 
@@ -156,8 +154,10 @@ def run(run: CheckRun) -> None:
     if run.settings.trace:
         run.loads = _loaded(run)
     else:
-        run.loads = read_ezskiros(list(zip((c.path for c in run.loadable), run.loadable_data(),
-                                           strict=True)), run.index,
-                                  run.facts_cache)
+        unread = [(c.path, data) for c, data in zip(run.loadable, run.loadable_data(),
+                                                     strict=True)
+                  if c.path not in run.static_loads]  # a copy, or Python 3.12 syntax
+        read = iter(read_ezskiros(unread, run.index, run.facts_cache))
+        run.loads = [run.static_loads.get(c.path) or next(read) for c in run.loadable]
     run.outcome.read = sorted({path for loaded in run.loads for path in loaded.read})
     run.diagnostics.extend(_load_diagnostics(run))

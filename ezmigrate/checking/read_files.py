@@ -43,11 +43,13 @@ class FileReadings:
 
 
 def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache | None,
-               reader: ReadingPool | None, overlay: Mapping[Path, bytes] | None = None
-               ) -> FileReadings:
+               reader: ReadingPool | None, overlay: Mapping[Path, bytes] | None = None,
+               static_against: str | None = None) -> FileReadings:
     """Read and parse each candidate once; ``compounds``: parse files that may hold a
     compound skill too; ``overlay``: text standing for some files' bytes (by resolved
-    path). Files without a description are read, never parsed."""
+    path); ``static_against``: the fingerprint of the active ontology EzSkiROS files are
+    read statically against (``FileFacts.loaded``; None: they are not, ``--trace`` loads
+    them). Files without a description are read, never parsed."""
     from ..compound.repository import SCAN_WHEN
     from ..files.prefilter import by_text
     from .file_facts import FileFacts, file_facts, still_read
@@ -69,8 +71,10 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
         if data is None or (verdict is False and not (
                 compounds and any(marker in data for marker in SCAN_WHEN))):
             continue  # never parsed: nothing to read in it
+        ontology = ("static", static_against) \
+            if static_against is not None and RUNTIME_MARKER in data else ()
         key = None if cache is None else cache.key(
-            "file", str(candidate.path), candidate.relative, str(compounds), data)
+            "file", str(candidate.path), candidate.relative, str(compounds), data, *ontology)
         found = None if cache is None or key is None else cache.get(key)
         if isinstance(found, FileFacts) and still_read(found):
             facts[candidate.path] = found
@@ -79,8 +83,9 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
         else:
             missing.append((candidate, data, verdict, key))
     items: list[tuple[Candidate, bytes, bool | None]] = [(c, d, v) for c, d, v, _ in missing]
-    made = reader.read_files(items, compounds) if reader is not None \
-        else [(file_facts(c, d, compounds, v), None) for c, d, v in items]
+    statically = static_against is not None
+    made = reader.read_files(items, compounds, statically) if reader is not None \
+        else [(file_facts(c, d, compounds, v, statically), None) for c, d, v in items]
     for (candidate, data, _, key), (found, own) in zip(missing, made, strict=True):
         facts[candidate.path] = found
         taken = own if own is not None else found.settled
@@ -253,12 +258,22 @@ def run(run: CheckRun) -> None:
         if run.settings.progress is not None else Progress(len(run.candidates), active=False)
     if run.reader is not None:
         run.reader.parse_scenes([s for s in run.world.scenes if s not in run.scenes_cached])
+    static_against = None
+    if not run.settings.trace:  # EzSkiROS files are read against the run's ontology
+        static_against = run.index.fingerprint if run.index is not None else ""
+        if run.index is not None:
+            from ezskiros_runtime.ontology import use_ontology
+
+            use_ontology(run.index)
     readings = read_facts(run.candidates, run.trees is not None, run.facts_cache, run.reader,
-                          run.settings.overlay)
-    if run.trees is not None:
-        for candidate, data, found in readings.files:
-            if found is not None and data is not None:
-                _take(run, candidate, found)
+                          run.settings.overlay, static_against)
+    for candidate, data, found in readings.files:
+        if found is None or data is None:
+            continue
+        if found.loaded is not None:
+            run.static_loads[candidate.path] = found.loaded
+        if run.trees is not None:
+            _take(run, candidate, found)
     with line:  # erased before the next message
         for candidate, data, result in declarations(readings, run.index, run.pool.workers,
                                                     run.facts_cache):

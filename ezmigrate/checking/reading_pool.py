@@ -79,10 +79,15 @@ _READS = False  # this worker reads declined files itself now
 
 def _init_worker(settings: Settings | None, parent: int | None = None) -> None:
     """A worker's start: the codemod's settings, inherited (the index is never pickled),
-    and its end with the run's (``lifetime.exit_with_parent``)."""
+    its index the active ontology (``FileFacts.loaded`` is checked against it), and its
+    end with the run's (``lifetime.exit_with_parent``)."""
     global _SETTINGS
     exit_with_parent(parent)
     _SETTINGS = settings
+    if settings is not None and settings.index is not None:
+        from ezskiros_runtime.ontology import use_ontology
+
+        use_ontology(settings.index)
 
 
 ReadDeclined = Callable[["Candidate", bytes], "FileResult | None"]
@@ -95,13 +100,13 @@ def _declined(facts: FileFacts) -> bool:
 
 
 def _read_files(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
-                declined: ReadDeclined | None) -> list[Reading]:
+                declined: ReadDeclined | None, statically: bool = False) -> list[Reading]:
     """Each file's facts and, for each file the plain reader declines, ``declined``'s
     reading of it alone, taken while the file is at hand instead of after every file is
     read (the cross-file pass still runs after)."""
     found: list[Reading] = []
     for candidate, data, verdict in items:
-        facts = file_facts(candidate, data, compounds, verdict)
+        facts = file_facts(candidate, data, compounds, verdict, statically)
         found.append((facts, declined(candidate, data)
                       if declined is not None and _declined(facts) else None))
     return found
@@ -129,11 +134,11 @@ def _in_worker(candidate: Candidate, data: bytes) -> FileResult | None:
     return own_reading(candidate.relative, data, _SETTINGS)
 
 
-def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
-                    ) -> tuple[list[Reading], list[tuple[str, FileResult]]]:
+def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
+                    statically: bool) -> tuple[list[Reading], list[tuple[str, FileResult]]]:
     """A worker's chunk (``_read_files`` with ``_in_worker``), and by path the readings of
     the files it left before and read in this chunk."""
-    found = _read_files(items, compounds, _in_worker)
+    found = _read_files(items, compounds, _in_worker, statically)
     caught_up = list(_CAUGHT_UP)
     _CAUGHT_UP.clear()
     return found, caught_up
@@ -204,8 +209,8 @@ class ReadingPool:
                 seed_scene(path, *parsed)
         self._scenes = []
 
-    def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
-                   ) -> list[Reading]:
+    def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
+                   statically: bool = False) -> list[Reading]:
         """``file_facts`` of each ``(candidate, bytes, the prefilter's text verdict)``, and
         the codemod's reading of those the plain reader declines (``_read_files``), in
         order: in the workers when there are enough.
@@ -219,7 +224,7 @@ class ReadingPool:
         for item in items:
             if firsts.setdefault(item[1], len(unique)) == len(unique):
                 unique.append(item)
-        read = self._read_all(unique, compounds)
+        read = self._read_all(unique, compounds, statically)
         if len(unique) == len(items):
             return read
         found: list[Reading] = []
@@ -233,29 +238,30 @@ class ReadingPool:
             else:
                 found.append((facts, own))  # a placeholder, read again below
                 again.append(index)
-        for index, reading in zip(again, self._read_all([items[i] for i in again], compounds),
-                                  strict=True):
+        for index, reading in zip(again, self._read_all([items[i] for i in again], compounds,
+                                                        statically), strict=True):
             found[index] = reading
         return found
 
-    def _read_all(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool
-                  ) -> list[Reading]:
+    def _read_all(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
+                  statically: bool) -> list[Reading]:
         """``read_files`` of files whose bytes all differ."""
         here = None if self.settings is None else functools.partial(_here, self.settings)
         pool = self._executor() if len(items) >= SHARED_FROM else None
         if pool is None:
             self._start_scenes()
-            return _read_files(items, compounds, here)
+            return _read_files(items, compounds, here, statically)
         size = max(4, len(items) // (self.workers * 12))
         starts = list(range(0, len(items), size))
-        futures = {start: pool.submit(_read_in_worker, items[start:start + size], compounds)
+        futures = {start: pool.submit(_read_in_worker, items[start:start + size], compounds,
+                                      statically)
                    for start in starts}
         self._start_scenes()
         mine: dict[int, list[Reading]] = {}
         for start in reversed(starts):  # the main takes chunks from the end, while no
             if not futures[start].cancel():  # worker has started them: the share each
                 break  # does is what it gets through, whatever a chunk costs
-            mine[start] = _read_files(items[start:start + size], compounds, here)
+            mine[start] = _read_files(items[start:start + size], compounds, here, statically)
         if self.idle is not None and not all(futures[start].done() for start in starts
                                              if start not in mine):
             idle, self.idle = self.idle, None
@@ -269,7 +275,7 @@ class ReadingPool:
                 theirs[start], late = futures[start].result()
                 caught_up.update(late)
             except (BrokenProcessPool, OSError):  # a worker died: read here what it had
-                mine[start] = _read_files(items[start:start + size], compounds, here)
+                mine[start] = _read_files(items[start:start + size], compounds, here, statically)
         found: list[Reading] = []
         for start in starts:
             if start in mine:

@@ -129,6 +129,9 @@ class CheckRun:
     """What the implementation checks read of each file (None: ``ast`` cannot read it)."""
     loadable: list[Candidate] = field(default_factory=list)
     """The EzSkiROS files."""
+    static_loads: dict[Path, LoadOutcome] = field(default_factory=dict)
+    """What the read stage read of each EzSkiROS file from its syntax (``FileFacts.loaded``),
+    by path."""
     loads: list[LoadOutcome] = field(default_factory=list)
     """What reading (or, under ``--trace``, loading) each EzSkiROS file gave."""
     skill_index: SkillIndex | None = None

@@ -23,7 +23,6 @@ from ..report.findings import skill_findings
 from ..report.results import (
     ClassLines,
     FileResult,
-    ReviewFinding,
     SkillResult,
     source_digest,
     unparsable,
@@ -93,6 +92,24 @@ class _Plan:
     """What ``SyntaxFacts`` knows of ``old_function`` (the names its replacement removes)."""
     runtime: set[str] = field(default_factory=set)
     prefixes: set[str] = field(default_factory=set)
+
+
+@dataclass
+class _ModulePlanning:
+    """What planning each description class of one module shares: the module, its legacy
+    names and constants, the run's settings, the aliases of the ontology's prefixes, and
+    what the classes planned so far give the classes after them: each one's operations
+    (``effective``; a class without ``createDescription`` inherits its base's) and which of
+    them convert (``converted``). One object, not seven arguments, since every class reads
+    the same ones."""
+
+    module: cst.Module
+    names: LegacyNames
+    settings: Settings
+    aliases: dict[str, str]
+    constants: Mapping[str, Literal]
+    effective: dict[str, list[Operation]]
+    converted: set[str]
 
 
 def migrate(source: bytes | str, settings: Settings | None = None,
@@ -302,18 +319,16 @@ def _plan_module(module: cst.Module, facts: SyntaxFacts, settings: Settings) -> 
         return None
     cst_classes = [stmt for stmt in module.body if isinstance(stmt, cst.ClassDef)]
     class_facts = dict(zip(map(id, cst_classes), facts.classes, strict=True))
-    aliases = _aliases(module, settings.index)
-    constants = module_constants(module, facts.bindings)
+    shared = _ModulePlanning(module, names, settings, _aliases(module, settings.index),
+                             module_constants(module, facts.bindings),
+                             dict(settings.external), set(settings.external))
     plans: list[_Plan] = []
-    effective: dict[str, list[Operation]] = dict(settings.external)
-    converted: set[str] = set(settings.external)
     for cls in classes:
-        plan = _plan(cls, class_facts[id(cls.node)], module, names, settings, aliases,
-                     effective, converted, constants)
+        plan = _plan(cls, class_facts[id(cls.node)], shared)
         plans.append(plan)
         if plan.result.status in ("converted", "unchanged"):
-            converted.add(cls.name)
-    return plans, effective, aliases
+            shared.converted.add(cls.name)
+    return plans, shared.effective, shared.aliases
 
 
 def too_deep_line(module: cst.Module) -> int | None:
@@ -396,10 +411,8 @@ def foreign_bases(module: cst.Module, names: LegacyNames) -> list[tuple[str, str
     return found
 
 
-def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: LegacyNames,
-          settings: Settings, aliases: dict[str, str],
-          effective: dict[str, list[Operation]], converted: set[str],
-          constants: Mapping[str, Literal]) -> _Plan:
+def _plan(cls: DescriptionClass, facts: ClassFacts, shared: _ModulePlanning) -> _Plan:
+    module, settings, effective = shared.module, shared.settings, shared.effective
     line_no = facts.line
     plan = _Plan(cls, SkillResult(cls.name, line_no, "skipped"))
     func = find_create_description(cls.node)
@@ -415,7 +428,8 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         if cls.other_bases:
             raise Unsupported(f"{cls.name} derives from several classes; a migration could "
                               "change its method resolution order")
-        if cls.base is not None and cls.base not in converted and not cls.migrated_base:
+        if cls.base is not None and cls.base not in shared.converted \
+                and not cls.migrated_base:
             raise Unsupported(f"its base class {cls.base} was not converted")
         if func is None:
             effective[cls.name] = effective.get(cls.base or "", []) if cls.base else []
@@ -427,8 +441,8 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         create = plan.create
         assert create is not None  # both parsers see the same class body
         lines = StatementLines(module, func.body, create.spans)
-        ctx = ExtractContext(module=module, names=names, lines=lines, skill=skill, rules=CONSTRUCTS,
-                             constants=constants,
+        ctx = ExtractContext(module=module, names=shared.names, lines=lines, skill=skill,
+                             rules=CONSTRUCTS, constants=shared.constants,
                              self_name=self_parameter(func), class_name=cls.name,
                              class_names=frozenset(n for n, _ in bindings),
                              base_names=[cls.base] if cls.base else [],
@@ -438,7 +452,7 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         params = emitted_params(skill)
         model = checked_model(cls.name, skill.operations, params)
         emit = EmitContext(index=settings.index, rules=CONSTRUCTS, self_name=ctx.self_name,
-                           aliases=aliases,
+                           aliases=shared.aliases,
                            reserved=_reserved(skill, settings.index, ctx.self_name),
                            column=create.column + 4, target=settings.target,
                            quotes=quote_style(cls.node))
@@ -449,8 +463,8 @@ def _plan(cls: DescriptionClass, facts: ClassFacts, module: cst.Module, names: L
         plan.result = replace(
             plan.result, status="converted", model=model.to_json(),
             static=static_description(skill),
-            findings=[ReviewFinding(k, ln, m) for k, ln, m in skill.findings]
-            + skill_findings(model, settings.index, skill.source_lines()))
+            findings=skill.findings + skill_findings(model, settings.index,
+                                                     skill.source_lines()))
         plan.runtime, plan.prefixes = emit.runtime_names, emit.prefixes
     except Unsupported as unsupported:
         plan.result = replace(plan.result, status="skipped", reason=unsupported.reason)

@@ -59,32 +59,33 @@ class Positions:
         return len(text) - len(text.lstrip()) + 1, line, len(text.rstrip()) + 1
 
 
-def diagnostic(path: str, positions: Positions, kind: str, line: int, message: str,
-               skill: str = "", fix: str | None = None,
-               severity: str | None = None, param: str | None = None,
-               term: str | None = None, term_is_class: bool = False) -> Diagnostic:
-    """The diagnostic of a finding kind, with the catalogue's code, severity and fix.
-
-    ``severity`` lowers the code's own for one finding that rests on something the tool
-    could not resolve (a file it could not read, a name defined twice): a false error
-    costs more than a missed warning."""
-    rule = rule_for(kind)
-    column, end_line, end_column = positions.span(line)
-    return Diagnostic(path, max(line, 1), column, rule.code, severity or rule.severity,
-                      message, fix or without_suggestion(rule.fix), skill, end_line,
-                      end_column, param, term, term_is_class)
+def check_finding(kind: str, line: int, message: str, skill: str = "",
+                  lowered: bool = False) -> Finding:
+    """One of ``check``'s own findings (a file it could not read, a class not migrated, an
+    unused suppression) as the runtime's ``Finding``, at its rule's severity, or info when
+    ``lowered`` (it rests on something the tool could not resolve: a false error costs more
+    than a missed warning). Every diagnostic is made from a ``Finding`` (``from_finding``)."""
+    return Finding(kind, "info" if lowered else rule_for(kind).severity, message, None, line,
+                   skill)
 
 
-def from_finding(path: str, positions: Positions, found: Finding, line: int,
+def from_finding(path: str, positions: Positions, found: Finding, line: int | None = None,
                  lowered: bool = True) -> Diagnostic:
-    """The diagnostic of one of the runtime's findings (``ezskiros_runtime.diagnostics``):
-    its fix, or its first suggestion; its parameter; the vocabulary it names as the term
-    (a class when no relation is involved); its info severity when ``lowered`` (a finding
-    whose rule's condition does not hold here)."""
+    """The diagnostic of a finding in the file ``path``: the catalogue's code and severity
+    (info when ``lowered`` and the finding says info: its rule's condition does not hold
+    here), its fix or first suggestion, else the rule's fix; its skill and parameter; the
+    vocabulary it names as the term (``actual``: a class when no relation is involved).
+    ``line``: where it points instead of the finding's own line (a legacy class's finding
+    without a line of its own points at the class); 0 is the file itself."""
+    rule = rule_for(found.kind)
+    at = (found.line or 0) if line is None else line
+    column, end_line, end_column = positions.span(at)
     fix = found.fix or (f"Did you mean {found.suggestions[0]}?" if found.suggestions else None)
-    return diagnostic(path, positions, found.kind, line, found.message, found.skill, fix,
-                      "info" if lowered and found.severity == "info" else None, found.param,
-                      found.actual, found.actual is not None and found.relation is None)
+    return Diagnostic(path, max(at, 1), column, rule.code,
+                      "info" if lowered and found.severity == "info" else rule.severity,
+                      found.message, fix or without_suggestion(rule.fix), found.skill,
+                      end_line, end_column, found.param, found.actual,
+                      found.actual is not None and found.relation is None)
 
 
 def without_suggestion(fix: str) -> str:

@@ -28,7 +28,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
-from ezskiros_runtime.diagnostics import ClassError, DescriptionError, Finding
+from ezskiros_runtime.diagnostics import DescriptionError, Finding, class_error
 from ezskiros_runtime.legacy.errors import ModuleLoadError
 
 from ..verify.protocol import LoadOutcome
@@ -100,7 +100,7 @@ class StaticLoad:
     message: str = ""
     line: int | None = None
     models: list[dict[str, Any]] = field(default_factory=list)
-    errors: list[ClassError] = field(default_factory=list)
+    errors: list[Finding] = field(default_factory=list)
     findings: list[Finding] = field(default_factory=list)
     unread: list[tuple[str, int, str]] = field(default_factory=list)
     maybe: list[tuple[str, int]] = field(default_factory=list)
@@ -316,9 +316,9 @@ class _Module:
         except (RecursionError, MemoryError):
             result.unread.append((name, line, "an expression nested too deeply to read"))
         except RaisedAt as raised:
-            result.errors.append(_class_error(name, line, raised.exc, raised.line))
+            result.errors.append(_class_error(name, line, raised.exc, raised.line, self.path))
         except Exception as exc:  # what instantiating the class raises: a class error
-            result.errors.append(_class_error(name, line, exc, None))
+            result.errors.append(_class_error(name, line, exc, None, self.path))
 
     def _owner(self, func: ast.FunctionDef) -> str:
         """The name of the class that defines ``func`` (a base's, when inherited)."""
@@ -651,12 +651,13 @@ def _as_import_error(exc: BaseException) -> BaseException:
     return ImportError(str(exc))
 
 
-def _class_error(name: str, line: int, exc: BaseException, raised_at: int | None
-                 ) -> ClassError:
-    """The loader's ``ClassError`` for a class whose instantiation raises ``exc``."""
+def _class_error(name: str, line: int, exc: BaseException, raised_at: int | None,
+                 path: str) -> Finding:
+    """The loader's finding for a class of the file ``path`` whose instantiation raises
+    ``exc``."""
     where = f" (line {raised_at})" if raised_at is not None else ""
-    return ClassError(name, line, "error",
-                      f"{type(exc).__name__}: {str(exc) or repr(exc)}{where}")
+    return class_error(name, line, f"{type(exc).__name__}: {str(exc) or repr(exc)}{where}",
+                       path)
 
 
 def _own_description(node: ast.ClassDef) -> ast.FunctionDef | None:

@@ -54,7 +54,7 @@ from ..codemod.rules.add_param import (
 )
 from ..codemod.rules.condition_factories import CLASSES, FACTORIES
 from ..codemod.rules.condition_lists import LISTS
-from ..report.results import FileResult, ReviewFinding, SkillResult
+from ..report.results import FileResult, SkillResult
 
 _NESTED_LEGACY_IMPORT = re.compile(rb"^[ \t]+(?:from|import)[ \t][^\n]*skiros2", re.MULTILINE)
 
@@ -202,7 +202,7 @@ def _skill(node: ast.ClassDef, names: LegacyNames, constants: _Constants,
         raise _Declined from error
     return SkillResult(node.name, node.lineno, "converted", model=model.to_json(),
                        static=static_description(skill),
-                       findings=[ReviewFinding(k, ln, m) for k, ln, m in skill.findings])
+                       findings=list(skill.findings))
 
 
 def _create_description(node: ast.ClassDef) -> ast.FunctionDef | None:

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from ezskiros_runtime.codes import BY_CODE, RULES, matches, valid_selector
 
-from .diagnostic import Diagnostic, Positions, diagnostic
+from .diagnostic import Diagnostic, Positions, check_finding, from_finding
 
 SUPPRESSION = re.compile(r"#\s*ezskiros:\s*ignore\[([^\]]*)\]")
 NOQA = re.compile(r"#\s*noqa:\s*([A-Za-z]+[0-9]+(?:\s*,?\s*[A-Za-z]+[0-9]+)*)", re.IGNORECASE)
@@ -106,8 +106,8 @@ def apply(diagnostics: Sequence[Diagnostic], sources: dict[str, str],
             for code in listed:
                 ran = code in codes or any(c.startswith(code) for c in codes)
                 if (line, code) not in used and ran:
-                    out.append(diagnostic(path, positions, "unused-suppression", line,
-                                          f"unused suppression: no {code} finding on this "
-                                          "line"))
+                    out.append(from_finding(path, positions, check_finding(
+                        "unused-suppression", line,
+                        f"unused suppression: no {code} finding on this line")))
     out.sort(key=lambda d: (d.path, d.line, d.column, d.code))
     return out

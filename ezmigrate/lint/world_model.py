@@ -34,7 +34,7 @@ from ezskiros_runtime.world.vocabulary import SingleValued, single_valued
 from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..report.static_facts import StaticDescription
-from .diagnostic import Diagnostic, Positions, diagnostic
+from .diagnostic import Diagnostic, Positions, from_finding
 from .scene_search import WorldRun
 
 if TYPE_CHECKING:
@@ -128,14 +128,15 @@ def once_per_project(per_scene: list[list[Finding]]) -> list[list[Finding]]:
     return [[f for number, f in kept if number == scene] for scene in range(len(per_scene))]
 
 
-def diagnostics_of(found: Iterable[Finding], text: str, skill: str = ""
-                   ) -> list[Diagnostic]:
-    """World findings of one file as diagnostics (columns from ``text``)."""
+def diagnostics_of(found: Iterable[Finding], text: str) -> list[Diagnostic]:
+    """World findings of one file as diagnostics (columns from ``text``); an unknown
+    predicate's term is its subject."""
     where = Positions(text)
-    return [diagnostic(f.file or "", where, f.kind, f.line or 0, f.message, skill, f.fix,
-                       f.severity if f.severity == "info" else None,
-                       term=f.subject if f.kind == UNKNOWN_PREDICATE else None)
-            for f in found]
+    out = []
+    for f in found:
+        made = from_finding(f.file or "", where, f)
+        out.append(replace(made, term=f.subject) if f.kind == UNKNOWN_PREDICATE else made)
+    return out
 
 
 UNKNOWN_PREDICATE = "scene-unknown-predicate"
@@ -153,7 +154,8 @@ def legacy_double_places(path: str, skill: str, facts: StaticDescription,
             for which, c in facts.conditions
             if c.kind == "relation" and c.vocabulary and c.subject and c.object]
     uses = past_typos(uses, (p.key for p in facts.params))
-    return [finding("double-place", path, d.second.line, d.message(), skill, d.fix("legacy"))
+    return [replace(finding("double-place", path, d.second.line, d.message(),
+                            fix=d.fix("legacy")), skill=skill)
             for d in double_places(uses, entries, index)]
 
 
@@ -171,8 +173,8 @@ def ezskiros_double_places(path: str, source: str, models: Iterable[SkillModel],
             if lines is None:
                 lines = _post_lines(source)
             line = _line_of(lines.get(model.name, []), d.second) or model.line or 0
-            found.append(finding("double-place", path, line, d.message(), model.name,
-                                 d.fix("ezskiros")))
+            found.append(replace(finding("double-place", path, line, d.message(),
+                                         fix=d.fix("ezskiros")), skill=model.name))
     return found
 
 
@@ -222,9 +224,8 @@ def cannot_start(path: str, skill: str, line: int, model: SkillModel, scene: Sce
     grounded = can_start(model, scene, index)
     if grounded.ok:
         return None
-    return finding("cannot-start", path, line,
-                   f"cannot start from scene {Path(scene.path).name}: {grounded.reason}",
-                   skill)
+    return replace(finding("cannot-start", path, line, f"cannot start from scene "
+                           f"{Path(scene.path).name}: {grounded.reason}"), skill=skill)
 
 
 
@@ -243,12 +244,12 @@ def world_diagnostics(run: WorldRun, legacy: Iterable[tuple[str, FileResult]],
             if skill.static is not None and skill.status == "converted":
                 out += diagnostics_of(legacy_double_places(path, skill.name, skill.static,
                                                            index, entries),
-                                      sources.get(path, ""), skill.name)
+                                      sources.get(path, ""))
             if skill.model is not None and run.start_scene is not None:
                 models.append((path, skill.name, skill.line, SkillModel.from_json(skill.model)))
     for path, found in loaded:
-        for f in ezskiros_double_places(path, sources.get(path, ""), found, index, entries):
-            out += diagnostics_of([f], sources.get(path, ""), f.subject)
+        out += diagnostics_of(ezskiros_double_places(path, sources.get(path, ""), found, index,
+                                                     entries), sources.get(path, ""))
         models += [(path, m.name, m.line or 0, m) for m in found]
     out += ontology_diagnostics(index, sources)
     reads = read_scenes(run.scenes, index)
@@ -268,7 +269,7 @@ def _start_diagnostics(path: Path, models: list[tuple[str, str, int, SkillModel]
     for file, name, line, model in models:
         found = cannot_start(file, name, line, model, scene, index)
         if found is not None:
-            out += diagnostics_of([found], sources.get(file, ""), name)
+            out += diagnostics_of([found], sources.get(file, ""))
     return out
 
 

@@ -12,9 +12,10 @@ import re
 from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
+from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.model import Condition, SkillModel
 
-from .results import ReviewFinding
+from .results import review_finding
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -33,29 +34,31 @@ def _walk(conditions: tuple[Condition, ...]) -> list[Condition]:
 
 
 def skill_findings(model: SkillModel, index: OntologyIndex | None,
-                   lines: Mapping[tuple[str, str], int] | None = None) -> list[ReviewFinding]:
+                   lines: Mapping[tuple[str, str], int] | None = None) -> list[Finding]:
     """Findings from the static model of one skill.
 
     ``lines`` (``ExtractedSkill.source_lines``) gives each finding the line of the
     ``addParam`` or condition that causes it; line 0 stands for the skill as a whole.
     """
     where = lines or {}
-    found: list[ReviewFinding] = []
+    found: list[Finding] = []
     keys = {p.key for p in model.params}
     conditions = [c for which in ("pre", "hold", "post") for c in _walk(model.conditions(which))]
     for cond in conditions:
         for key in (cond.subject, cond.object):
             if key is not None and key not in keys:
-                found.append(ReviewFinding("undeclared-key", where.get(("key", key), 0),
-                                     f"a {cond.kind} condition "
-                                     f"({cond.label!r}) refers to {key!r}, which no addParam "
-                                     "declares (SkiROS2 accepts this silently)"))
+                found.append(review_finding("undeclared-key", model.name,
+                                            where.get(("key", key), 0),
+                                            f"a {cond.kind} condition ({cond.label!r}) refers "
+                                            f"to {key!r}, which no addParam declares (SkiROS2 "
+                                            "accepts this silently)"))
     types = [p.element_type for p in model.params if p.element_type is not None]
     for type_string in types:
         if not _CANONICAL.match(type_string) and type_string != UNKNOWN_TYPE:
-            found.append(ReviewFinding("element-type-spelling", where.get(("type", type_string), 0),
-                                 f"Element type {type_string!r} is not written as "
-                                 "prefix:Name; SkiROS2 stores it verbatim (kept as is)"))
+            found.append(review_finding("element-type-spelling", model.name,
+                                        where.get(("type", type_string), 0),
+                                        f"Element type {type_string!r} is not written as "
+                                        "prefix:Name; SkiROS2 stores it verbatim (kept as is)"))
     if index is not None:
         vocabulary = [(t, "class", ("type", t)) for t in types] + [
             (c.vocabulary, "class" if c.kind == "on_type" else "property",
@@ -69,10 +72,11 @@ def skill_findings(model: SkillModel, index: OntologyIndex | None,
                     term, ("class",) if what == "class" else ("object", "data")))
                 extra = f"; did you mean {', '.join(hint)}?" if hint else ""
                 prefix, colon, _ = term.partition(":")
-                unknown = prefix if colon and prefix not in index.prefixes else None
-                found.append(ReviewFinding("unknown-vocabulary", where.get(source, 0),
-                                           f"{what} {term!r} is not in the loaded ontology"
-                                           f"{extra}", prefix=unknown))
+                unknown = prefix if colon and prefix not in index.prefixes else ""
+                found.append(review_finding("unknown-vocabulary", model.name,
+                                            where.get(source, 0),
+                                            f"{what} {term!r} is not in the loaded ontology"
+                                            f"{extra}", unknown))
     return _unique(found)
 
 
@@ -91,7 +95,7 @@ def _close(term: str, suggestions: list[str]) -> list[str]:
     return found
 
 
-def _unique(findings: list[ReviewFinding]) -> list[ReviewFinding]:
+def _unique(findings: list[Finding]) -> list[Finding]:
     seen: set[tuple[str, str]] = set()
     out = []
     for f in findings:

@@ -10,6 +10,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from ezskiros_runtime.diagnostics import Finding
+
 from .results import FileResult, SkillResult
 
 SCHEMA_VERSION = 1
@@ -100,12 +102,25 @@ class MarkdownOptions:
     """Which Python verified and which rdflib read the ontology (``target.verified_with``)."""
 
 
+def _finding_json(found: Finding) -> dict[str, Any]:
+    """A finding as the report's schema has it: what, where (0: the skill as a whole, also
+    for a runtime finding without a line) and the legacy line beside the written one."""
+    return {"kind": found.kind, "line": found.line or 0, "message": found.message,
+            "legacy_line": found.legacy_line, "code": found.code}
+
+
+def _undefined_prefix(found: Finding) -> str | None:
+    """The prefix no loaded ontology defines that a finding of unknown vocabulary is about
+    (its subject: ``review_finding``), else None: one cause, which the report says once."""
+    return (found.subject or None) if found.kind == "unknown-vocabulary" else None
+
+
 def _skill_json(file: FileResult, skill: SkillResult) -> dict[str, Any]:
     data: dict[str, Any] = {
         "file": file.path, "class": skill.name, "line": skill.line,
         "legacy_line": skill.legacy_line, "status": skill.status,
         "code": skill.code, "reason": skill.reason,
-        "findings": [f.to_json() for f in skill.findings],
+        "findings": [_finding_json(f) for f in skill.findings],
         "equivalent": skill.equivalent,
     }
     if skill.diff:
@@ -179,8 +194,9 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
     out += [f"- {note}" for note in options.notes]
     findings: list[str] = []
     said: set[str] = set()
-    prefix_uses = Counter(f.prefix for file in results for skill in file.skills
-                          for f in skill.findings if f.prefix is not None)
+    prefix_uses = Counter(prefix for file in results for skill in file.skills
+                          for prefix in map(_undefined_prefix, skill.findings)
+                          if prefix is not None)
     for file in results:
         if not file.skills and not file.error and not file.notes:
             continue
@@ -202,14 +218,15 @@ def markdown_report(results: Sequence[FileResult], options: MarkdownOptions) -> 
                 if d.get("after") is not None:
                     out.append(f"    - migrated: `{d['after']}`")
             for f in skill.findings:
-                if f.prefix is not None and f.prefix in said:
+                prefix = _undefined_prefix(f)
+                if prefix is not None and prefix in said:
                     continue  # one cause, one line: its uses are counted there
                 where = _where(f.line, f.legacy_line) if f.line else "skill"
-                uses = prefix_uses.get(f.prefix or "", 0)
-                once = (f" ({uses} uses of prefix {f.prefix!r} in the migration, reported "
-                        "once, here)" if f.prefix is not None and uses > 1 else "")
-                if f.prefix is not None:
-                    said.add(f.prefix)
+                uses = prefix_uses.get(prefix or "", 0)
+                once = (f" ({uses} uses of prefix {prefix!r} in the migration, reported "
+                        "once, here)" if prefix is not None and uses > 1 else "")
+                if prefix is not None:
+                    said.add(prefix)
                 findings.append(f"- `{file.path}` {skill.name} ({where}) **{f.code}** "
                                 f"{f.kind}: {f.message}{once}")
         out.append("")

@@ -11,10 +11,11 @@ makes a new result with ``dataclasses.replace`` and puts it in the old one's pla
 from __future__ import annotations
 
 import hashlib
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
-from ezskiros_runtime.codes import code_for
+from ezskiros_runtime.codes import code_for, rule_for
+from ezskiros_runtime.diagnostics import Finding
 
 if TYPE_CHECKING:
     from .static_facts import StaticDescription
@@ -22,28 +23,15 @@ if TYPE_CHECKING:
 SkillStatus = Literal["converted", "skipped", "failed", "unchanged"]
 
 
-@dataclass(frozen=True)
-class ReviewFinding:
-    """Something a reviewer should see that migration keeps as it was (a latent bug...)."""
-
-    kind: str
-    line: int
-    message: str
-    legacy_line: int | None = None
-    """The line in the legacy file when ``line`` is the written file's (``written_lines``)."""
-    prefix: str | None = None
-    """The prefix no loaded ontology defines that the finding is about: one cause for the
-    whole project, which the report says once (as ``check`` does)."""
-
-    @property
-    def code(self) -> str:
-        """The stable code of ``kind`` (``ezskiros_runtime.codes``), for lint output."""
-        return code_for(self.kind)
-
-    def to_json(self) -> dict[str, Any]:
-        data = {**asdict(self), "code": self.code}
-        del data["prefix"]  # the report's schema: the message names the term
-        return data
+def review_finding(kind: str, skill: str, line: int, message: str, subject: str = ""
+                   ) -> Finding:
+    """Something a reviewer should see that migration keeps as it was (a latent bug...),
+    as the runtime's one ``Finding`` at its rule's severity: ``line`` 0 is the skill as a
+    whole; ``subject`` the prefix no loaded ontology defines when that is the cause, which
+    the report says once for the whole migration (as ``check`` does). After a rewrite the
+    report moves ``line`` to the written file and keeps the legacy one in ``legacy_line``
+    (``written_lines``)."""
+    return Finding(kind, rule_for(kind).severity, message, None, line, skill, subject=subject)
 
 
 @dataclass(frozen=True)
@@ -54,7 +42,9 @@ class SkillResult:
     line: int
     status: SkillStatus
     reason: str | None = None
-    findings: list[ReviewFinding] = field(default_factory=list)
+    findings: list[Finding] = field(default_factory=list)
+    """What the reviewer should see (``review_finding``), with the runtime's findings of the
+    migrated skill once it is loaded (``verdicts.with_findings``)."""
     model: dict[str, Any] | None = None
     equivalent: bool | None = None
     diff: list[dict[str, Any]] | None = None

@@ -21,8 +21,10 @@ import difflib
 import re
 from dataclasses import replace
 
+from ezskiros_runtime.diagnostics import Finding
+
 from .diffs import decode, diff_body
-from .results import ClassLines, FileResult, ReviewFinding, WrittenLines, source_digest
+from .results import ClassLines, FileResult, WrittenLines, source_digest
 
 _KEY = re.compile(r"""\.addParam\(\s*(?:key\s*=\s*)?(["'])(\w+)\1""")
 _CONDITION_CALL = re.compile(r"\.add(?:Pre|Post|Hold)?Condition\(")
@@ -126,7 +128,7 @@ def as_written(result: FileResult, original: bytes) -> FileResult:
     return replace(result, skills=skills)
 
 
-def _finding(finding: ReviewFinding, mapped: dict[int, int]) -> ReviewFinding:
+def _finding(finding: Finding, mapped: dict[int, int]) -> Finding:
     at = mapped.get(finding.line) if finding.line else None
     if at is None:
         return finding

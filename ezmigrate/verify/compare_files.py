@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from ezskiros_runtime.compare import compare
-from ezskiros_runtime.diagnostics import ClassError
+from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.model import SkillModel
 
 from ..report.diffs import decode
@@ -34,8 +34,9 @@ class ClassVerdict:
         return self.verdict == "equivalent"
 
 
-def _errors(outcome: LoadOutcome) -> dict[str, ClassError]:
-    return {e.name: e for e in outcome.errors}
+def _errors(outcome: LoadOutcome) -> dict[str, Finding]:
+    """The class errors of a load by the class they are about."""
+    return {e.skill: e for e in outcome.errors}
 
 
 def compare_outcomes(before: LoadOutcome, after: LoadOutcome, *, ignore_order: bool = False,
@@ -56,7 +57,7 @@ def compare_outcomes(before: LoadOutcome, after: LoadOutcome, *, ignore_order: b
 
 
 def _line(name: str, models: dict[str, SkillModel],
-          errors: dict[str, ClassError]) -> int | None:
+          errors: dict[str, Finding]) -> int | None:
     """Where ``name`` is on one side: its model's line, its error's, or nowhere."""
     if name in models:
         return models[name].line
@@ -64,7 +65,7 @@ def _line(name: str, models: dict[str, SkillModel],
 
 
 def _one(name: str, old: dict[str, SkillModel], new: dict[str, SkillModel],
-         old_errors: dict[str, ClassError], new_errors: dict[str, ClassError],
+         old_errors: dict[str, Finding], new_errors: dict[str, Finding],
          ignore_order: bool, ignore_labels: bool) -> ClassVerdict:
     if name in new_errors and name not in old_errors:
         return ClassVerdict(name, "error", "the migrated class fails to load: "

@@ -4,7 +4,7 @@ A job says which file to import (and, for a rewrite not yet written, the bytes t
 instead of the file's own); an outcome carries the models, class errors, check findings,
 traced compound skills and captured output, or why the load failed. Both travel as JSON
 and are rebuilt as the project's own types on arrival (``from_json``): class errors and
-findings as the runtime's ``ClassError`` and ``Finding``, traced trees as ``CompoundModel``
+findings as the runtime's one ``Finding``, traced trees as ``CompoundModel``
 or ``Unanalysable``, so no reader digs in dictionaries. Models keep their canonical JSON
 (``SkillModel.to_json``), the form reports and comparisons are defined on.
 """
@@ -15,7 +15,7 @@ import base64
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
-from ezskiros_runtime.diagnostics import ClassError, Finding
+from ezskiros_runtime.diagnostics import Finding
 
 if TYPE_CHECKING:
     from ezskiros_runtime.compound.model import CompoundModel
@@ -75,7 +75,8 @@ class LoadOutcome:
     message: str = ""
     line: int | None = None
     models: list[dict[str, Any]] = field(default_factory=list)
-    errors: list[ClassError] = field(default_factory=list)
+    errors: list[Finding] = field(default_factory=list)
+    """The classes that could not be loaded (``class_error``), one finding each."""
     findings: list[Finding] = field(default_factory=list)
     stdout: str = ""
     stderr: str = ""
@@ -108,7 +109,7 @@ class LoadOutcome:
     @classmethod
     def from_json(cls, data: dict[str, Any]) -> LoadOutcome:
         return cls(**{**data,
-                      "errors": [ClassError.from_json(e) for e in data.get("errors", ())],
+                      "errors": [Finding.from_json(e) for e in data.get("errors", ())],
                       "findings": [Finding.from_json(f) for f in data.get("findings", ())],
                       "compounds": [compound_of(c) for c in data.get("compounds", ())],
                       "more": [cls.from_json(item) for item in data.get("more", ())]})

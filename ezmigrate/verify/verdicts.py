@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 from ezskiros_runtime.diagnostics import Finding
 from ezskiros_runtime.dsl.policy import severity_of
 
-from ..report.results import FileResult, ReviewFinding, SkillResult
+from ..report.results import FileResult, SkillResult
 from .compare_files import ClassVerdict, compare_outcomes, load_failure
 from .protocol import LoadOutcome
 
@@ -154,14 +154,11 @@ def with_findings(skills: list[SkillResult], after: LoadOutcome,
     ``skip``: kinds reported elsewhere. ``rewrite``'s static pass already reports
     ``STATIC_KINDS`` once per term; ``verify`` has no static pass and keeps them all.
     """
-    added: dict[str, list[ReviewFinding]] = {}
+    added: dict[str, list[Finding]] = {}
     names = {s.name for s in skills}
     for found in after.findings:
-        kind = found.kind
-        if found.skill not in names or kind in skip:
-            continue
-        added.setdefault(found.skill, []).append(
-            ReviewFinding(kind, found.line or 0, found.message))
+        if found.skill in names and found.kind not in skip:
+            added.setdefault(found.skill, []).append(found)
     out = []
     for skill in skills:
         findings = list(skill.findings)

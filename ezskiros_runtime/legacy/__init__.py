@@ -34,14 +34,13 @@ from .errors import (
     UnsupportedConstructError,
 )
 from .extract import model_of
-from .loader import ClassError, FileLoad, load_file, load_source
+from .loader import FileLoad, load_file, load_source
 from .params import Param, ParamHandler, ParamTypes
 from .stand_ins import legacy_imports
 from .world_element import Element
 
 __all__ = [
     "AbstractConditionRelation",
-    "ClassError",
     "ConditionFunction",
     "ConditionGenerate",
     "ConditionHasProperty",

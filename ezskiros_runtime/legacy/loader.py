@@ -10,7 +10,7 @@ restored, and no ``__pycache__`` is written into the user's tree.
 Description classes are those *defined* in the file (``cls.__module__`` is the module) that
 derive from our ``SkillDescription`` but are not implementations (``SkillCore``: ``SkillBase``,
 ``PrimitiveBase``; legacy-skiros2-api.md §2). Each is instantiated with no arguments, as
-SkiROS2 does; one failing class becomes a ``ClassError`` and the others still load.
+SkiROS2 does; one failing class becomes a finding (``class_error``) and the others still load.
 """
 
 from __future__ import annotations
@@ -33,14 +33,14 @@ from pathlib import Path
 from types import CodeType, ModuleType, TracebackType
 from typing import Any
 
-from ..diagnostics import ClassError
+from ..diagnostics import Finding, class_error
 from ..model import SkillModel
 from .abstract_skill import SkillCore, SkillDescription
 from .errors import ModuleLoadError, NotDeclarativeError, NotUpstreamAPIError
 from .extract import model_of
 from .stand_ins import expected_stand_in, legacy_imports, library_roots
 
-__all__ = ["ClassError", "FileLoad", "ModuleLoadError", "load_bytes", "load_file", "load_source"]
+__all__ = ["FileLoad", "ModuleLoadError", "load_bytes", "load_file", "load_source"]
 
 _counter = itertools.count(1)
 
@@ -51,7 +51,8 @@ class FileLoad:
 
     path: Path
     models: list[SkillModel] = field(default_factory=list)
-    errors: list[ClassError] = field(default_factory=list)
+    errors: list[Finding] = field(default_factory=list)
+    """The classes that could not be loaded (``class_error``), one finding each."""
     findings: list[Any] = field(default_factory=list)
     stood_in: list[str] = field(default_factory=list)
     """Modules that could not be found and got a permissive stand-in, ROS and SkiROS2 aside
@@ -343,7 +344,7 @@ def _error_kind(exc: BaseException) -> str:
         return "not-upstream-api"
     if isinstance(exc, NotDeclarativeError):
         return "not-declarative"
-    return "error"
+    return "description"
 
 
 def _description_classes(module: ModuleType) -> list[type[SkillDescription]]:
@@ -374,11 +375,11 @@ def _collect(module: ModuleType, source: bytes, filename: str, result: FileLoad)
             result.errors.append(_class_error(cls, line, exc, filename))
 
 
-def _class_error(cls: type, line: int | None, exc: BaseException, filename: str) -> ClassError:
+def _class_error(cls: type, line: int | None, exc: BaseException, filename: str) -> Finding:
     raised_at = _frame_line(exc.__traceback__, filename)
     where = f" (line {raised_at})" if raised_at is not None else ""
-    return ClassError(cls.__name__, line, _error_kind(exc),
-                      f"{type(exc).__name__}: {_describe(exc)}{where}")
+    return class_error(cls.__name__, line, f"{type(exc).__name__}: {_describe(exc)}{where}",
+                       filename, _error_kind(exc))
 
 
 def _forget_user_modules(before: set[str], owned: list[str], search: Path) -> None:

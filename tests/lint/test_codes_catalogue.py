@@ -9,7 +9,8 @@ from pathlib import Path
 import pytest
 
 from ezmigrate.cli import rules_doc
-from ezmigrate.report.results import ReviewFinding as ReportFinding
+from ezmigrate.lint.diagnostic import check_finding
+from ezmigrate.report.results import review_finding
 from ezskiros_runtime.codes import (
     BY_CODE,
     CODE_PATTERN,
@@ -23,9 +24,11 @@ from ezskiros_runtime.diagnostics import SEVERITIES, Finding
 from ezskiros_runtime.dsl.policy import DEFAULT_SEVERITY
 
 ROOT = Path(__file__).resolve().parents[2]
-EMITTERS = {"add", "finding", "Finding", "_failure", "emit", "compound_finding"}
+EMITTERS = {"add", "finding", "Finding", "_failure", "emit", "compound_finding",
+            "review_finding", "check_finding"}
 """Calls whose first string argument is a finding kind: the runtime's ``ctx.add``, the
-codemod's ``skill.finding``, both ``Finding`` types, the lint's ``emit``."""
+codemod's ``skill.finding``, ``Finding`` itself, the lint's ``emit``, the review report's
+and ``check``'s own findings."""
 
 
 def emitted_kinds() -> set[str]:
@@ -78,8 +81,11 @@ def test_runtime_and_catalogue_agree_on_severity():
 def test_findings_carry_their_code():
     finding = Finding("range-unproven", "warning", "m", None, 3, "Pick")
     assert finding.code == "EZ204" and finding.to_json()["code"] == "EZ204"
-    assert ReportFinding("description-in-options", 4, "m").code == "EZ101"
-    assert ReportFinding("undeclared-key", 4, "m").code == code_for("undeclared-parameter")
+    assert review_finding("description-in-options", "Pick", 4, "m").code == "EZ101"
+    assert review_finding("undeclared-key", "Pick", 4, "m").code == \
+        code_for("undeclared-parameter")
+    assert check_finding("unloadable", 0, "m").severity == "error"
+    assert check_finding("unloadable", 0, "m", lowered=True).severity == "info"
 
 
 def test_not_migrated_is_off_by_default():

@@ -33,7 +33,7 @@ def _loaded(path: Path) -> tuple[list[str], list[tuple[str, str]], list[tuple[ob
     with collecting():
         found = load_bytes(path.read_bytes(), path)
     return ([json.dumps({**m.to_json(), "source": ""}, sort_keys=True) for m in found.models],
-            [(e.name, e.message) for e in found.errors],
+            [(e.skill, e.message) for e in found.errors],
             sorted((f.skill, f.kind, f.severity, f.line, f.message) for f in found.findings))
 
 
@@ -50,7 +50,7 @@ def test_reading_gives_what_loading_gives(path: Path) -> None:
     assert read.status == "ok", read.message
     assert [json.dumps({**m, "source": ""}, sort_keys=True) for m in read.models] == \
         [m for m in models if json.loads(m)["name"] not in unread]
-    assert [(e.name, e.message) for e in read.errors] == \
+    assert [(e.skill, e.message) for e in read.errors] == \
         [e for e in errors if e[0] not in unread]
     assert sorted((f.skill, f.kind, f.severity, f.line, f.message) for f in read.findings) \
         == [f for f in findings if f[0] not in unread]

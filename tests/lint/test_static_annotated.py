@@ -76,7 +76,7 @@ def test_a_misused_annotated_fails_where_loading_fails(tmp_path: Path, future: b
     with collecting():
         loaded = load_bytes(path.read_bytes(), path)
     assert read.status == "ok", read.message
-    assert [(e.name, e.message) for e in read.errors] == \
-        [(e.name, e.message) for e in loaded.errors]
-    assert [e.name for e in read.errors] == ["Broken"]
+    assert [(e.skill, e.message) for e in read.errors] == \
+        [(e.skill, e.message) for e in loaded.errors]
+    assert [e.skill for e in read.errors] == ["Broken"]
     assert "two descriptions" in read.errors[0].message

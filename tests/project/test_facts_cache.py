@@ -108,9 +108,9 @@ class Reads:
         real_facts, real_settle = reading_pool.file_facts, settle_module.settle
         real_scene = scene_module._parsed
 
-        def file_facts(candidate, data, compounds, verdict=True):  # type: ignore[no-untyped-def]
+        def file_facts(candidate, data, *args):  # type: ignore[no-untyped-def]
             self.parsed.append(candidate.path.name)
-            return real_facts(candidate, data, compounds, verdict)
+            return real_facts(candidate, data, *args)
 
         def settle(candidates, *args, **kwargs):  # type: ignore[no-untyped-def]
             self.settled += [c.path.name for c in candidates]

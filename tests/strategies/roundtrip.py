@@ -298,7 +298,7 @@ class RoundTrip:
         for side, outcome in (("legacy", before), ("migrated", after)):
             for error in outcome.errors:
                 fail("class-error", f"the {side} class fails to load: {error.message}",
-                     error.name)
+                     error.skill)
         loaded = [m["name"] for m in before.models]
         if sorted(loaded) != sorted(module.class_names):
             fail("static", f"the loader found the classes {loaded}, the module has "

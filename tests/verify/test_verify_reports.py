@@ -130,19 +130,21 @@ def test_the_review_report_says_an_undefined_prefix_once_and_guesses_no_other_pr
     the term's own prefix (or the same name under another prefix), never a guess."""
     from ezmigrate.report.findings import _close
     from ezmigrate.report.reports import MarkdownOptions, markdown_report
-    from ezmigrate.report.results import FileResult, ReviewFinding, SkillResult
+    from ezmigrate.report.results import FileResult, SkillResult, review_finding
+    from ezskiros_runtime.diagnostics import Finding
 
     assert _close("scalable:Ur5EndEffector", ["rparts:EndEffector"]) == []
     assert _close("skiros:Lcoation", ["skiros:Location", "cora:Location"]) == [
         "skiros:Location"]
     assert _close("skirso:Location", ["skiros:Location"]) == ["skiros:Location"]
 
-    def finding(line: int) -> ReviewFinding:
-        return ReviewFinding("unknown-vocabulary", line, "class 'acme:Gripper' is not in the "
-                             "loaded ontology", prefix="acme")
+    def finding(skill: str, line: int) -> Finding:
+        return review_finding("unknown-vocabulary", skill, line, "class 'acme:Gripper' is not "
+                              "in the loaded ontology", "acme")
 
     results = [FileResult(f"f{n}.py", skills=[SkillResult(
-        f"S{n}", 1, "converted", findings=[finding(3), finding(4)])]) for n in range(3)]
+        f"S{n}", 1, "converted", findings=[finding(f"S{n}", 3), finding(f"S{n}", 4)])])
+        for n in range(3)]
     text = markdown_report(results, MarkdownOptions())
     lines = [line for line in text.splitlines() if "acme:Gripper" in line]
     assert len(lines) == 1 and "(6 uses of prefix 'acme' in the migration" in lines[0]

@@ -10,8 +10,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from ...report.results import review_finding
+
 if TYPE_CHECKING:
     import libcst as cst
+
+    from ezskiros_runtime.diagnostics import Finding
 else:
     from .lazy_cst import cst
 
@@ -168,7 +172,7 @@ class ExtractedSkill:
     docstring: cst.SimpleStatementLine | None = None
     footer: list[cst.EmptyLine] = field(default_factory=list)
     has_create_description: bool = True
-    findings: list[tuple[str, int, str]] = field(default_factory=list)
+    findings: list[Finding] = field(default_factory=list)
     inlined_at: dict[int, int] = field(default_factory=dict)
     """``id`` of an operation inlined from a base's ``createDescription`` -> the line of that
     call in this file (the operation's own lines may belong to another file)."""
@@ -204,4 +208,4 @@ class ExtractedSkill:
 
     def finding(self, kind: str, line: int, message: str) -> None:
         """Record something worth a reviewer's eye that migration keeps as it was."""
-        self.findings.append((kind, line, message))
+        self.findings.append(review_finding(kind, self.name, line, message))

@@ -116,5 +116,5 @@ def test_a_bare_annotated_is_refused_when_the_class_is_built(tmp_path: Path) -> 
                     encoding="utf-8")
     with collecting():
         found = load_bytes(path.read_bytes(), path)
-    assert [e.name for e in found.errors] == ["Row"]
+    assert [e.skill for e in found.errors] == ["Row"]
     assert "bare Annotated" in found.errors[0].message

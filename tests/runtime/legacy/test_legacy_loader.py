@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from ezskiros_runtime.diagnostics import class_error
 from ezskiros_runtime.legacy import ModuleLoadError, load_file, load_source
-from ezskiros_runtime.legacy.loader import ClassError
 from ezskiros_runtime.model import Param
 
 HEADER = """\
@@ -49,8 +49,9 @@ class WithFunction(SkillDescription):
     assert result.models[0].params[0] == Param("A", "Optional", "float",
                                                values=(("float", 0.5),))
     assert result.errors == [
-        ClassError("Broken", 5, "error", "RuntimeError: boom (line 8)"),
-        ClassError("WithFunction", 16, "not-declarative", result.errors[1].message),
+        class_error("Broken", 5, "RuntimeError: boom (line 8)", str(path.absolute())),
+        class_error("WithFunction", 16, result.errors[1].message, str(path.absolute()),
+                    "not-declarative"),
     ]
     assert "ConditionFunction" in result.errors[1].message
     assert "Free" in result.errors[1].message

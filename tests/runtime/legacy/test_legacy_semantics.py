@@ -367,14 +367,14 @@ def test_s8_4_empty_and_mixed_lists_raise(tmp_path: Path) -> None:
                 self.addParam("L", [1, True], ParamTypes.Required)
         """)
     assert [m.name for m in result.models] == ["Fine"]
-    errors = {e.name: e for e in result.errors}
+    errors = {e.skill: e for e in result.errors}
     assert errors.keys() == {"EmptyList", "Mixed", "BoolInt", "IntBool"}
     assert "empty list" in errors["EmptyList"].message
     assert "ParamValueError" in errors["Mixed"].message
     assert "mixes int and float" in errors["Mixed"].message
     assert "mixes bool and int" in errors["BoolInt"].message
     assert "mixes int and bool" in errors["IntBool"].message
-    assert errors["Mixed"].kind == "error" and errors["Mixed"].line == 9
+    assert errors["Mixed"].kind == "description" and errors["Mixed"].line == 9
     assert errors["Mixed"].message.endswith("(line 11)")  # the addParam call
 
 
@@ -420,7 +420,7 @@ def test_s8_5_other_param_types_are_not_upstream(tmp_path: Path) -> None:
                 self.addParam(("A", "B"), 0.5, ParamTypes.Optional)
         """)
     assert result.models == []
-    errors = {e.name: e for e in result.errors}
+    errors = {e.skill: e for e in result.errors}
     assert {e.kind for e in result.errors} == {"not-upstream-api"}
     assert "ParamTypes.SharedInput is not upstream SkiROS2 API" in errors["Fork"].message
     assert "Required, Optional, Inferred" in errors["Fork"].message
