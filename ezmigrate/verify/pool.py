@@ -14,11 +14,13 @@ import queue
 import signal
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 from pathlib import Path
+from typing import IO
 
 from .interpreters import (
     NO_NEWER_PYTHON,
@@ -36,6 +38,11 @@ class _Stopped(Exception):
     """The pool is stopping: no new worker starts."""
 
 
+class _NotStarted(RuntimeError):
+    """A worker exited before it was ready (an interpreter without a module it needs): the
+    message says which interpreter and the last line it wrote."""
+
+
 class _Crew:
     """Every worker process the pool started, so that an interrupt or an error stops all.
 
@@ -51,14 +58,15 @@ class _Crew:
         self.processes: list[subprocess.Popen[str]] = []
         self.stopping = False
 
-    def spawn(self, args: list[str],
+    def spawn(self, args: list[str], errors: IO[bytes],
               env: dict[str, str] | None = None) -> subprocess.Popen[str]:
+        """Start a worker writing its own errors (not its loads') to ``errors``."""
         with self.lock:  # a worker is either recorded here or never started
             if self.stopping:
                 raise _Stopped
             say_if_not_held()
             process = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                       stderr=subprocess.DEVNULL, text=True, bufsize=1,
+                                       stderr=errors, text=True, bufsize=1,
                                        env=worker_environment(env or os.environ, private_home()))
             self.processes.append(process)
             return process
@@ -98,13 +106,22 @@ class _Worker:
                 *(f"--hide={folder}" for folder in hidden_folders(os.environ))]
         for path in config.ontology:
             args += ["--ontology", path]
-        self.process = crew.spawn(args, env)
+        self.errors = tempfile.TemporaryFile()  # noqa: SIM115 (closed with the worker)
+        self.process = crew.spawn(args, self.errors, env)
         self.wait_ready()
 
     def wait_ready(self) -> None:
         ready = self.process.stdout.readline() if self.process.stdout else ""
         if '"ready"' not in ready:
-            raise RuntimeError("a verification worker failed to start")
+            with contextlib.suppress(OSError):
+                self.process.kill()
+            self.process.wait()
+            self.errors.seek(0)
+            said = self.errors.read().decode("utf-8", "replace").strip().splitlines()
+            self.errors.close()
+            raise _NotStarted(f"the verification worker did not start under "
+                              f"{self.config.python or sys.executable}"
+                              + (f": {said[-1]}" if said else ""))
 
     def run(self, job: LoadJob) -> LoadOutcome | None:
         """The outcome, or ``None`` when the worker itself died."""
@@ -131,6 +148,7 @@ class _Worker:
             self.process.wait(timeout=5)
         except (OSError, subprocess.TimeoutExpired):
             self.kill()
+        self.errors.close()
 
     def kill(self) -> None:
         """End the worker now: one that never served (it runs no child), or one that did not
@@ -138,6 +156,7 @@ class _Worker:
         with contextlib.suppress(OSError):
             self.process.kill()
         self.process.wait()
+        self.errors.close()
         for stream in (self.process.stdin, self.process.stdout):
             with contextlib.suppress(OSError):
                 if stream is not None:
@@ -204,6 +223,7 @@ def run_jobs(jobs: Sequence[LoadJob], config: PoolConfig,
         todo.put(index)
     lock = threading.Lock()
     crew = standby.crew if standby is not None else _Crew()
+    unstarted: list[str] = []  # why a worker did not start: the others would not either
 
     def serve() -> None:
         worker: _Worker | None = standby.take() if standby is not None else None
@@ -213,11 +233,17 @@ def run_jobs(jobs: Sequence[LoadJob], config: PoolConfig,
                     index = todo.get_nowait()
                 except queue.Empty:
                     return
-                if worker is None:
+                if worker is None and not unstarted:
                     try:
                         worker = _Worker(config, crew)
                     except _Stopped:
                         return
+                    except _NotStarted as failure:
+                        unstarted.append(str(failure))
+                if worker is None:
+                    with lock:
+                        results[index] = LoadOutcome("crashed", unstarted[0])
+                    continue
                 outcome = worker.run(jobs[index])
                 if outcome is None:  # the worker died: replace it, report this file
                     worker.close()

@@ -55,9 +55,17 @@ _PR_SET_PDEATHSIG = 1
 
 def worker_environment(base: Mapping[str, str], home: str) -> dict[str, str]:
     """The environment of a verification worker and its children: ``PASSED``, ``LC_*``
-    and ``EZSKIROS_*`` from ``base``, ``HOME`` the private folder ``home``."""
+    and ``EZSKIROS_*`` from ``base``, ``HOME`` the private folder ``home``, and the
+    ontology cache this process filled named outright (``EZSKIROS_CACHE_DIR``): under the
+    private ``HOME`` the worker would look for it in an empty folder and parse the ontology
+    again, with an rdflib a robot's Python (``--python``, ``python3.8``) may not have. The
+    worker reads it when it starts, before any module of the repository runs; the loads'
+    children cannot (``hidden_folders``)."""
+    from ezskiros_runtime.ontology.cache import default_cache_dir
+
     kept = {name: value for name, value in base.items()
             if name in PASSED or name.startswith(("LC_", "EZSKIROS_"))}
+    kept.setdefault("EZSKIROS_CACHE_DIR", str(default_cache_dir(base).resolve()))
     kept["HOME"] = home
     kept.setdefault("PATH", os.defpath)
     kept["PYTHONUSERBASE"] = base.get("PYTHONUSERBASE") or site.getuserbase()

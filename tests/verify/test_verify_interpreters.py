@@ -249,3 +249,47 @@ def test_only_absolute_entries_outside_the_checked_repository_are_searched(tmp_p
     assert interpreters.find_python("3.8") == str(elsewhere / "python3.8")
     assert interpreters.resolve("./bin/python3.8") == str(repo / "bin" / "python3.8")
     assert not marker.exists()
+
+
+def test_a_python_without_rdflib_verifies_from_the_ontology_cache_this_run_filled(
+        tmp_path: Path) -> None:
+    """A robot's Python found on the machine (``python3.8`` from pyenv, ``--python``) often
+    lacks rdflib. Its worker runs under a private ``HOME``, so it must be told where the
+    ontology cache this run filled lives (``worker_environment``): else it looks in an
+    empty folder, parses the ontology with an rdflib it does not have, and every skill
+    fails with "crashed: no result". Here the cache is the default one (no
+    ``EZSKIROS_CACHE_DIR``), as on a developer's machine."""
+    base = Path(sys.base_prefix) / "bin" / f"python{sys.version_info[0]}.{sys.version_info[1]}"
+    if not base.is_file():
+        pytest.skip(f"no base interpreter at {base}")
+    if subprocess.run([str(base), "-c", "import rdflib"], capture_output=True,
+                      check=False).returncode == 0:
+        pytest.skip("the base interpreter has rdflib: it cannot stand for a robot's without")
+    robot = tmp_path / "bin" / "robot-python"
+    robot.parent.mkdir()
+    robot.write_text(f'#!/bin/sh\nexec "{base}" "$@"\n', encoding="utf-8")
+    robot.chmod(0o755)
+    repo = tmp_path / "repo"
+    repo.mkdir()
+    shutil.copy(Path(__file__).resolve().parents[2] / "fixtures" / "legacy" / "conditions.py",
+                repo / "conditions.py")
+    env = {name: value for name, value in os.environ.items() if name != "EZSKIROS_CACHE_DIR"}
+    env["XDG_CACHE_HOME"] = str(tmp_path / "user-cache")
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", "rewrite", "--dry-run",
+                          "--python", str(robot), "."], cwd=repo, env=env,
+                         capture_output=True, text=True, check=False, timeout=600)
+    assert "crashed" not in run.stdout + run.stderr, run.stderr
+    summary = run.stderr.strip().splitlines()[-1]
+    assert " 0 failed" in summary and " 0 converted" not in summary, summary
+    # with no cache it can read, it cannot start: each skill says why, not "no result"
+    blocked = tmp_path / "not-a-folder"
+    blocked.write_text("", encoding="utf-8")
+    env["EZSKIROS_CACHE_DIR"] = str(blocked)
+    run = subprocess.run([sys.executable, "-m", "ezmigrate", "rewrite", "--dry-run",
+                          "--python", str(robot), "."], cwd=repo, env=env,
+                         capture_output=True, text=True, check=False, timeout=600)
+    failed = [line for line in run.stderr.splitlines() if ": failed: " in line]
+    assert failed and all(f"the verification worker did not start under {robot}: "
+                          "ModuleNotFoundError: No module named 'rdflib'" in line
+                          for line in failed), run.stderr
+    assert "internal error" not in run.stderr
