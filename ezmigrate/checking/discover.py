@@ -86,8 +86,7 @@ def _prepare(run: CheckRun) -> None:
     from .reading_pool import ReadingPool
 
     settings, launch = run.settings, run.settings.launch
-    if settings.progress is not None:
-        settings.progress(f"checking {len(run.candidates)} files")
+    run.say(f"checking {len(run.candidates)} files")
     if settings.compounds:
         listed = launch.listed("skill_list") if launch is not None else None
         run.trees = Trees(named=tuple(run.paths), exclude=settings.exclude,

@@ -102,8 +102,8 @@ def _loaded(run: CheckRun) -> list[LoadOutcome]:
     from ..cache.load_cache import LoadCache, cached_loads
     from ..verify.pool import BATCH, job_for, run_batched
 
-    if run.loadable and run.settings.progress is not None:
-        run.settings.progress(f"loading {len(run.loadable)} EzSkiROS files")
+    if run.loadable:
+        run.say(f"loading {len(run.loadable)} EzSkiROS files")
     cache_dir, pool = run.settings.cache_dir, run.pool
     cache = None if cache_dir is None else LoadCache.for_run(
         cache_dir, [(str(c.path), data) for c, data in run.read],

@@ -255,7 +255,7 @@ def run(run: CheckRun) -> None:
     from ..project.progress import Progress
 
     line = Progress.for_stream(len(run.candidates), skills_label="skills found") \
-        if run.settings.progress is not None else Progress(len(run.candidates), active=False)
+        if run.settings.progress else Progress(len(run.candidates), active=False)
     if run.reader is not None:
         run.reader.parse_scenes([s for s in run.world.scenes if s not in run.scenes_cached])
     static_against = None

@@ -8,7 +8,8 @@ is what the caller decides; ``CheckOutcome`` is what the caller gets back.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+import sys
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -63,8 +64,8 @@ class CheckSettings:
     world: WorldRun | None = None
     """The world-model settings; None: the defaults and the scenes under the paths."""
     launch: Launch | None = None
-    progress: Callable[[str], None] | None = None
-    """Where a progress message goes (a terminal's stderr), or None."""
+    progress: bool = False
+    """Say on stderr what the run is doing (``CheckRun.say``): for a terminal's user."""
     discovered: Discovery | None = None
     """The paths' files, already being discovered (``pipeline.checked_files``)."""
     memo: Memo | None = None
@@ -144,6 +145,13 @@ class CheckRun:
     @property
     def diagnostics(self) -> list[Diagnostic]:
         return self.outcome.diagnostics
+
+    def say(self, line: str) -> None:
+        """A progress message on stderr, when the run shows progress (our own words: no
+        file name or text of the repository is in them)."""
+        if self.settings.progress:
+            sys.stderr.write(f"ezmigrate: {line}\n")
+            sys.stderr.flush()
 
     def loadable_data(self) -> list[bytes]:
         """The bytes the run read of each EzSkiROS file, in ``loadable``'s order."""

@@ -567,15 +567,14 @@ def _check_settings(args: CheckArguments, of: Subject, options: Options,
     from ..checking.pipeline import needs_trees
     from ..checking.run import CheckSettings
 
-    progress = (lambda line: click.echo(f"ezmigrate: {printable(line)}", err=True)) \
-        if sys.stderr.isatty() and not args.quiet else None
     return CheckSettings(
         exclude=options.exclude, include_vendored=args.include_vendored,
         skill_libraries=options.skill_libraries, compounds=needs_trees(selection.codes()),
         trace=args.trace,
         cache_dir=None if args.no_cache else _cache_dir(of.paths, options, args.cache_folder),
         world=_world_run(of.paths, options, args.scene),
-        launch=_launch(of.anchor, args.launch_file, args.quiet), progress=progress,
+        launch=_launch(of.anchor, args.launch_file, args.quiet),
+        progress=sys.stderr.isatty() and not args.quiet,
         discovered=discovered)
 
 
