@@ -46,6 +46,8 @@ class FactsCache:
         """Entries this run read or made, by key."""
         self._added: dict[str, Any] = {}
         """Entries this run made: ``save`` writes them."""
+        self._digests: dict[str, str] = {}
+        """The SHA-256 of each entry's text, read or written (``digest``)."""
 
     @classmethod
     def open(cls, folder: Path) -> FactsCache | None:
@@ -79,7 +81,22 @@ class FactsCache:
         except (ValueError, TypeError, RecursionError, AttributeError):
             return None  # CodecError is a ValueError: a corrupt entry is a miss
         self._known[key] = found
+        self._digests[key] = hashlib.sha256(payload).hexdigest()
         return found
+
+    def digest(self, key: str) -> str | None:
+        """The SHA-256 of ``key``'s entry as this run read or wrote it: the same reading
+        gives the same text (``facts_codec`` writes sets in one order), so two files whose
+        readings are equal have equal digests (``checking.early_cutoff``); None for an
+        entry this run neither read nor wrote."""
+        return self._digests.get(key)
+
+    def text_of(self, value: Any) -> bytes | None:
+        """The entry text ``value`` is kept as (None: it holds something not of ours)."""
+        try:
+            return json.dumps(encode(value), separators=(",", ":")).encode("utf-8")
+        except (CodecError, RecursionError):
+            return None
 
     def put(self, key: str, value: Any) -> None:
         """Keep ``value`` as ``key``'s entry (a key names the bytes its value was read
@@ -91,11 +108,10 @@ class FactsCache:
         """Write the entries this run made; one that holds something not of ours
         (``CodecError``) is not kept."""
         for key, value in self._added.items():
-            try:
-                payload = json.dumps(encode(value), separators=(",", ":"))
-            except (CodecError, RecursionError):
-                continue
-            self._store.write(self.entry(key), payload.encode("utf-8"))
+            payload = self.text_of(value)
+            if payload is not None:
+                self._digests[key] = hashlib.sha256(payload).hexdigest()
+                self._store.write(self.entry(key), payload)
         self._added.clear()
 
 

@@ -39,8 +39,8 @@ def encode(value: Any) -> Any:
         return {"b": base64.b64encode(value).decode("ascii")}
     if isinstance(value, tuple):
         return {"t": [encode(v) for v in value]}
-    if isinstance(value, (set, frozenset)):
-        items = [encode(v) for v in value]
+    if isinstance(value, (set, frozenset)):  # in one order, whatever the hash seed:
+        items = sorted((encode(v) for v in value), key=_order)  # one reading, one text
         return {"fs" if isinstance(value, frozenset) else "s": items}
     if isinstance(value, dict):
         return {"d": [[encode(k), encode(v)] for k, v in value.items()]}
@@ -49,6 +49,10 @@ def encode(value: Any) -> Any:
     if not name.startswith(OWN):
         raise CodecError(f"not a reading of ours: {name}")
     return {"c": name, "f": [[key, encode(v)] for key, v in _fields(value).items()]}
+
+
+def _order(item: Any) -> str:
+    return json.dumps(item, sort_keys=True)
 
 
 def _fields(value: Any) -> dict[str, Any]:

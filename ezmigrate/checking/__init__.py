@@ -1,7 +1,8 @@
 """``ezmigrate check``: the linter a SkiROS2 repository keeps in CI, before and after migrating.
 
 `pipeline` runs the stages in order over one run object (`run`): `discover` (the files,
-scenes and launch file; the outcome cache's answer), `read_files` (each file read once,
+scenes and launch file; the outcome cache's answer, or `early_cutoff`'s when the few files
+that changed read as before), `read_files` (each file read once,
 in `reading_pool`'s forked workers, into `file_facts`), `per_file` (legacy and EzSkiROS
 descriptions on their own), `skill_index` (every description a tree may name), `compound`
 (the trees' EZ3xx checks), `world` (EZ4xx), `judgements` (the checks inside implementation

@@ -15,6 +15,7 @@ from ezskiros_runtime.ontology.vendored import PACKAGE_XML
 from ..cache.outcome_cache import OutcomeCache, read_all, run_key
 from ..files.discover import Candidate, Discovery, library_candidates, start_discovery
 from ..lint.scene_search import SCENE_SUFFIX, WorldRun, scene_files
+from .early_cutoff import recall
 from .launch import with_init_scene
 from .run import CheckOutcome, CheckRun, text_of
 
@@ -59,22 +60,27 @@ def _kept(run: CheckRun) -> None:
     if files is None:
         return
     files += [(str(c.path), data) for c, data in library_candidates(list(settings.skill_libraries))]
-    run.kept_key = run_key(files, {
+    inputs = {
         "ontology": run.index.fingerprint if run.index is not None else "",
         "interpreter": run.pool.python or "", "timeout": run.pool.timeout,
         "single_valued": list(world.single_valued) if world.single_valued is not None
         else None, "start_scene": str(world.start_scene or ""),
         "launch": sorted(launch.values.items()) if launch is not None else None,
         "compounds": settings.compounds, "trace": settings.trace,
-        "paths": [str(p) for p in run.paths]})
+        "paths": [str(p) for p in run.paths]}
+    run.kept_key = run_key(files, inputs)
+    python = {str(c.path) for c in run.candidates}  # the cutoff's key: all but their bytes
+    run.cutoff_key = run_key([(p, b"" if p in python else d) for p, d in files],
+                             {**inputs, "early_cutoff": True})
     hit = OutcomeCache(settings.cache_dir).get(run.kept_key)
-    if hit is None:
+    outcome = CheckOutcome(files=hit["files"], skills=hit["skills"],
+                           diagnostics=hit["diagnostics"], notes=hit["notes"]) \
+        if hit is not None else recall(run, dict(files))
+    if outcome is None:
         return
-    read = {str(c.path) for c in run.candidates} | {str(p) for p in world.scenes}
-    sources = {path: text_of(data) for path, data in files if path in read}
-    run.outcome = CheckOutcome(files=hit["files"], skills=hit["skills"],
-                               diagnostics=hit["diagnostics"], sources=sources,
-                               notes=hit["notes"])
+    read = python | {str(p) for p in world.scenes}
+    outcome.sources = {path: text_of(data) for path, data in files if path in read}
+    run.outcome = outcome
     run.done = True
 
 
@@ -98,7 +104,8 @@ def _prepare(run: CheckRun) -> None:
 
         # the readings of each file by content: for runs over folders, as the whole run's
         # cache (a run over named files would keep only their entries and drop the others)
-        run.facts_cache = FactsCache.open(settings.cache_dir)
+        if run.facts_cache is None:  # (``early_cutoff`` may have opened it)
+            run.facts_cache = FactsCache.open(settings.cache_dir)
         if run.facts_cache is not None:
             run.scenes_cached = seed_scenes(run.facts_cache, run.world.scenes)
     run.reader = ReadingPool(run.pool.workers, Settings(index=run.index),

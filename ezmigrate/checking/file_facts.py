@@ -21,7 +21,8 @@ from ezskiros_runtime.compound.trace import Unanalysable
 
 from ..codemod.core.python2 import python2_refusal
 from ..compound.analysis import TreeFacts, tree_facts
-from ..compound.repository import READ_WHEN, SCAN_WHEN, Recovered, recover_classes
+from ..compound.markers import READ_WHEN, SCAN_WHEN
+from ..compound.repository import Recovered, recover_classes
 from ..compound.static import NeedsTrace
 from ..files.discover import Candidate
 from ..files.prefilter import marker_is_identifier
@@ -59,13 +60,18 @@ class FileFacts:
     """``ast`` read the file: the repository scan need not parse it again to learn that
     (``Trees.parsed``)."""
     depends: tuple[tuple[str, str], ...] = ()
-    """``(path, sha256)`` of the other files the reading read (the lab's modules its star
-    imports name, ``static.star_sources``): a kept reading is one of these bytes too."""
+    """``(path, code_digest)`` of the other files the reading read (the lab's modules its
+    star imports name, ``static.star_sources``): a kept reading is one of this code too."""
     loaded: LoadOutcome | None = None
     """For an EzSkiROS file read ``statically``, what loading it would give, read from the
     same syntax tree against the active ontology (``lint/ezskiros_static``): taken here, in
     the reading pool's workers, instead of parsing the file a second time in the main
     process. It depends on the ontology, which the cache's key then names."""
+    posts: dict[str, list[tuple[int, str]]] | None = None
+    """With ``loaded``, the lines of the file's post-conditions (``world_model.post_lines``)
+    for the world model's EZ401, taken from the same tree (an ASCII file's: a tree's
+    columns count the bytes of its text as UTF-8); None: the world stage reads them from
+    the file's text."""
 
     def moved(self, to: Candidate) -> FileFacts:
         """The facts of a file with the same bytes at ``to``: a file's facts name its path
@@ -81,7 +87,8 @@ class FileFacts:
         trees = None if self.trees is None else replace(self.trees, found=tuple(
             _moved(f, path) for f in self.trees.found))
         # the static load's findings name the file: the copy's is read where it is needed
-        return replace(self, static=static, settled=settled, trees=trees, loaded=None)
+        return replace(self, static=static, settled=settled, trees=trees, loaded=None,
+                       posts=None)
 
 
 def parse(data: bytes) -> ast.Module | None:
@@ -154,7 +161,10 @@ def file_facts(candidate: Candidate, data: bytes, compounds: bool,
                           parsed=True,
                           depends=_depends(tree, str(candidate.path)) if read_when else ())
     if runtime and statically:  # last: the reading may renumber the tree's annotations
-        facts = replace(facts, loaded=static_load(tree, str(candidate.path)))
+        from ..lint.world_model import post_lines
+
+        posts = post_lines(tree, data.decode("ascii")) if data.isascii() else None
+        facts = replace(facts, loaded=static_load(tree, str(candidate.path)), posts=posts)
     return facts
 
 
@@ -172,23 +182,34 @@ def _depends(tree: ast.Module, path: str) -> tuple[tuple[str, str], ...]:
 
     found = []
     for source in star_sources(tree, path):
-        digest = file_digest(source)
+        digest = code_digest(source)
         if digest is not None:
             found.append((source, digest))
     return tuple(found)
 
 
-def file_digest(path: str) -> str | None:
-    """The sha256 of a file's bytes, None when it cannot be read."""
+def code_digest(path: str) -> str | None:
+    """The digest of a module's code, not of its text: its syntax tree without positions
+    (what a star import's reading takes of it is names, a function of that tree), so a
+    comment or a moved line leaves it as it was; of its bytes when ``ast`` cannot parse
+    it; None when it cannot be read."""
     try:
-        return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+        return code_digest_of(Path(path).read_bytes())
     except OSError:
         return None
 
 
+def code_digest_of(data: bytes) -> str:
+    """``code_digest`` of a module's bytes."""
+    tree = parse(data)
+    if tree is None:
+        return "bytes:" + hashlib.sha256(data).hexdigest()
+    return hashlib.sha256(ast.dump(tree, include_attributes=False).encode()).hexdigest()
+
+
 def still_read(facts: FileFacts) -> bool:
-    """Whether every other file a reading read still holds the bytes it read."""
-    return all(file_digest(path) == digest for path, digest in facts.depends)
+    """Whether every other file a reading read still holds the code it read."""
+    return all(code_digest(path) == digest for path, digest in facts.depends)
 
 
 def _newer_syntax(relative: str, data: bytes) -> FileResult | Declined:

@@ -10,6 +10,7 @@ from .run import CheckRun
 def run(run: CheckRun) -> None:
     """Keep the outcome and the readings, when the run is kept."""
     from ..cache.outcome_cache import OutcomeCache
+    from .early_cutoff import remember
 
     outcome, cache_dir = run.outcome, run.settings.cache_dir
     outcome.files += len(run.world.scenes)
@@ -21,3 +22,4 @@ def run(run: CheckRun) -> None:
 
         keep_scenes(run.facts_cache, run.world.scenes)
         run.facts_cache.save()
+        remember(run)

@@ -40,6 +40,12 @@ class FileReadings:
     """The codemod's readings, taken already (by the reading pool or from the cache)."""
     typed: set[str] = field(default_factory=set)
     """Files whose bytes are an overlay's (an editor's unsaved buffer), not the disk's."""
+    keys: dict[str, str] = field(default_factory=dict)
+    """The facts cache's key of each parsed file, by path (``facts_key``)."""
+    shared: set[str] = field(default_factory=set)
+    """Files whose bytes another file's reading took (``CheckRun.shared``)."""
+    star_sources: set[str] = field(default_factory=set)
+    """Files whose code another file's reading took (``CheckRun.star_sources``)."""
 
 
 def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache | None,
@@ -50,7 +56,6 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
     path); ``static_against``: the fingerprint of the active ontology EzSkiROS files are
     read statically against (``FileFacts.loaded``; None: they are not, ``--trace`` loads
     them). Files without a description are read, never parsed."""
-    from ..compound.repository import SCAN_WHEN
     from ..files.prefilter import by_text
     from .file_facts import FileFacts, file_facts, still_read
 
@@ -68,15 +73,15 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
             data = None  # the codemod reports why it cannot be read
         read.append((candidate, data))
         verdict = None if data is None else by_text(data)
-        if data is None or (verdict is False and not (
-                compounds and any(marker in data for marker in SCAN_WHEN))):
+        if data is None or never_parsed(data, verdict, compounds):
             continue  # never parsed: nothing to read in it
-        ontology = ("static", static_against) \
-            if static_against is not None and RUNTIME_MARKER in data else ()
-        key = None if cache is None else cache.key(
-            "file", str(candidate.path), candidate.relative, str(compounds), data, *ontology)
+        key = None if cache is None else facts_key(cache, candidate, data, compounds,
+                                                    static_against)
+        if key is not None:
+            readings.keys[str(candidate.path)] = key
         found = None if cache is None or key is None else cache.get(key)
         if isinstance(found, FileFacts) and still_read(found):
+            readings.star_sources.update(path for path, _ in found.depends)
             facts[candidate.path] = found
             if found.settled is not None:
                 readings.alone[str(candidate.path)] = (data, found.settled)
@@ -87,6 +92,7 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
     made = reader.read_files(items, compounds, statically) if reader is not None \
         else [(file_facts(c, d, compounds, v, statically), None) for c, d, v in items]
     for (candidate, data, _, key), (found, own) in zip(missing, made, strict=True):
+        readings.star_sources.update(path for path, _ in found.depends)
         facts[candidate.path] = found
         taken = own if own is not None else found.settled
         if taken is not None:
@@ -95,6 +101,24 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
             cache.put(key, found)
     readings.files = [(c, data, facts.get(c.path)) for c, data in read]
     return readings
+
+
+def never_parsed(data: bytes, verdict: bool | None, compounds: bool) -> bool:
+    """Whether the read stage leaves a file unparsed: the prefilter rules it out
+    (``verdict``: ``by_text``), and it has nothing the compound pass reads."""
+    from ..compound.markers import SCAN_WHEN
+
+    return verdict is False and not (compounds and any(m in data for m in SCAN_WHEN))
+
+
+def facts_key(cache: FactsCache, candidate: Candidate, data: bytes, compounds: bool,
+              static_against: str | None) -> str:
+    """The key of a file's facts in the cache (``read_facts``): its path and bytes, whether
+    the compound pass reads it, and for an EzSkiROS file read statically, the ontology."""
+    ontology = ("static", static_against) \
+        if static_against is not None and RUNTIME_MARKER in data else ()
+    return cache.key("file", str(candidate.path), candidate.relative, str(compounds), data,
+                     *ontology)
 
 
 def declarations(readings: FileReadings, index: OntologyIndex | None, workers: int,
@@ -132,7 +156,7 @@ def declarations(readings: FileReadings, index: OntologyIndex | None, workers: i
         yield candidate, data or b"", readings.alone[str(candidate.path)][1]
     if declined:
         yield from _settled(declined, [(c, d, r) for c, d, r in plain if c.root in whole_package],
-                            index, workers, cache, readings.alone)
+                            index, workers, cache, readings)
 
 
 def read_statically(candidates: list[Candidate], workers: int, index: OntologyIndex | None
@@ -144,8 +168,7 @@ def read_statically(candidates: list[Candidate], workers: int, index: OntologyIn
 
 def _settled(declined: list[tuple[Candidate, bytes | None]],
              plain: list[tuple[Candidate, bytes, FileResult]], index: OntologyIndex | None,
-             workers: int, cache: FactsCache | None,
-             alone: Mapping[str, tuple[bytes, FileResult]]
+             workers: int, cache: FactsCache | None, readings: FileReadings
              ) -> Iterator[tuple[Candidate, bytes, FileResult]]:
     """The codemod's readings of the files the plain reader declined (``settle``, without
     verification), beside the plain files of their packages (``plain``) that may define
@@ -157,8 +180,9 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     The cache keeps each reading by the ontology's fingerprint and the file's content, and
     for a file whose classes derive from imported bases, the content of every file that
     may define them: one changed file is read again with the files that depend on it.
-    ``alone``: files already read alone as the codemod reads them, by the reading pool
-    (``runner.own_reading``) or from their syntax (``ezskiros_reader``).
+    ``readings.alone``: files already read alone as the codemod reads them, by the reading
+    pool (``runner.own_reading``) or from their syntax (``ezskiros_reader``); the files that
+    may define a base go to ``readings.shared``.
     """
     from ..project.import_scan import import_words
     from ..project.runner import Migrated
@@ -170,6 +194,9 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     words = {c.path: import_words(d) for c, d in declined if d is not None}
     definers = _Definers(everyone)
     wanted = definers.of(set().union(*words.values()) if words else set())
+    alone = readings.alone
+    readings.shared |= definers.of(set().union(*(  # the siblings a reading may take
+        found for path, found in words.items() if _needs_siblings(alone.get(str(path))))))
     siblings = [Migrated(c, d, None, r) for c, d, r in plain if str(c.path) in wanted]
     if cache is None:
         for item in settle([c for c, _ in declined], index, workers, read=siblings,
@@ -206,6 +233,13 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
                 cache.put(keyed(item.candidate, item.original), item.result)
     for candidate, data in declined:
         yield candidate, data or b"", found[candidate.path]
+
+
+def _needs_siblings(alone: tuple[bytes, FileResult] | None) -> bool:
+    """Whether the codemod's reading of a declined file may take its siblings' bytes: it
+    has no reading of its own yet (``alone``), or that reading derives from bases other
+    files define, or changes the file (the cross-file pass may migrate it again)."""
+    return alone is None or bool(alone[1].foreign_bases) or alone[1].changed
 
 
 class _Definers:
@@ -267,11 +301,15 @@ def run(run: CheckRun) -> None:
             use_ontology(run.index)
     readings = read_facts(run.candidates, run.trees is not None, run.facts_cache, run.reader,
                           run.settings.overlay, static_against)
+    run.fact_keys, run.star_sources = readings.keys, readings.star_sources
+    run.shared = readings.shared  # (the declarations below add to it)
     for candidate, data, found in readings.files:
         if found is None or data is None:
             continue
         if found.loaded is not None:
             run.static_loads[candidate.path] = found.loaded
+        if found.posts is not None:
+            run.post_lines[candidate.path] = found.posts
         if run.trees is not None:
             _take(run, candidate, found)
     with line:  # erased before the next message

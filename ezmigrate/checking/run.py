@@ -115,6 +115,17 @@ class CheckRun:
     candidates: list[Candidate] = field(default_factory=list)
     kept_key: str | None = None
     """The run's key in the outcome cache, when the run is kept there."""
+    cutoff_key: str | None = None
+    """The key of what the next run needs to cut off early (``early_cutoff``): the run's
+    inputs but its Python files' bytes."""
+    fact_keys: dict[str, str] = field(default_factory=dict)
+    """The facts cache's key of each parsed file, by path (``read_files.facts_key``)."""
+    shared: set[str] = field(default_factory=set)
+    """Files whose bytes another file's reading took (a possible base of a file the codemod
+    read): never cut off early (``early_cutoff``)."""
+    star_sources: set[str] = field(default_factory=set)
+    """Files whose code another file's reading took (a star import's module,
+    ``FileFacts.depends``): cut off early only when their code is as it was."""
     facts_cache: FactsCache | None = None
     scenes_cached: set[Path] = field(default_factory=set)
     """Scenes whose parse the facts cache held (the reading pool parses the others)."""
@@ -133,6 +144,9 @@ class CheckRun:
     static_loads: dict[Path, LoadOutcome] = field(default_factory=dict)
     """What the read stage read of each EzSkiROS file from its syntax (``FileFacts.loaded``),
     by path."""
+    post_lines: dict[Path, dict[str, list[tuple[int, str]]]] = field(default_factory=dict)
+    """The post-conditions' lines the read stage took of each EzSkiROS file
+    (``FileFacts.posts``), by path, for the world stage."""
     loads: list[LoadOutcome] = field(default_factory=list)
     """What reading (or, under ``--trace``, loading) each EzSkiROS file gave."""
     skill_index: SkillIndex | None = None

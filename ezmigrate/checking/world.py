@@ -17,6 +17,6 @@ def run(run: CheckRun) -> None:
         run.reader.seed_scenes()
     run.diagnostics.extend(world_diagnostics(
         run.world, [(str(c.path), r) for c, r in run.results],
-        [(str(c.path), [SkillModel.from_json(m) for m in o.models])
+        [(str(c.path), [SkillModel.from_json(m) for m in o.models], run.post_lines.get(c.path))
          for c, o in zip(run.loadable, run.loads, strict=True) if o.loaded], run.index,
         run.outcome.sources))

@@ -10,7 +10,6 @@ ones statically, EzSkiROS ones loaded), the standard library's, and those of the
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -30,7 +29,8 @@ from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..verify.pool import PoolConfig
 from ..verify.protocol import LoadOutcome
-from .repository import READ_WHEN, Recovered, RepositoryScan, description_of
+from .markers import READ_WHEN, ROS1_IMPORT, ROS2_IMPORT
+from .repository import Recovered, RepositoryScan, description_of
 from .static import (
     IMPLEMENTATION_BASES,
     NeedsTrace,
@@ -353,9 +353,9 @@ def ros_package_of(path: Path, data: bytes) -> tuple[str | None, str | None]:
         flavour = ros_flavour(package / "package.xml")
         name = package_name(package / "package.xml")
     if flavour is None:
-        if re.search(rb"^\s*(?:import|from)\s+rclpy\b", data, re.MULTILINE):
+        if ROS2_IMPORT.search(data):
             flavour = "ros2"
-        elif re.search(rb"^\s*(?:import|from)\s+rospy\b", data, re.MULTILINE):
+        elif ROS1_IMPORT.search(data):
             flavour = "ros1"
     return flavour, name or None
 

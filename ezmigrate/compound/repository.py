@@ -35,6 +35,7 @@ from ezskiros_runtime.compound.model import CompoundModel
 from ezskiros_runtime.model import SkillModel
 
 from ..files.discover import Candidate, discover, repository_root
+from .markers import SCAN_WHEN
 from .static import (
     NeedsTrace,
     class_bases,
@@ -44,12 +45,6 @@ from .static import (
     read_compounds,
 )
 
-READ_WHEN = (b"expand", b"setDescription", b"createDescription")
-"""A file is read for compound skills, implementations and description bases if it has any
-(``analysis.Trees``)."""
-SCAN_WHEN = (*READ_WHEN, b"SkillDescription")
-"""A file is scanned for the repository's descriptions if it has any: ``READ_WHEN``, or a
-description class with no ``createDescription`` of its own."""
 UNPARSED = "in a file Python 3 cannot parse"
 TOP_CLASS = "class@0"
 _LINES = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")

@@ -160,12 +160,13 @@ def legacy_double_places(path: str, skill: str, facts: StaticDescription,
 
 
 def ezskiros_double_places(path: str, source: str, models: Iterable[SkillModel],
-                           index: OntologyIndex | None, entries: list[SingleValued]
-                           ) -> list[Finding]:
+                           index: OntologyIndex | None, entries: list[SingleValued],
+                           posts: PostLines | None = None) -> list[Finding]:
     """EZ401 for loaded EzSkiROS descriptions; the line is that of the post-condition's
-    ``+=`` in the class, found in the source (parsed only for a finding: on a migrated
-    repository, parsing every file for its lines was a third of ``check``)."""
-    lines: dict[str, list[tuple[int, str]]] | None = None
+    ``+=`` in the class, found in the source (``posts``, when the read stage took them
+    from its parse; else parsed only for a finding: on a migrated repository, parsing every
+    file for its lines was a third of ``check``)."""
+    lines: PostLines | None = posts
     found = []
     for model in models:
         for d in double_places(past_typos(uses_of(model), (p.key for p in model.params)),
@@ -178,17 +179,28 @@ def ezskiros_double_places(path: str, source: str, models: Iterable[SkillModel],
     return found
 
 
-def _post_lines(source: str) -> dict[str, list[tuple[int, str]]]:
-    """``{class: [(line, text of the added condition)]}`` for every
-    ``self.post_conditions += ...`` in a module."""
+PostLines = dict[str, list[tuple[int, str]]]
+"""``{class: [(line, text of the added condition)]}`` of a module (``post_lines``)."""
+
+
+def _post_lines(source: str) -> PostLines:
+    """``post_lines`` of a module's source."""
     if "post_conditions" not in source:
         return {}
     try:
         tree = ast.parse(source)
     except (SyntaxError, ValueError):
         return {}
+    return post_lines(tree, source)
+
+
+def post_lines(tree: ast.Module, source: str) -> PostLines:
+    """``{class: [(line, text of the added condition)]}`` for every
+    ``self.post_conditions += ...`` in a module (``tree``, parsed from ``source``)."""
+    if "post_conditions" not in source:
+        return {}
     lines = source.splitlines()
-    found: dict[str, list[tuple[int, str]]] = {}
+    found: PostLines = {}
     for node in ast.walk(tree):
         if not isinstance(node, ast.ClassDef):
             continue
@@ -231,7 +243,7 @@ def cannot_start(path: str, skill: str, line: int, model: SkillModel, scene: Sce
 
 
 def world_diagnostics(run: WorldRun, legacy: Iterable[tuple[str, FileResult]],
-                      loaded: Iterable[tuple[str, list[SkillModel]]],
+                      loaded: Iterable[tuple[str, list[SkillModel], PostLines | None]],
                       index: OntologyIndex | None, sources: dict[str, str]
                       ) -> list[Diagnostic]:
     """Every EZ4xx diagnostic of a run; the scenes' texts are added to ``sources`` (so that
@@ -247,9 +259,9 @@ def world_diagnostics(run: WorldRun, legacy: Iterable[tuple[str, FileResult]],
                                       sources.get(path, ""))
             if skill.model is not None and run.start_scene is not None:
                 models.append((path, skill.name, skill.line, SkillModel.from_json(skill.model)))
-    for path, found in loaded:
+    for path, found, posts in loaded:
         out += diagnostics_of(ezskiros_double_places(path, sources.get(path, ""), found, index,
-                                                     entries), sources.get(path, ""))
+                                                     entries, posts), sources.get(path, ""))
         models += [(path, m.name, m.line or 0, m) for m in found]
     out += ontology_diagnostics(index, sources)
     reads = read_scenes(run.scenes, index)

@@ -21,6 +21,7 @@ from ezmigrate.cache.cache_folder import Store, project_folder, user_key
 from ezmigrate.cache.facts_cache import FOLDER, FactsCache
 from ezmigrate.cache.facts_codec import CodecError, decode, encode, loads
 from ezmigrate.cache.outcome_cache import OUTCOMES
+from ezmigrate.checking import file_facts as file_facts_module
 from ezmigrate.checking import reading_pool
 from ezmigrate.checking.pipeline import run_check
 from ezmigrate.checking.run import CheckSettings
@@ -108,9 +109,9 @@ class Reads:
         real_facts, real_settle = reading_pool.file_facts, settle_module.settle
         real_scene = scene_module._parsed
 
-        def file_facts(candidate, data, *args):  # type: ignore[no-untyped-def]
+        def file_facts(candidate, data, *args, **kwargs):  # type: ignore[no-untyped-def]
             self.parsed.append(candidate.path.name)
-            return real_facts(candidate, data, *args)
+            return real_facts(candidate, data, *args, **kwargs)
 
         def settle(candidates, *args, **kwargs):  # type: ignore[no-untyped-def]
             self.settled += [c.path.name for c in candidates]
@@ -121,6 +122,7 @@ class Reads:
             return real_scene(where, text)
 
         monkeypatch.setattr(reading_pool, "file_facts", file_facts)  # one worker: here
+        monkeypatch.setattr(file_facts_module, "file_facts", file_facts)  # early_cutoff
         monkeypatch.setattr(settle_module, "settle", settle)  # ``check`` imports it late
         monkeypatch.setattr(scene_module, "_parsed", parsed_scene)
 
