@@ -27,3 +27,25 @@ def check_json(repo: Path, *extra: str) -> subprocess.CompletedProcess[str]:
                            "--output-format", "json", "--cache-dir", str(user_cache(repo)),
                            *extra, "."], cwd=repo,
                           capture_output=True, text=True, timeout=600, check=False)
+
+
+# A compound skill whose processor comes from a star import of the lab's own module
+# (``processors_here.py``): what its reading takes of that module is its names.
+STAR_TREE = '''\
+from skiros2_skill.core.skill import SkillDescription, SkillBase
+from processors_here import *
+
+
+class Patrol(SkillDescription):
+    def createDescription(self):
+        pass
+
+
+class patrol(SkillBase):
+    def createDescription(self):
+        self.setDescription(Patrol(), self.__class__.__name__)
+
+    def expand(self, skill):
+        skill.setProcessor(LabSequence())
+        skill(self.skill("Patrol", ""))
+'''

@@ -14,6 +14,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from cache_support import STAR_TREE
 
 from ezmigrate.cache.cache_folder import Store, project_folder
 from ezmigrate.checking import early_cutoff
@@ -36,24 +37,6 @@ class Place(SkillDescription):
         self.addParam("Object", Element("skiros:Prodct"), ParamTypes.Required)
 """
 
-TREE = '''\
-from skiros2_skill.core.skill import SkillDescription, SkillBase
-from processors_here import *
-
-
-class Patrol(SkillDescription):
-    def createDescription(self):
-        pass
-
-
-class patrol(SkillBase):
-    def createDescription(self):
-        self.setDescription(Patrol(), self.__class__.__name__)
-
-    def expand(self, skill):
-        skill.setProcessor(LabSequence())
-        skill(self.skill("Patrol", ""))
-'''
 
 PROCESSORS = "class LabSequence:\n    pass\n"
 
@@ -63,7 +46,7 @@ def repo(tmp_path: Path) -> Path:
     root = tmp_path / "repo"
     (root / "pkg").mkdir(parents=True)
     (root / "pkg" / "place.py").write_text(PLACE, encoding="utf-8")
-    (root / "pkg" / "tree.py").write_text(TREE, encoding="utf-8")
+    (root / "pkg" / "tree.py").write_text(STAR_TREE, encoding="utf-8")
     (root / "pkg" / "processors_here.py").write_text(PROCESSORS, encoding="utf-8")
     subprocess.run(["git", "init", "-q", str(root)], check=True)
     return root

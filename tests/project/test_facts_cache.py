@@ -16,6 +16,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from cache_support import STAR_TREE
 
 from ezmigrate.cache.cache_folder import Store, project_folder, user_key
 from ezmigrate.cache.facts_cache import FOLDER, FactsCache
@@ -258,24 +259,6 @@ def test_without_a_key_there_is_no_cache_and_the_same_findings(
     assert not (_folder(repo) / FOLDER).exists()
 
 
-STAR_TREE = '''\
-from skiros2_skill.core.skill import SkillDescription, SkillBase
-from processors_here import *
-
-
-class Patrol(SkillDescription):
-    def createDescription(self):
-        pass
-
-
-class patrol(SkillBase):
-    def createDescription(self):
-        self.setDescription(Patrol(), self.__class__.__name__)
-
-    def expand(self, skill):
-        skill.setProcessor(LabSequence())
-        skill(self.skill("Patrol", ""))
-'''
 
 
 def test_a_reading_kept_by_its_bytes_is_read_again_when_a_star_imported_module_changes(
