@@ -8,6 +8,7 @@ are read, before any thread starts.
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 from ezskiros_runtime.ontology.vendored import PACKAGE_XML
@@ -32,18 +33,19 @@ def checked_files(paths: list[Path], exclude: tuple[str, ...] = (),
 def package_manifests(candidates: list[Candidate]) -> list[Path]:
     """The ``package.xml`` of each candidate's ROS package (the nearest above it): the
     compound stage reads a package's flavour (catkin or ament) and name from it
-    (``ros_package_of``), so a kept run depends on its bytes too."""
-    found: dict[Path, Path | None] = {}
+    (``ros_package_of``), so a kept run depends on its bytes too. Each folder is looked at
+    once (a repository has a few folders for many files)."""
+    found: dict[str, str | None] = {}
 
-    def manifest(folder: Path) -> Path | None:
+    def manifest(folder: str) -> str | None:
         if folder not in found:
-            here = folder / PACKAGE_XML
-            found[folder] = here if here.is_file() else \
-                manifest(folder.parent) if folder.parent != folder else None
+            here, parent = os.path.join(folder, PACKAGE_XML), os.path.dirname(folder)
+            found[folder] = here if os.path.isfile(here) else \
+                manifest(parent) if parent != folder else None
         return found[folder]
 
-    return sorted({m for c in candidates for m in (manifest(c.path.parent.resolve()),)
-                   if m is not None})
+    folders = {os.path.realpath(c.path.parent) for c in candidates}
+    return sorted(Path(m) for m in {manifest(f) for f in folders} if m is not None)
 
 
 def _kept(run: CheckRun) -> None:
