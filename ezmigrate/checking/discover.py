@@ -110,15 +110,7 @@ def _prepare(run: CheckRun) -> None:
             run.facts_cache = FactsCache.open(settings.cache_dir)
         if run.facts_cache is not None:
             run.scenes_cached = seed_scenes(run.facts_cache, run.world.scenes)
-    run.reader = ReadingPool(run.pool.workers, Settings(index=run.index),
-                             idle=_checks_after_reading)
-
-
-def _checks_after_reading() -> None:
-    """Import the checks that run once the files are read (legacy descriptions, the world
-    model, the robot's vocabulary): 20 ms of a run's main process, spent while it waits for
-    the reading workers' last chunks instead of after them."""
-    from ..lint import legacy, robot_vocabulary, world_model  # noqa: F401
+    run.reader = ReadingPool(run.pool.workers, Settings(index=run.index))
 
 
 def run(run: CheckRun) -> None:

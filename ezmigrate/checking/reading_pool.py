@@ -147,17 +147,11 @@ def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds
 class ReadingPool:
     """Forked readers for one run: ``workers`` processes read, the main one among them
     (so one fewer is forked; ``workers`` under two: none, the main reads alone). ``settings``:
-    what the codemod reads declined files with (None: they are left to ``settle``).
-    ``idle``: work for the main process while it waits for the workers' last chunks (the
-    pool hands a worker its next chunk before it is done with the one it reads, so the main
-    process, which takes chunks from the end, stops a chunk or two short of it); done once,
-    and only when there is a wait."""
+    what the codemod reads declined files with (None: they are left to ``settle``)."""
 
-    def __init__(self, workers: int, settings: Settings | None = None,
-                 idle: Callable[[], None] | None = None) -> None:
+    def __init__(self, workers: int, settings: Settings | None = None) -> None:
         self.workers = workers
         self.settings = settings
-        self.idle = idle
         self._pool: ProcessPoolExecutor | None = None
         self._scenes: list[tuple[Path, Future[tuple[str, Scene] | None]]] = []
         self._waiting: list[Path] = []
@@ -262,10 +256,6 @@ class ReadingPool:
             if not futures[start].cancel():  # worker has started them: the share each
                 break  # does is what it gets through, whatever a chunk costs
             mine[start] = _read_files(items[start:start + size], compounds, here, statically)
-        if self.idle is not None and not all(futures[start].done() for start in starts
-                                             if start not in mine):
-            idle, self.idle = self.idle, None
-            idle()
         theirs: dict[int, list[Reading]] = {}
         caught_up: dict[str, FileResult] = {}
         for start in starts:

@@ -15,7 +15,6 @@ from process_log import log_calls, logged
 
 from ezmigrate.checking import reading_pool
 from ezmigrate.checking.pipeline import run_check
-from ezmigrate.files.discover import Candidate, discover
 from ezmigrate.project import runner
 from ezmigrate.verify.pool import PoolConfig
 from ezskiros_runtime.ontology.index import bundled_ontology_path
@@ -126,40 +125,3 @@ def test_too_few_files_are_read_in_the_main_process(tmp_path: Path) -> None:
         assert pool._pool is None  # nothing to share: nothing forked
     finally:
         pool.close()
-
-
-def test_the_main_process_works_while_it_waits_for_the_workers_last_chunk(
-        tree: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    """``idle`` runs in the main process while a worker still reads: here the worker holds
-    its first file until ``idle`` releases it through a pipe (it would wait for ever
-    otherwise), and the readings are those of the main process alone."""
-    items: list[tuple[Candidate, bytes, bool | None]] = [
-        (c, c.path.read_bytes(), None) for c in discover([tree])[0]]
-    alone = reading_pool.ReadingPool(1).read_files(items, compounds=True)
-    release_read, release_write = os.pipe()
-    main = os.getpid()
-    real = reading_pool.file_facts
-    held: list[int] = []
-
-    def holding(candidate: Candidate, *rest: object) -> object:
-        if os.getpid() != main and not held:  # the worker's first file
-            held.append(1)
-            os.read(release_read, 1)
-        return real(candidate, *rest)  # type: ignore[arg-type]
-
-    monkeypatch.setattr(reading_pool, "file_facts", holding)
-    idled: list[int] = []
-
-    def idle() -> None:
-        idled.append(os.getpid())
-        os.write(release_write, b"x")
-
-    pool = reading_pool.ReadingPool(2, idle=idle)
-    try:
-        shared = pool.read_files(items, compounds=True)
-    finally:
-        pool.close()
-        os.close(release_read)
-        os.close(release_write)
-    assert idled == [main]
-    assert [facts for facts, _ in shared] == [facts for facts, _ in alone]
