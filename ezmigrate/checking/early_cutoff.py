@@ -46,7 +46,7 @@ MOST_CHANGED = 8
 """More changed files than this: the whole run is cheaper than reading them one by one."""
 BYTE_MARKERS: tuple[bytes, ...] = (*SCAN_WHEN, RUNTIME_MARKER)
 """Text a later stage looks for in a file's bytes rather than in its facts (the skill index,
-the repository scan, the judgements, the compound pass). ``tests/checking/test_early_cutoff``
+the repository scan, the judgements, the compound pass). ``tests/project/test_early_cutoff``
 keeps this list whole."""
 PATTERNS = (ROS2_IMPORT, ROS1_IMPORT)
 """Patterns a later stage matches on a file's bytes (``analysis.ros_package_of``)."""
@@ -94,6 +94,9 @@ def lines_digest(text: str, lines: Iterable[int]) -> str:
 def remember(run: CheckRun) -> None:
     """Keep what the next run needs to cut off early: each Python file's bytes, artifact and
     finding lines, and the key of this run's outcome (kept by ``keep``)."""
+    from ..files.prefilter import by_text
+    from .read_files import never_parsed
+
     cache, folder = run.facts_cache, run.settings.cache_dir
     if run.cutoff_key is None or run.kept_key is None or cache is None or folder is None:
         return
@@ -103,9 +106,6 @@ def remember(run: CheckRun) -> None:
     lines: dict[str, set[int]] = {}
     for found in run.outcome.diagnostics:
         lines.setdefault(found.path, set()).add(found.line)
-    from ..files.prefilter import by_text
-    from .read_files import never_parsed
-
     files: dict[str, list[str]] = {}
     for candidate, data in run.read:
         path = str(candidate.path)
