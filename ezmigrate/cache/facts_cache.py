@@ -47,7 +47,10 @@ class FactsCache:
         self._added: dict[str, Any] = {}
         """Entries this run made: ``save`` writes them."""
         self._digests: dict[str, str] = {}
-        """The SHA-256 of each entry's text, read or written (``digest``)."""
+        """The SHA-256 of each entry's text, read or made (``digest``)."""
+        self._texts: dict[str, bytes] = {}
+        """The text of an entry this run made, once ``digest`` encoded it (``save``
+        writes it as it is)."""
 
     @classmethod
     def open(cls, folder: Path) -> FactsCache | None:
@@ -85,18 +88,16 @@ class FactsCache:
         return found
 
     def digest(self, key: str) -> str | None:
-        """The SHA-256 of ``key``'s entry as this run read or wrote it: the same reading
+        """The SHA-256 of ``key``'s entry as this run read or made it: the same reading
         gives the same text (``facts_codec`` writes sets in one order), so two files whose
         readings are equal have equal digests (``checking.early_cutoff``); None for an
-        entry this run neither read nor wrote."""
+        entry this run neither read nor made, or one that holds something not of ours."""
+        if key not in self._digests and key in self._added:
+            text = _entry_text(self._added[key])
+            if text is not None:
+                self._texts[key] = text
+                self._digests[key] = hashlib.sha256(text).hexdigest()
         return self._digests.get(key)
-
-    def text_of(self, value: Any) -> bytes | None:
-        """The entry text ``value`` is kept as (None: it holds something not of ours)."""
-        try:
-            return json.dumps(encode(value), separators=(",", ":")).encode("utf-8")
-        except (CodecError, RecursionError):
-            return None
 
     def put(self, key: str, value: Any) -> None:
         """Keep ``value`` as ``key``'s entry (a key names the bytes its value was read
@@ -107,12 +108,18 @@ class FactsCache:
     def save(self) -> None:
         """Write the entries this run made; one that holds something not of ours
         (``CodecError``) is not kept."""
-        for key, value in self._added.items():
-            payload = self.text_of(value)
-            if payload is not None:
-                self._digests[key] = hashlib.sha256(payload).hexdigest()
-                self._store.write(self.entry(key), payload)
+        for key in self._added:
+            if self.digest(key) is not None:  # encoded once, here or for the digest
+                self._store.write(self.entry(key), self._texts.pop(key))
         self._added.clear()
+
+
+def _entry_text(value: Any) -> bytes | None:
+    """The entry text ``value`` is kept as (None: it holds something not of ours)."""
+    try:
+        return json.dumps(encode(value), separators=(",", ":")).encode("utf-8")
+    except (CodecError, RecursionError):
+        return None
 
 
 def seed_scenes(cache: FactsCache, paths: Iterable[Path]) -> set[Path]:

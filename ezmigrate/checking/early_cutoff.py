@@ -94,9 +94,6 @@ def lines_digest(text: str, lines: Iterable[int]) -> str:
 def remember(run: CheckRun) -> None:
     """Keep what the next run needs to cut off early: each Python file's bytes, artifact and
     finding lines, and the key of this run's outcome (kept by ``keep``)."""
-    from ..files.prefilter import by_text
-    from .read_files import never_parsed
-
     cache, folder = run.facts_cache, run.settings.cache_dir
     if run.cutoff_key is None or run.kept_key is None or cache is None or folder is None:
         return
@@ -109,10 +106,9 @@ def remember(run: CheckRun) -> None:
     files: dict[str, list[str]] = {}
     for candidate, data in run.read:
         path = str(candidate.path)
-        key = run.fact_keys.get(path)
+        key = run.fact_keys.get(path)  # None: the read stage did not parse it
         facts = None if never_cut_off(data, path, run.shared) \
-            else cache.digest(key) if key is not None \
-            else UNPARSED if never_parsed(data, by_text(data), True) else None
+            else cache.digest(key) if key is not None else UNPARSED
         files[path] = [_sha(data), signature(data, facts, path in run.star_sources),
                        lines_digest(text_of(data), lines.get(path, ()))]
     payload = {"outcome": run.kept_key, "files": files, "shared": sorted(run.shared),
@@ -136,7 +132,8 @@ def recall(run: CheckRun, data: dict[str, bytes]) -> CheckOutcome | None:
                if _sha(data[str(c.path)]) != memo["files"][str(c.path)][0]]
     if not changed or len(changed) > MOST_CHANGED:
         return None
-    kept = OutcomeCache(settings.cache_dir).get(str(memo["outcome"]))
+    outcomes = OutcomeCache(settings.cache_dir)
+    kept = outcomes.get(str(memo["outcome"]))
     cache = FactsCache.open(settings.cache_dir)
     if kept is None or cache is None:
         return None
@@ -154,8 +151,8 @@ def recall(run: CheckRun, data: dict[str, bytes]) -> CheckOutcome | None:
         memo["files"][str(candidate.path)][0] = _sha(data[str(candidate.path)])
     assert store is not None and run.kept_key is not None
     memo["outcome"] = run.kept_key
-    OutcomeCache(settings.cache_dir).put(run.kept_key, kept["files"], kept["skills"],
-                                         kept["notes"], kept["diagnostics"])
+    outcomes.put(run.kept_key, kept["files"], kept["skills"], kept["notes"],
+                 kept["diagnostics"])
     store.write(f"{MEMOS}/{run.cutoff_key}.json", json.dumps(memo).encode("utf-8"))
     return CheckOutcome(files=kept["files"], skills=kept["skills"],
                         diagnostics=kept["diagnostics"], notes=kept["notes"])
@@ -182,11 +179,11 @@ def _artifact(run: CheckRun, cache: FactsCache, candidate: Candidate, data: byte
     if facts is None:
         facts = file_facts(candidate, data, True, verdict, statically=True)
         cache.put(key, facts)
-    text = cache.text_of(facts)
+    digest = cache.digest(key)
     declined = isinstance(facts.static, Declined) and facts.settled is None
-    if text is None or facts.depends or declined:  # the codemod reads its bytes
+    if digest is None or facts.depends or declined:  # the codemod reads its bytes
         return signature(data, None)
-    return signature(data, _sha(text), star_source)
+    return signature(data, digest, star_source)
 
 
 def _memo(store: Store, key: str) -> dict[str, Any] | None:

@@ -113,9 +113,7 @@ class _Worker:
     def wait_ready(self) -> None:
         ready = self.process.stdout.readline() if self.process.stdout else ""
         if '"ready"' not in ready:
-            with contextlib.suppress(OSError):
-                self.process.kill()
-            self.process.wait()
+            self.kill()
             self.errors.seek(0)
             said = self.errors.read().decode("utf-8", "replace").strip().splitlines()
             self.errors.close()
@@ -152,11 +150,10 @@ class _Worker:
 
     def kill(self) -> None:
         """End the worker now: one that never served (it runs no child), or one that did not
-        quit when told."""
+        quit when told. What it wrote to ``errors`` stays to be read."""
         with contextlib.suppress(OSError):
             self.process.kill()
         self.process.wait()
-        self.errors.close()
         for stream in (self.process.stdin, self.process.stdout):
             with contextlib.suppress(OSError):
                 if stream is not None:
