@@ -4,7 +4,8 @@ literal with the Python value rdflib gives it.
 A scene is read into ``Scene`` and nothing of rdflib is kept, so its terms need not be
 rdflib's either. rdflib takes a run 40 ms to import and builds each term through checks a
 saved scene never needs; the literals SkiROS2 saves (strings, language-tagged strings,
-integers, booleans, floats and doubles written as plain decimals) are read the same way by
+integers, booleans, floats and doubles written as decimals, with or without an exponent, as
+SkiROS2 saves a small pose value: ``-2.19e-06``) are read the same way by
 every rdflib the robots run (4.2.2, 6.1, 7): the value is Python's ``int``/``float`` of
 the text, and the text rdflib keeps is that value written back (``"1.50"`` is ``1.5``,
 ``"007"`` is ``7``). Those are made here (``plain_literal``); any other literal, and every
@@ -25,7 +26,7 @@ from ..ontology.naming import XSD
 IRI, BLANK, LITERAL = "iri", "blank", "literal"
 
 _INTEGER = re.compile(r"[+-]?[0-9]{1,18}")
-_DECIMAL = re.compile(r"[+-]?[0-9]{1,15}(?:\.[0-9]{1,17})?")
+_DECIMAL = re.compile(r"[+-]?[0-9]{1,15}(?:\.[0-9]{1,25})?(?:[eE][+-]?[0-9]{1,2})?")
 _INTEGERS = frozenset({XSD + "integer", XSD + "int"})
 _FLOATS = frozenset({XSD + "float", XSD + "double"})
 

@@ -113,7 +113,9 @@ def _lexical(chance: random.Random) -> str:
     digits = "".join(chance.choice("0123456789") for _ in range(chance.randint(1, 20)))
     shapes = [digits, "-" + digits, "+" + digits, "0" + digits,
               digits[:8] + "." + digits[8:], "." + digits, digits + ".", digits + "e3",
-              digits[:3] + "E-2", "true", "false", "TRUE", "1", "0", "yes", "", " 7", "7 ",
+              digits[:3] + "E-2", digits[:1] + "." + digits[1:] + "e-07",
+              "-" + digits[:1] + "." + digits[1:] + "e+12", digits[:2] + "e-99",
+              "true", "false", "TRUE", "1", "0", "yes", "", " 7", "7 ",
               "1_000", "nan", "inf", "-0", "-0.0", "0,35", "x", "Ä"]
     return chance.choice(shapes)
 
