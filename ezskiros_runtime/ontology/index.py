@@ -137,6 +137,7 @@ class OntologyIndex:
             self._namespace_prefix.setdefault(namespace, prefix)
         self._classes_by_local = _group_by_local_name(self.classes)
         self._properties_by_local = _group_by_local_name(self.properties)
+        self._below: dict[str, frozenset[str]] = {}
 
     # -- names ---------------------------------------------------------------------------
 
@@ -196,6 +197,15 @@ class OntologyIndex:
             if ns == namespace and local
         }
         return sorted(found)
+
+    def sub_properties(self, iri: str) -> frozenset[str]:
+        """``iri`` and every loaded property below it. Kept by the index: the world checks
+        ask it of the same few properties for each relation of each scene."""
+        found = self._below.get(iri)
+        if found is None:
+            found = self._below[iri] = frozenset(
+                {iri} | {p for p, info in self.properties.items() if iri in info.super_properties})
+        return found
 
     # -- classes -------------------------------------------------------------------------
 

@@ -243,7 +243,7 @@ class _Blocks:
         self.prefixes = prefixes
         self.lines = text.splitlines()
         self.blocks: dict[str, tuple[int, int]] = {}
-        self._expanded: dict[int, set[str | None]] = {}
+        self._firsts: dict[str, dict[str | None, int]] = {}
         starts: list[tuple[int, str]] = []
         for number, line in enumerate(self.lines, 1):
             if not line or line[0] in " \t#@" or line.upper().startswith(("PREFIX", "BASE")):
@@ -276,25 +276,23 @@ class _Blocks:
 
     def line(self, subject: str, obj: str | None, prop: str) -> int:
         """The first line of ``subject``'s block naming ``obj`` (else ``prop``)."""
-        first, last = self.blocks.get(subject, (0, -1))
+        firsts = self._firsts.get(subject)
+        if firsts is None:
+            firsts = self._firsts[subject] = self._index(subject)
         for wanted in (obj, prop):
-            if wanted is None:
-                continue
-            for number in range(first, last + 1):
-                if wanted in self._terms(number):
-                    return number
-        return first
+            if wanted is not None and wanted in firsts:
+                return firsts[wanted]
+        return self.start(subject)
 
-    def _terms(self, number: int) -> set[str | None]:
-        """The terms line ``number`` names, expanded; kept: a subject's block is searched
-        once for each of its statements."""
-        found = self._expanded.get(number)
-        if found is None:
-            found = self._expanded[number] = {
-                self.expand(t) for t in _TERM.findall(self.lines[number - 1])}
+    def _index(self, subject: str) -> dict[str | None, int]:
+        """Each term ``subject``'s block names, expanded, at the first line naming it: the
+        block is read once, not once for each of its statements."""
+        first, last = self.blocks.get(subject, (0, -1))
+        found: dict[str | None, int] = {}
+        for number in range(first, last + 1):
+            for term in _TERM.findall(self.lines[number - 1]):
+                found.setdefault(self.expand(term), number)
         return found
-
-
 
 
 def ontology_individuals(paths: list[str]) -> dict[str, list[str]]:

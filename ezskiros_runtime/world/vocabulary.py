@@ -31,10 +31,7 @@ BOOKKEEPING_PROPERTIES = frozenset(SKIROS + p for p in (
 
 def sub_properties(index: OntologyIndex | None, iri: str) -> frozenset[str]:
     """``iri`` and every loaded property below it."""
-    if index is None:
-        return frozenset((iri,))
-    return frozenset({iri} | {p for p, info in index.properties.items()
-                              if iri in info.super_properties})
+    return frozenset((iri,)) if index is None else index.sub_properties(iri)
 
 
 def spatial_properties(index: OntologyIndex | None) -> frozenset[str]:
