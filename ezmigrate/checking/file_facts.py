@@ -12,6 +12,7 @@ them from one run to the next.
 from __future__ import annotations
 
 import ast
+import functools
 import hashlib
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -199,8 +200,11 @@ def code_digest(path: str) -> str | None:
         return None
 
 
+@functools.lru_cache(maxsize=64)
 def code_digest_of(data: bytes) -> str:
-    """``code_digest`` of a module's bytes."""
+    """``code_digest`` of a module's bytes. Kept by content: the modules a lab star-imports
+    are imported by many of its files, each asking for their digest (``_depends``, and
+    ``still_read`` on every run that takes a kept reading)."""
     tree = parse(data)
     if tree is None:
         return "bytes:" + hashlib.sha256(data).hexdigest()

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import ast
 import builtins
+import functools
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -193,8 +194,10 @@ def _exports(path: str, seen: frozenset[str], read: list[str] | None = None
     if path in seen or len(seen) > 8:
         return None
     try:
-        tree = ast.parse(Path(path).read_bytes())
-    except (OSError, SyntaxError, ValueError, MemoryError, RecursionError):
+        tree = _exporting_tree(Path(path).read_bytes())
+    except OSError:
+        return None
+    if tree is None:
         return None
     for statement in tree.body:
         if isinstance(statement, ast.Assign) and any(
@@ -206,6 +209,17 @@ def _exports(path: str, seen: frozenset[str], read: list[str] | None = None
     names = module_names(tree, path, seen, read)
     return None if names is None else frozenset(
         n for n in names - set(dir(builtins)) if not n.startswith("_"))
+
+
+@functools.lru_cache(maxsize=32)
+def _exporting_tree(data: bytes) -> ast.Module | None:
+    """The syntax tree of a star-imported module, or None when ``ast`` cannot read it.
+    Kept by content (and only read): the modules a lab star-imports are imported by many
+    of its files."""
+    try:
+        return ast.parse(data)
+    except (SyntaxError, ValueError, MemoryError, RecursionError):
+        return None
 
 
 def _stored(node: ast.AST) -> set[str]:
