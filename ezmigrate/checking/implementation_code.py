@@ -26,13 +26,14 @@ from __future__ import annotations
 
 import ast
 import bisect
-from collections import deque
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from ezskiros_runtime.codes import code_for, rule_for
 from ezskiros_runtime.diagnostics import Finding
+
+from ..codemod.core.ast_walk import nodes, walk
 
 if TYPE_CHECKING:  # the compound library: not for ``IMPLEMENTATION`` alone
     from ezskiros_runtime.compound.library import SkillIndex
@@ -91,7 +92,7 @@ def module_facts(tree: ast.Module, data: bytes) -> ModuleFacts:
         uses: list[tuple[str, str, int]] = []
         properties: list[tuple[str, int]] = []
         strings: set[str] = set()
-        for node in _walk(stmt):
+        for node in walk(stmt):
             kind = type(node)
             if kind is ast.Constant:
                 if isinstance(node.value, str):  # type: ignore[attr-defined]
@@ -113,21 +114,6 @@ def module_facts(tree: ast.Module, data: bytes) -> ModuleFacts:
         classes.append(ImplementationClass(description, stmt.name, tuple(uses),
                                            tuple(properties), frozenset(strings)))
     return ModuleFacts(tuple(classes), frozenset(sets))
-
-
-def _walk(root: ast.AST) -> Iterator[ast.AST]:
-    """``ast.walk``, in its order (breadth first, fields in order), without its generator
-    per node: the implementation classes of a repository are most of what ``check`` walks."""
-    todo = deque([root])
-    while todo:
-        node = todo.popleft()
-        for name in node._fields:
-            value = getattr(node, name, None)
-            if isinstance(value, ast.AST):
-                todo.append(value)
-            elif isinstance(value, list):
-                todo.extend(item for item in value if isinstance(item, ast.AST))
-        yield node
 
 
 _SETTERS = (b"setProperty", b"PropCond")
@@ -160,7 +146,7 @@ def properties_set(trees: Iterable[ast.AST]) -> set[str]:
     ``getPropCond(..., "p:N", ...)`` conditions, which SkiROS2 sets on post-conditions)."""
     found: set[str] = set()
     for tree in trees:
-        for node in _walk(tree):
+        for node in nodes(tree):
             if type(node) is ast.Call:
                 _set_by(node, found)
     return found

@@ -39,6 +39,7 @@ from ezskiros_runtime.compound.trace import (
 from ezskiros_runtime.diagnostics import Finding
 
 from ..codemod.core.ast_names import ast_dotted_name
+from ..codemod.core.ast_walk import nodes, walk
 from ..lint.ezskiros_static import shape_of
 
 PROCESSORS = UPSTREAM_PROCESSORS | frozenset(ELSEWHERE)
@@ -224,7 +225,7 @@ def _exporting_tree(data: bytes) -> ast.Module | None:
 
 def _stored(node: ast.AST) -> set[str]:
     """The names a statement (or an expression) assigns, walrus included."""
-    return {n.id for n in ast.walk(node) if isinstance(n, ast.Name)
+    return {n.id for n in nodes(node) if isinstance(n, ast.Name)
             and isinstance(n.ctx, ast.Store)}
 
 
@@ -233,7 +234,7 @@ def _bound_in(function: ast.FunctionDef) -> frozenset[str]:
     args = function.args
     params = {a.arg for a in (*args.posonlyargs, *args.args, *args.kwonlyargs,
                               *(a for a in (args.vararg, args.kwarg) if a is not None))}
-    imported = {(a.asname or a.name).split(".")[0] for n in ast.walk(function)
+    imported = {(a.asname or a.name).split(".")[0] for n in nodes(function)
                 if isinstance(n, (ast.Import, ast.ImportFrom)) for a in n.names}
     return frozenset(params | imported | _stored(function))
 
@@ -297,7 +298,7 @@ def modified_params(tree: ast.Module) -> list[tuple[str, str, str | None, bool, 
                     and len(member.args.args) == 2 and description is not None):
                 continue
             me, wrapper = member.args.args[0].arg, member.args.args[1].arg
-            for call in ast.walk(member):
+            for call in walk(member):
                 if not (isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute)
                         and call.func.attr == "addParam" and call.args
                         and isinstance(call.func.value, ast.Name)
@@ -358,7 +359,7 @@ def _never_describes(method: ast.FunctionDef) -> bool:
     if not method.args.args:
         return False
     me = method.args.args[0].arg
-    for node in ast.walk(method):
+    for node in nodes(method):
         if isinstance(node, (ast.Raise, ast.Global, ast.Nonlocal, ast.Lambda)) or (
                 isinstance(node, ast.Attribute) and isinstance(node.ctx, (ast.Store, ast.Del))):
             return False
@@ -481,7 +482,7 @@ class _Reader:
         return found
 
     def _walk_loose(self, stmt: ast.stmt, found: list[Node | CallProblem]) -> None:
-        for call in ast.walk(stmt):
+        for call in walk(stmt):
             if not isinstance(call, ast.Call):
                 continue
             try:
@@ -690,7 +691,7 @@ def expand_findings(tree: ast.Module) -> dict[str, list[Finding]]:
         if not expand.args.args:
             continue
         me = expand.args.args[0].arg
-        for node in ast.walk(expand):
+        for node in walk(expand):
             if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
                     and node.func.attr == "skill" and isinstance(node.func.value, ast.Name)
                     and node.func.value.id == me):

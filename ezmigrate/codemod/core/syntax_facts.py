@@ -21,10 +21,11 @@ from __future__ import annotations
 
 import ast
 from collections import Counter
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from functools import cached_property
 
+from .ast_walk import nodes
 from .legacy_names import LegacyNames
 
 Span = tuple[int, int]
@@ -108,31 +109,6 @@ def _walk(tree: ast.AST, names: Counter[str], legacy: LegacyNames | None = None,
                 names.update(node.names)  # type: ignore[attr-defined]
             if bindings is not None and kind in _BINDERS:
                 note_binding(node, bindings)
-
-
-def nodes(tree: ast.AST) -> Iterator[ast.AST]:
-    """Every node under ``tree`` (``tree`` too), in no particular order: ``ast.walk``
-    without its generator of generators, and without the shared ``Load``/``Store``
-    context nodes no reader here asks for (a third of a module's nodes)."""
-    todo = [tree]
-    pop, push, extend = todo.pop, todo.append, todo.extend
-    fields = _NODE_FIELDS
-    while todo:
-        node = pop()
-        yield node
-        kind = type(node)
-        names = fields.get(kind)
-        if names is None:
-            names = fields[kind] = tuple(f for f in kind._fields if f != "ctx")
-        for name in names:
-            value = getattr(node, name, None)
-            if type(value) is list:
-                extend([item for item in value if isinstance(item, ast.AST)])
-            elif isinstance(value, ast.AST):
-                push(value)
-
-
-_NODE_FIELDS: dict[type, tuple[str, ...]] = {}
 
 
 def note_import(node: ast.AST, legacy: LegacyNames) -> None:
