@@ -255,20 +255,22 @@ def _property_class_clashes(declared: Sequence[tuple[Path, tuple[list[Triple], s
                             index: OntologyIndex) -> list[Finding]:
     """A property a repository file declares with the IRI of a class (its own, another
     file's, or the core's), at the property's declaration, naming the class's."""
-    class_at: dict[str, str] = {}
+    class_at: dict[str, Path] = {}  # the first file declaring each class
     for path, (_triples, classes, _properties) in declared:
         for cls in classes:
-            class_at.setdefault(cls, f"{path.name}:{_line_of(_text(path), cls)}")
+            class_at.setdefault(cls, path)
     found = []
     for path, (_triples, _classes, properties) in declared:
-        text = _text(path)
         for iri in sorted(properties):
-            if iri not in class_at and not index.is_class(iri):
+            home = class_at.get(iri)
+            if home is None and not index.is_class(iri):
                 continue
-            where = class_at.get(iri, "the loaded ontology")
+            where = f"{home.name}:{_line_of(_text(home), iri)}" if home is not None \
+                else "the loaded ontology"
             name = index.compact(iri)
             found.append(finding(
-                "ontology-property-is-class", str(path), _line_of(text, iri, declaring=True),
+                "ontology-property-is-class", str(path),
+                _line_of(_text(path), iri, declaring=True),
                 f"{name} is declared a property here and a class in {where}: SkiROS2 then "
                 f"answers for both under one IRI (elements typed {name} and values of the "
                 "property mix in the world model; SkiROS2 pull request #114)", iri,
@@ -298,6 +300,8 @@ def _line_of(text: str, iri: str, declaring: bool = False) -> int:
                          + re.escape(local) + "\"")
     first = 0
     for number, line in enumerate(text.splitlines(), start=1):
+        if local not in line:
+            continue  # (both patterns name it)
         if declaring and "Property" in line and subject.search(line):
             return number
         if named.search(line):
