@@ -18,10 +18,10 @@ read too.
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import hashlib
 import json
+import os
 import sys
 from collections.abc import Iterable
 from pathlib import Path
@@ -39,11 +39,15 @@ OUTCOMES = "outcomes"
 def code_digest() -> str:
     """A digest of this release's source (``ezmigrate`` and ``ezskiros_runtime``)."""
     digest = hashlib.sha256(__version__.encode())
-    root = Path(__file__).resolve().parents[2]
+    root = str(Path(__file__).resolve().parents[2])
     for package in ("ezmigrate", "ezskiros_runtime"):
-        for path in sorted((root / package).rglob("*.py")):
-            digest.update(path.relative_to(root).as_posix().encode() + b"\0")
-            digest.update(hashlib.sha256(path.read_bytes()).digest())
+        files = [os.path.join(folder, name)
+                 for folder, _, names in os.walk(os.path.join(root, package))
+                 for name in names if name.endswith(".py")]
+        for path in sorted(files):  # (every run reads them all: plain strings, no Path)
+            digest.update(path[len(root) + 1:].replace(os.sep, "/").encode() + b"\0")
+            with open(path, "rb") as file:
+                digest.update(hashlib.sha256(file.read()).digest())
     return digest.hexdigest()
 
 
@@ -102,6 +106,7 @@ class OutcomeCache:
         if self._store is None or digests is None:
             return
         payload = {"files": files, "skills": skills, "notes": notes, "read": digests,
-                   "diagnostics": [dataclasses.asdict(d) for d in diagnostics]}
+                   "diagnostics": [dict(vars(d)) for d in diagnostics]}  # (flat: asdict's
+        # deep copy of each field was most of a kept run's cost)
         self._store.write(f"{OUTCOMES}/{key}.json", json.dumps(payload).encode("utf-8"))
         self._store.prune()

@@ -44,7 +44,7 @@ def package_manifests(candidates: list[Candidate]) -> list[Path]:
                 manifest(parent) if parent != folder else None
         return found[folder]
 
-    folders = {os.path.realpath(c.path.parent) for c in candidates}
+    folders = {os.path.realpath(f) for f in {os.path.dirname(c.path) for c in candidates}}
     return sorted(Path(m) for m in {manifest(f) for f in folders} if m is not None)
 
 

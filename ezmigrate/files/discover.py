@@ -264,10 +264,9 @@ def _walk(top: Path, roots: list[str], notes: list[str],
     our temporary files into ``stale`` when it is given; folders ``vendored`` says are
     SkiROS2's own are not entered."""
     seen: set[str] = set()
-    stack = [top]
+    stack = [(top, os.path.realpath(top))]  # each folder with its real path
     while stack:
-        folder = stack.pop()
-        real = os.path.realpath(folder)
+        folder, real = stack.pop()
         if real in seen:
             notes.append(f"{folder}: symlink loop, not followed again")
             continue
@@ -305,7 +304,7 @@ def _walk(top: Path, roots: list[str], notes: list[str],
                 notes.append(f"{Path(entry.path)}: skipped, its "
                              f"{_ros_ignored(entry.path)} keeps it out of the ROS build")
             elif is_dir and not (vendored is not None and vendored(Path(entry.path))):
-                stack.append(Path(entry.path))
+                stack.append((Path(entry.path), target))
             elif is_file:
                 yield Path(entry.path), target
 
