@@ -1,8 +1,8 @@
 """Walks of an ``ast`` tree for the fast readers, without ``ast.walk``'s generator per
-node and without the shared ``Load``/``Store`` context nodes no reader asks for (a third
-of a module's nodes). ``check`` walks most of a repository's code several times (the
-compound pass, the implementation checks, the codemod's facts), so these are its inner
-loops.
+node, and without looking into what is never a node of interest: the shared
+``Load``/``Store`` context nodes (a third of a module's nodes) and the fields that hold a
+name or a number. ``check`` walks most of a repository's code several times (the compound
+pass, the implementation checks, the codemod's facts), so these are its inner loops.
 """
 
 from __future__ import annotations
@@ -10,13 +10,18 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterator
 
+_NOT_NODES = frozenset({"ctx", "id", "attr", "arg", "name", "asname", "module", "level",
+                        "kind", "type_comment", "is_async", "conversion"})
+"""Fields no walk looks into: the context node, and fields that hold a name, a number or a
+string in every Python the tool runs on (3.8 to 3.13)."""
+
 _NODE_FIELDS: dict[type[ast.AST], tuple[str, ...]] = {}
 
 
 def _fields(kind: type[ast.AST]) -> tuple[str, ...]:
-    names = _NODE_FIELDS.get(kind)
-    if names is None:
-        names = _NODE_FIELDS[kind] = tuple(f for f in kind._fields if f != "ctx")
+    """The fields of ``kind`` that may hold nodes (a ``Constant``'s value never does)."""
+    names = _NODE_FIELDS[kind] = () if kind is ast.Constant else tuple(
+        f for f in kind._fields if f not in _NOT_NODES)
     return names
 
 
@@ -25,10 +30,13 @@ def nodes(tree: ast.AST) -> Iterator[ast.AST]:
     order: for a reader that collects a set or asks whether any node is so."""
     todo = [tree]
     pop, push, extend = todo.pop, todo.append, todo.extend
+    known = _NODE_FIELDS
     while todo:
         node = pop()
         yield node
-        for name in _fields(type(node)):
+        kind = type(node)
+        names = known.get(kind)
+        for name in names if names is not None else _fields(kind):
             value = getattr(node, name, None)
             if type(value) is list:
                 extend([item for item in value if isinstance(item, ast.AST)])
@@ -39,13 +47,16 @@ def nodes(tree: ast.AST) -> Iterator[ast.AST]:
 def walk(tree: ast.AST) -> Iterator[ast.AST]:
     """``ast.walk``'s nodes in ``ast.walk``'s order (breadth first, fields in order), but
     the context nodes: for a reader whose findings follow the code's order."""
+    known = _NODE_FIELDS
     level = [tree]
     while level:
         below: list[ast.AST] = []
         push, extend = below.append, below.extend
         for node in level:
             yield node
-            for name in _fields(type(node)):
+            kind = type(node)
+            names = known.get(kind)
+            for name in names if names is not None else _fields(kind):
                 value = getattr(node, name, None)
                 if type(value) is list:
                     extend([item for item in value if isinstance(item, ast.AST)])
