@@ -196,7 +196,8 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
     wanted = definers.of(set().union(*words.values()) if words else set())
     alone = readings.alone
     readings.shared |= definers.of(set().union(*(  # the siblings a reading may take
-        found for path, found in words.items() if _needs_siblings(alone.get(str(path))))))
+        _sibling_words(c, words[c.path], alone.get(str(c.path))) for c, _ in declined
+        if c.path in words)))
     siblings = [Migrated(c, d, None, r) for c, d, r in plain if str(c.path) in wanted]
     if cache is None:
         for item in settle([c for c, _ in declined], index, workers, read=siblings,
@@ -235,11 +236,21 @@ def _settled(declined: list[tuple[Candidate, bytes | None]],
         yield candidate, data or b"", found[candidate.path]
 
 
-def _needs_siblings(alone: tuple[bytes, FileResult] | None) -> bool:
-    """Whether the codemod's reading of a declined file may take its siblings' bytes: it
-    has no reading of its own yet (``alone``), or that reading derives from bases other
-    files define, or changes the file (the cross-file pass may migrate it again)."""
-    return alone is None or bool(alone[1].foreign_bases) or alone[1].changed
+def _sibling_words(candidate: Candidate, words: frozenset[bytes],
+                   alone: tuple[bytes, FileResult] | None) -> frozenset[bytes]:
+    """The module names of the siblings whose bytes the codemod's reading of a declined
+    file may take (``cross_file.resolve_cross_file``). With a reading of its own that
+    leaves the file as it is (``alone``), the modules its foreign bases come from: the
+    cross-file pass reads only the files whose module name is the last part of a base's
+    module, and none for a file without such bases (an EzSkiROS file deriving from
+    ``ezskiros_runtime``'s ``SkillDescription`` reads no sibling). Otherwise every word of
+    its imports (``words``): it has no reading yet, or the pass may migrate it again."""
+    from ..project.cross_file import target_module
+
+    if alone is None or alone[1].changed:
+        return words
+    return frozenset(target_module(candidate.relative, source).rpartition(".")[2].encode()
+                     for _, source in alone[1].foreign_bases)
 
 
 class _Definers:

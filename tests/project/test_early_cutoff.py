@@ -119,6 +119,66 @@ def test_a_star_imported_module_is_cut_off_only_while_its_code_stays(repo: Path)
     assert not cut and [d.code for d in found if "LabSequence" in d.message] == ["EZ317"]
 
 
+EZ_BASE = """\
+from ezskiros_runtime import SkillDescription
+from ezskiros_runtime.ontology import skiros
+
+
+class Hold(SkillDescription):
+    def description(self, Object: skiros.Product):
+        pass
+"""
+
+EZ_USER = """\
+from ezskiros_runtime import SkillDescription
+from ezskiros_runtime.ontology import skiros
+
+from .ez_base import Hold
+
+
+class Inspect(SkillDescription):
+    def description(self, Object: skiros.Product):
+        pass
+
+
+DEFAULTS = Hold
+"""
+
+LEGACY_DERIVED = """\
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+
+from .place import Place
+
+
+class PlaceGently(Place):
+    def createDescription(self):
+        self.addParam("Speed", 0.1, ParamTypes.Required)
+"""
+
+
+def test_a_module_only_ezskiros_files_import_is_cut_off(repo: Path) -> None:
+    """ez_user.py imports ez_base.py, but its classes derive from the runtime's
+    ``SkillDescription``: the codemod's cross-file pass reads no sibling for it, so a
+    comment in ez_base.py is cut off like any other."""
+    (repo / "pkg" / "ez_base.py").write_text(EZ_BASE, encoding="utf-8")
+    (repo / "pkg" / "ez_user.py").write_text(EZ_USER, encoding="utf-8")
+    first = _run(repo)
+    assert not first.done
+    _append(repo / "pkg" / "ez_base.py", "# a comment\n")
+    assert _cut_off(repo) == (True, first.diagnostics)
+
+
+def test_a_legacy_base_another_file_derives_from_runs_every_stage(repo: Path) -> None:
+    """place_gently.py derives from place.py's ``Place``: the cross-file pass reads
+    place.py's bytes for it, so even a comment there runs every stage."""
+    (repo / "pkg" / "place_gently.py").write_text(LEGACY_DERIVED, encoding="utf-8")
+    first = _run(repo)
+    assert not first.done and any(d.skill == "Place" for d in first.diagnostics)
+    _append(repo / "pkg" / "place.py", "# a comment\n")
+    assert not _cut_off(repo)[0]
+
+
 def test_a_memo_signed_by_another_key_is_not_taken(repo: Path) -> None:
     run = _run(repo)
     folder = project_folder(repo.parent / "user-cache", repo)
