@@ -166,15 +166,14 @@ def _artifact(run: CheckRun, cache: FactsCache, candidate: Candidate, data: byte
     from ..files.prefilter import by_text
     from ..lint.plain_reader import Declined
     from .file_facts import file_facts
-    from .read_files import facts_key, never_parsed
+    from .read_files import facts_key, never_parsed, static_against
 
     verdict, star_source = by_text(data), str(candidate.path) in memo["star_sources"]
     if never_cut_off(data, str(candidate.path), memo["shared"]):
         return signature(data, None)
     if never_parsed(data, verdict, True):
         return signature(data, UNPARSED, star_source)
-    fingerprint = run.index.fingerprint if run.index is not None else ""
-    key = facts_key(cache, candidate, data, True, fingerprint)
+    key = facts_key(cache, candidate, data, True, static_against(run))
     facts = cache.get(key)
     if facts is None:
         facts = file_facts(candidate, data, True, verdict, statically=True)

@@ -103,6 +103,21 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
     return readings
 
 
+def static_against(run: CheckRun) -> str | None:
+    """The fingerprint of the ontology the run reads EzSkiROS files statically against
+    (``read_facts``; None under ``--trace``, which loads them), made the active ontology
+    in this process: the static reading checks names against the active one, so a file
+    read before this (a changed file early cutoff reads) would be read against another."""
+    if run.settings.trace:
+        return None
+    if run.index is None:
+        return ""
+    from ezskiros_runtime.ontology import use_ontology
+
+    use_ontology(run.index)
+    return run.index.fingerprint
+
+
 def never_parsed(data: bytes, verdict: bool | None, compounds: bool) -> bool:
     """Whether the read stage leaves a file unparsed: the prefilter rules it out
     (``verdict``: ``by_text``), and it has nothing the compound pass reads."""
@@ -303,15 +318,8 @@ def run(run: CheckRun) -> None:
         if run.settings.progress else Progress(len(run.candidates), active=False)
     if run.reader is not None:
         run.reader.parse_scenes([s for s in run.world.scenes if s not in run.scenes_cached])
-    static_against = None
-    if not run.settings.trace:  # EzSkiROS files are read against the run's ontology
-        static_against = run.index.fingerprint if run.index is not None else ""
-        if run.index is not None:
-            from ezskiros_runtime.ontology import use_ontology
-
-            use_ontology(run.index)
     readings = read_facts(run.candidates, run.trees is not None, run.facts_cache, run.reader,
-                          run.settings.overlay, static_against)
+                          run.settings.overlay, static_against(run))
     run.fact_keys, run.star_sources = readings.keys, readings.star_sources
     run.shared = readings.shared  # (the declarations below add to it)
     for candidate, data, found in readings.files:

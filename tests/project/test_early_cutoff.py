@@ -169,6 +169,25 @@ def test_a_module_only_ezskiros_files_import_is_cut_off(repo: Path) -> None:
     assert _cut_off(repo) == (True, first.diagnostics)
 
 
+def test_a_changed_ezskiros_file_is_read_against_the_runs_ontology(
+        repo: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Early cutoff reads a changed EzSkiROS file before the read stage: against the run's
+    ontology, not whichever one the process had active (here, one without ``skiros``)."""
+    from ezskiros_runtime.ontology import active
+
+    typo = repo / "pkg" / "ez_typo.py"
+    typo.write_text(EZ_BASE.replace("skiros.Product", "skiros.Prodct"), encoding="utf-8")
+    first = _run(repo)
+    assert any("skiros:Product" in d.message for d in first.diagnostics)
+    other = tmp_path / "other.ttl"
+    other.write_text("@prefix lab: <http://example.org/lab#> .\n"
+                     "@prefix owl: <http://www.w3.org/2002/07/owl#> .\n"
+                     "lab:Thing a owl:Class .\n", encoding="utf-8")
+    monkeypatch.setattr(active, "_active", load_index([other]))  # (restored after)
+    _append(typo, "# a comment\n")
+    assert _cut_off(repo) == (True, first.diagnostics)
+
+
 def test_a_legacy_base_another_file_derives_from_runs_every_stage(repo: Path) -> None:
     """place_gently.py derives from place.py's ``Place``: the cross-file pass reads
     place.py's bytes for it, so even a comment there runs every stage."""
