@@ -51,13 +51,19 @@ def code_digest() -> str:
     return digest.hexdigest()
 
 
-def run_key(files: Iterable[tuple[str, bytes]], settings: dict[str, Any]) -> str:
-    """The key of a run: every file it reads (path and bytes), its settings and the code."""
+def run_key(files: Iterable[tuple[str, str]], settings: dict[str, Any]) -> str:
+    """The key of a run: every file it reads (path and ``content_digest``), its settings
+    and the code."""
     digest = hashlib.sha256(json.dumps({**settings, "code": code_digest(),
                                         "python": sys.version}, sort_keys=True).encode())
-    for path, data in sorted(files):
-        digest.update(path.encode() + b"\0" + hashlib.sha256(data).digest())
+    for path, content in sorted(files):
+        digest.update(f"{path}\0{content}\0".encode())
     return digest.hexdigest()
+
+
+def content_digest(data: bytes) -> str:
+    """The digest of a file's bytes, as the keys and early cutoff's memo name them."""
+    return hashlib.sha256(data).hexdigest()
 
 
 def read_all(paths: Iterable[Path]) -> list[tuple[str, bytes]] | None:

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from ezskiros_runtime.ontology.vendored import PACKAGE_XML
 
-from ..cache.outcome_cache import OutcomeCache, read_all, run_key
+from ..cache.outcome_cache import OutcomeCache, content_digest, read_all, run_key
 from ..files.discover import Candidate, Discovery, library_candidates, start_discovery
 from ..lint.scene_search import SCENE_SUFFIX, WorldRun, scene_files
 from .early_cutoff import recall
@@ -70,14 +70,15 @@ def _kept(run: CheckRun) -> None:
         "launch": sorted(launch.values.items()) if launch is not None else None,
         "compounds": settings.compounds, "trace": settings.trace,
         "paths": [str(p) for p in run.paths]}
-    run.kept_key = run_key(files, inputs)
+    digests = {path: content_digest(data) for path, data in files}  # each file hashed once
+    run.kept_key = run_key(digests.items(), inputs)
     python = {str(c.path) for c in run.candidates}  # the cutoff's key: all but their bytes
-    run.cutoff_key = run_key([(p, b"" if p in python else d) for p, d in files],
+    run.cutoff_key = run_key([(p, "" if p in python else d) for p, d in digests.items()],
                              {**inputs, "early_cutoff": True})
     hit = OutcomeCache(settings.cache_dir).get(run.kept_key)
     outcome = CheckOutcome(files=hit["files"], skills=hit["skills"],
                            diagnostics=hit["diagnostics"], notes=hit["notes"]) \
-        if hit is not None else recall(run, dict(files))
+        if hit is not None else recall(run, dict(files), digests)
     if outcome is None:
         return
     read = python | {str(p) for p in world.scenes}

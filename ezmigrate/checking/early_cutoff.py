@@ -27,14 +27,13 @@ import's module, a possible base of a file the codemod read: ``CheckRun.shared``
 
 from __future__ import annotations
 
-import hashlib
 import json
 from collections.abc import Iterable
 from typing import Any
 
 from ..cache.cache_folder import Store
 from ..cache.facts_cache import FactsCache
-from ..cache.outcome_cache import OutcomeCache
+from ..cache.outcome_cache import OutcomeCache, content_digest
 from ..compound.markers import ROS1_IMPORT, ROS2_IMPORT, SCAN_WHEN
 from ..files.discover import Candidate
 from ..project.cross_file import RUNTIME_MARKER
@@ -55,10 +54,6 @@ UNPARSED = "unparsed"
 the later stages take of it is its markers, and a star import's names (its code)."""
 
 
-def _sha(data: bytes) -> str:
-    return hashlib.sha256(data).hexdigest()
-
-
 def signature(data: bytes, facts: str | None, star_source: bool = False) -> str:
     """A file's artifact: the digest of its facts' text and what a stage reads of its bytes,
     the words of its imports (the codemod's cross-file pass picks the siblings it reads by
@@ -69,10 +64,10 @@ def signature(data: bytes, facts: str | None, star_source: bool = False) -> str:
     from .file_facts import code_digest_of
 
     if facts is None:
-        return f"bytes:{_sha(data)}"
+        return f"bytes:{content_digest(data)}"
     bits = "".join("1" if marker in data else "0" for marker in BYTE_MARKERS)
     bits += "".join("1" if pattern.search(data) else "0" for pattern in PATTERNS)
-    words = _sha(b"\0".join(sorted(import_words(data))))
+    words = content_digest(b"\0".join(sorted(import_words(data))))
     return f"{facts}:{bits}:{words}" + (f":{code_digest_of(data)}" if star_source else "")
 
 
@@ -88,7 +83,7 @@ def lines_digest(text: str, lines: Iterable[int]) -> str:
     ``Positions`` splits them), and of which of them the file has."""
     rows = text.splitlines()
     picked = [rows[n - 1] if 1 <= n <= len(rows) else "\0" for n in sorted(set(lines))]
-    return _sha("\n".join(picked).encode("utf-8", "surrogateescape"))
+    return content_digest("\n".join(picked).encode("utf-8", "surrogateescape"))
 
 
 def remember(run: CheckRun) -> None:
@@ -109,17 +104,19 @@ def remember(run: CheckRun) -> None:
         key = run.fact_keys.get(path)  # None: the read stage did not parse it
         facts = None if never_cut_off(data, path, run.shared) \
             else cache.digest(key) if key is not None else UNPARSED
-        files[path] = [_sha(data), signature(data, facts, path in run.star_sources),
+        files[path] = [content_digest(data), signature(data, facts, path in run.star_sources),
                        lines_digest(text_of(data), lines.get(path, ()))]
     payload = {"outcome": run.kept_key, "files": files, "shared": sorted(run.shared),
                "star_sources": sorted(run.star_sources)}
     store.write(f"{MEMOS}/{run.cutoff_key}.json", json.dumps(payload).encode("utf-8"))
 
 
-def recall(run: CheckRun, data: dict[str, bytes]) -> CheckOutcome | None:
+def recall(run: CheckRun, data: dict[str, bytes], digests: dict[str, str]
+           ) -> CheckOutcome | None:
     """The outcome of a run whose changed Python files (``data``: every input's bytes by
-    path) read as they did in the kept run (see the module doc); None when the run must go
-    through every stage. The changed files' facts go to the facts cache either way."""
+    path; ``digests``: their ``content_digest``) read as they did in the kept run (see the
+    module doc); None when the run must go through every stage. The changed files' facts
+    go to the facts cache either way."""
     settings = run.settings
     if run.cutoff_key is None or settings.cache_dir is None or settings.trace \
             or not settings.compounds:
@@ -129,7 +126,7 @@ def recall(run: CheckRun, data: dict[str, bytes]) -> CheckOutcome | None:
     if memo is None or set(memo["files"]) != {str(c.path) for c in run.candidates}:
         return None
     changed = [c for c in run.candidates
-               if _sha(data[str(c.path)]) != memo["files"][str(c.path)][0]]
+               if digests[str(c.path)] != memo["files"][str(c.path)][0]]
     if not changed or len(changed) > MOST_CHANGED:
         return None
     outcomes = OutcomeCache(settings.cache_dir)
@@ -148,7 +145,7 @@ def recall(run: CheckRun, data: dict[str, bytes]) -> CheckOutcome | None:
             return None
     cache.save()
     for candidate in changed:
-        memo["files"][str(candidate.path)][0] = _sha(data[str(candidate.path)])
+        memo["files"][str(candidate.path)][0] = digests[str(candidate.path)]
     assert store is not None and run.kept_key is not None
     memo["outcome"] = run.kept_key
     outcomes.put(run.kept_key, kept["files"], kept["skills"], kept["notes"],

@@ -99,7 +99,7 @@ def apply(diagnostics: Sequence[Diagnostic], sources: dict[str, str],
                 out.append(d)
             else:
                 used.add((d.line, hit))
-        if UNUSED not in codes:
+        if UNUSED not in codes or not comments:
             continue
         positions = Positions(source)
         for line, listed in comments.items():
