@@ -31,6 +31,7 @@ from typing import Any
 from ezskiros_runtime.diagnostics import DescriptionError, Finding, class_error
 from ezskiros_runtime.legacy.errors import ModuleLoadError
 
+from ..codemod.core.ast_walk import walk
 from ..verify.protocol import LoadOutcome
 
 RUNTIME = "ezskiros_runtime"
@@ -695,7 +696,7 @@ def _with_defaults(arguments: ast.arguments) -> list[tuple[ast.arg, ast.expr | N
 
 def _bound_names(node: ast.stmt) -> Iterator[str]:
     """The names a statement that is not read may bind at module level."""
-    for child in ast.walk(node):
+    for child in walk(node):
         if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
             yield child.name
         elif isinstance(child, ast.Name) and isinstance(child.ctx, ast.Store):
@@ -705,7 +706,7 @@ def _bound_names(node: ast.stmt) -> Iterator[str]:
 
 
 def _target_names(target: ast.expr) -> Iterator[str]:
-    for child in ast.walk(target):
+    for child in walk(target):
         if isinstance(child, ast.Name):
             yield child.id
 

@@ -24,6 +24,7 @@ import re
 from dataclasses import dataclass
 
 from ..codemod.core.ast_names import ast_dotted_name
+from ..codemod.core.ast_walk import walk
 from ..codemod.core.classes import ast_foreign_bases
 from ..codemod.core.context import fork_keyword, not_a_string
 from ..codemod.core.declared import static_description
@@ -111,7 +112,7 @@ def read_plain(data: bytes, path: str, tree: ast.Module | None = None) -> FileRe
 def _legacy_names(tree: ast.Module, data: bytes) -> LegacyNames:
     """The codemod's ``LegacyNames``, filled from ``ast`` imports (nested ones included)."""
     names = LegacyNames()
-    for node in ast.walk(tree) if _NESTED_LEGACY_IMPORT.search(data) else iter(tree.body):
+    for node in walk(tree) if _NESTED_LEGACY_IMPORT.search(data) else iter(tree.body):
         note_import(node, names)
     return names
 
@@ -158,7 +159,7 @@ class _Constants:
 
     def _collect(self) -> dict[str, Literal]:
         bound: dict[str, int] = {}
-        for node in ast.walk(self.tree):
+        for node in walk(self.tree):
             note_binding(node, bound)
         lines = [(n.lineno, n.end_lineno or n.lineno) for n in self.tree.body]
         found: dict[str, Literal] = {}

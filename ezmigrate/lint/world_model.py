@@ -31,6 +31,7 @@ from ezskiros_runtime.world.scene import Scene, SceneError, read_scene
 from ezskiros_runtime.world.scene_checks import check_scene, unreadable
 from ezskiros_runtime.world.vocabulary import SingleValued, single_valued
 
+from ..codemod.core.ast_walk import walk
 from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..report.static_facts import StaticDescription
@@ -201,10 +202,10 @@ def post_lines(tree: ast.Module, source: str) -> PostLines:
         return {}
     lines = source.splitlines()
     found: PostLines = {}
-    for node in ast.walk(tree):
+    for node in walk(tree):
         if not isinstance(node, ast.ClassDef):
             continue
-        for stmt in ast.walk(node):
+        for stmt in walk(node):
             if isinstance(stmt, ast.AugAssign) and isinstance(stmt.target, ast.Attribute) \
                     and stmt.target.attr == "post_conditions":
                 found.setdefault(node.name, []).append((stmt.lineno,
