@@ -31,7 +31,7 @@ from ezskiros_runtime.world.scene import Scene, SceneError, read_scene
 from ezskiros_runtime.world.scene_checks import check_scene, unreadable
 from ezskiros_runtime.world.vocabulary import SingleValued, single_valued
 
-from ..codemod.core.ast_walk import walk
+from ..codemod.core.ast_walk import walk_lines
 from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..report.static_facts import StaticDescription
@@ -201,11 +201,12 @@ def post_lines(tree: ast.Module, source: str) -> PostLines:
     if "post_conditions" not in source:
         return {}
     lines = source.splitlines()
-    found: PostLines = {}
-    for node in walk(tree):
+    naming = [n for n, text in enumerate(lines, start=1) if "post_conditions" in text]
+    found: PostLines = {}  # (a class or statement spanning no line naming it adds none)
+    for node in walk_lines(tree, naming):
         if not isinstance(node, ast.ClassDef):
             continue
-        for stmt in walk(node):
+        for stmt in walk_lines(node, naming):
             if isinstance(stmt, ast.AugAssign) and isinstance(stmt.target, ast.Attribute) \
                     and stmt.target.attr == "post_conditions":
                 found.setdefault(node.name, []).append((stmt.lineno,

@@ -8,7 +8,8 @@ pass, the implementation checks, the codemod's facts), so these are its inner lo
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterator
+import bisect
+from collections.abc import Iterator, Sequence
 
 _NOT_NODES = frozenset({"ctx", "id", "attr", "arg", "name", "asname", "module", "level",
                         "kind", "type_comment", "is_async", "conversion"})
@@ -60,6 +61,36 @@ def walk(tree: ast.AST) -> Iterator[ast.AST]:
                 value = getattr(node, name, None)
                 if type(value) is list:
                     extend([item for item in value if isinstance(item, ast.AST)])
+                elif isinstance(value, ast.AST):
+                    push(value)
+        level = below
+
+
+def walk_lines(tree: ast.AST, lines: Sequence[int]) -> Iterator[ast.AST]:
+    """``walk`` of what may stand on ``lines`` (sorted, 1-based): a node whose span holds
+    none of them is neither given nor entered (nor anything in it). For a reader that
+    looks for what a word on a line names (``self.post_conditions += ...``): most of a
+    module holds no such line and is not walked."""
+    known = _NODE_FIELDS
+    level = [tree]
+    while level:
+        below: list[ast.AST] = []
+        push = below.append
+        for node in level:
+            first = getattr(node, "lineno", None)
+            if first is not None:
+                at = bisect.bisect_left(lines, first)
+                if at == len(lines) or lines[at] > (getattr(node, "end_lineno", None) or first):
+                    continue
+            yield node
+            kind = type(node)
+            names = known.get(kind)
+            for name in names if names is not None else _fields(kind):
+                value = getattr(node, name, None)
+                if type(value) is list:
+                    for item in value:
+                        if isinstance(item, ast.AST):
+                            push(item)
                 elif isinstance(value, ast.AST):
                     push(value)
         level = below
