@@ -25,13 +25,13 @@ import ast
 
 from ..codemod.core.ast_names import ast_dotted_name
 from ..codemod.core.classes import ast_foreign_bases, ast_positional_bases
-from ..codemod.core.syntax_facts import SyntaxFacts
+from ..codemod.core.syntax_facts import legacy_names
 from ..report.results import FileResult
 
 
 def read_ezskiros(tree: ast.Module, path: str) -> FileResult | None:
     """``migrate``'s result for the module (see the module doc), or None."""
-    legacy = SyntaxFacts.of(tree).legacy
+    legacy = legacy_names(tree)
     classes = [node for node in tree.body if isinstance(node, ast.ClassDef)]
     local = {node.name for node in classes}
     for node in classes:

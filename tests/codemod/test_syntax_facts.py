@@ -14,7 +14,7 @@ import libcst as cst
 import pytest
 
 from ezmigrate.codemod.core.cst_facts import facts_of
-from ezmigrate.codemod.core.syntax_facts import SyntaxFacts
+from ezmigrate.codemod.core.syntax_facts import SyntaxFacts, legacy_names
 from ezmigrate.codemod.migrate import migrate
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
@@ -134,3 +134,39 @@ def test_only_references_to_a_name_count_as_its_uses() -> None:
                 "Point": 1}
     assert dict(fast.names) == expected
     assert {n: c for n, c in slow.names.items() if n not in CONSTANTS} == expected
+
+
+NESTED_IMPORTS = """\
+import os
+
+try:
+    from skiros2_common.core.abstract_skill import SkillDescription as Old
+except ImportError:
+    from skiros2_common.core.abstract_skill import SkillDescription
+else:
+    import skiros2_common.core.params as params
+
+
+def later():
+    from skiros2_common.core.world_element import Element as Old
+    if True:
+        import skiros2_common.core.params
+
+
+class Holder:
+    def method(self):
+        with open("x") as handle:
+            from skiros2_common.core.abstract_skill import SkillDescription as Late
+"""
+
+
+def test_legacy_names_walks_the_statements_to_the_same_names_in_the_same_order() -> None:
+    """``legacy_names`` (the EzSkiROS reader's) against ``SyntaxFacts.of``'s, which walks
+    every node: every fixture, and imports in every kind of block, one alias bound twice."""
+    for tree in [*(ast.parse(path.read_bytes()) for path in FILES), ast.parse(NESTED_IMPORTS)]:
+        ours, theirs = legacy_names(tree), SyntaxFacts.of(tree).legacy
+        assert list(ours.symbols.items()) == list(theirs.symbols.items())
+        assert list(ours.modules.items()) == list(theirs.modules.items())
+    nested = legacy_names(ast.parse(NESTED_IMPORTS))
+    assert {"Old", "SkillDescription", "Late"} <= set(nested.symbols)
+    assert "params" in nested.modules

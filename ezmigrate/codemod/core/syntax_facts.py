@@ -84,6 +84,28 @@ class SyntaxFacts:
         return facts
 
 
+_BODIES = frozenset({"body", "handlers", "orelse", "finalbody", "cases"})
+"""The fields that hold statements (an ``except``'s and a ``case``'s ``body`` too)."""
+
+
+def legacy_names(tree: ast.Module) -> LegacyNames:
+    """``SyntaxFacts.of(tree).legacy`` alone, walking the statements only (imports are
+    statements), in the order ``nodes`` meets them: the EzSkiROS reader needs no more."""
+    legacy = LegacyNames()
+    todo: list[ast.AST] = [tree]
+    while todo:
+        node = todo.pop()
+        if type(node) is ast.Import or type(node) is ast.ImportFrom:
+            note_import(node, legacy)
+            continue
+        for name in node._fields:
+            if name in _BODIES:
+                value = getattr(node, name, None)
+                if type(value) is list:
+                    todo.extend(value)
+    return legacy
+
+
 def count_names(nodes: Iterable[ast.AST]) -> Counter[str]:
     """``SyntaxFacts.names`` of some subtrees (what a rewrite removes)."""
     found: Counter[str] = Counter()
