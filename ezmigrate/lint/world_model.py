@@ -31,7 +31,7 @@ from ezskiros_runtime.world.scene import Scene, SceneError, read_scene
 from ezskiros_runtime.world.scene_checks import check_scene, unreadable
 from ezskiros_runtime.world.vocabulary import SingleValued, single_valued
 
-from ..codemod.core.ast_walk import walk_lines
+from ..codemod.core.ast_walk import walk
 from ..report.once import once_per_cause
 from ..report.results import FileResult
 from ..report.static_facts import StaticDescription
@@ -203,10 +203,10 @@ def post_lines(tree: ast.Module, source: str) -> PostLines:
     lines = source.splitlines()
     naming = [n for n, text in enumerate(lines, start=1) if "post_conditions" in text]
     found: PostLines = {}  # (a class or statement spanning no line naming it adds none)
-    for node in walk_lines(tree, naming):
+    for node in walk(tree, naming):
         if not isinstance(node, ast.ClassDef):
             continue
-        for stmt in walk_lines(node, naming):
+        for stmt in walk(node, naming):
             if isinstance(stmt, ast.AugAssign) and isinstance(stmt.target, ast.Attribute) \
                     and stmt.target.attr == "post_conditions":
                 found.setdefault(node.name, []).append((stmt.lineno,

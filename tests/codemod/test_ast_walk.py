@@ -1,6 +1,6 @@
 """The fast readers' walks (``codemod/core/ast_walk``) against ``ast.walk``: the same
-nodes in the same order, less the context nodes; ``walk_lines`` less what spans none of
-its lines."""
+nodes in the same order, less the context nodes; a ``walk`` of some lines, less what spans
+none of them."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import ast
 import collections
 from pathlib import Path
 
-from ezmigrate.codemod.core.ast_walk import nodes, walk, walk_lines
+from ezmigrate.codemod.core.ast_walk import nodes, walk
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures"
 
@@ -46,7 +46,7 @@ def _spans(node: ast.AST, lines: list[int]) -> bool:
     return any(first <= line <= last for line in lines)
 
 
-def test_walk_lines_is_walk_pruned_at_what_spans_none_of_the_lines() -> None:
+def test_walk_of_lines_is_walk_pruned_at_what_spans_none_of_them() -> None:
     """``ast.walk``'s breadth-first order, where a node that spans none of the lines is
     dropped with everything below it (a node without a position spans them all)."""
     for tree in _modules():
@@ -60,5 +60,5 @@ def test_walk_lines_is_walk_pruned_at_what_spans_none_of_the_lines() -> None:
             if not isinstance(node, ast.expr_context) and _spans(node, lines):
                 expected.append(node)
                 todo.extend(ast.iter_child_nodes(node))
-        assert list(walk_lines(tree, lines)) == expected
+        assert list(walk(tree, lines)) == expected
         assert len(expected) < len(_plain(tree)) or not lines
