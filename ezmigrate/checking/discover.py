@@ -16,7 +16,6 @@ from ezskiros_runtime.ontology.vendored import PACKAGE_XML
 from ..cache.outcome_cache import OutcomeCache, content_digest, read_all, run_key
 from ..files.discover import Candidate, Discovery, library_candidates, start_discovery
 from ..lint.scene_search import SCENE_SUFFIX, WorldRun, scene_files
-from .early_cutoff import recall
 from .launch import with_init_scene
 from .run import CheckOutcome, CheckRun, text_of
 
@@ -76,6 +75,8 @@ def _kept(run: CheckRun) -> None:
     run.cutoff_key = run_key([(p, "" if p in python else d) for p, d in digests.items()],
                              {**inputs, "early_cutoff": True})
     hit = OutcomeCache(settings.cache_dir).get(run.kept_key)
+    if hit is None:  # (a run the cache answers whole never imports the cutoff's readers)
+        from .early_cutoff import recall
     outcome = CheckOutcome(files=hit["files"], skills=hit["skills"],
                            diagnostics=hit["diagnostics"], notes=hit["notes"]) \
         if hit is not None else recall(run, dict(files), digests)

@@ -8,11 +8,12 @@ judgements → keep. ``docs/architecture.md`` walks it. A stage that answers the
 
 from __future__ import annotations
 
+import importlib
 from collections.abc import Iterable
 from pathlib import Path
+from types import ModuleType
 from typing import TYPE_CHECKING
 
-from . import compound, discover, judgements, keep, per_file, read_files, skill_index, world
 from .implementation_code import IMPLEMENTATION
 from .run import CheckOutcome, CheckRun, CheckSettings
 from .uninferable import UNINFERABLE, UNKNOWN
@@ -22,8 +23,15 @@ if TYPE_CHECKING:
 
     from ..verify.pool_config import PoolConfig
 
-STAGES = (discover, read_files, per_file, skill_index, compound, world, judgements, keep)
-"""The stages, in the order a run passes through them."""
+STAGES = ("discover", "read_files", "per_file", "skill_index", "compound", "world",
+          "judgements", "keep")
+"""The stages' modules, in the order a run passes through them: each imported when the
+run reaches it (a run the cache answers ends after the first)."""
+
+
+def stage(name: str) -> ModuleType:
+    """The stage module ``name`` (of ``STAGES``)."""
+    return importlib.import_module(f"{__package__}.{name}")
 
 
 def run_check(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
@@ -41,8 +49,8 @@ def check_run(paths: list[Path], index: OntologyIndex | None, pool: PoolConfig,
     run = CheckRun(list(paths), index, pool, settings or CheckSettings())
     try:
         with frozen_heap():
-            for stage in STAGES:
-                stage.run(run)
+            for name in STAGES:
+                stage(name).run(run)
                 if run.done:
                     break
     finally:

@@ -27,19 +27,7 @@ from ..files.paths import from_repository, in_report, scrub
 from ..files.paths import shown as shown_path
 from ..project import interrupt
 from ..project.exit_codes import EXIT_ATTENTION, EXIT_ERROR, EXIT_OK
-from ..project.target import robot_python, target_for, verified_with
-from ..report.diffs import unified_diff
-from ..report.reports import (
-    MarkdownOptions,
-    Summary,
-    json_report,
-    markdown_report,
-    newer_python_lines,
-    relaxed,
-)
-from ..report.results import FileResult
-from ..report.written_lines import as_written, written_diff
-from ..verify.interpreters import never_search, version_of
+from ..verify.interpreters import never_search
 from .arguments import CheckArguments, RewriteArguments, VerifyArguments
 from .config import ConfigError, load_project_config
 from .options import CommandLine, Options
@@ -75,20 +63,6 @@ def _fail(message: str, debug: bool) -> NoReturn:
     else:
         click.echo("ezmigrate: rerun with --debug for details", err=True)
     sys.exit(EXIT_ERROR)
-
-
-def _said(message: str, debug: bool) -> str:
-    """``_short``, printable (``output_formats.printable``): a path inside the message
-    starts no line. ``--debug`` prints a traceback whole, as Python wrote it."""
-    return _short(message, debug) if debug else printable(_short(message, debug))
-
-
-def _short(message: str, debug: bool) -> str:
-    """A message for stderr: its first line, unless ``--debug`` asks for all of it."""
-    lines = message.splitlines() or [""]
-    if debug or len(lines) == 1:
-        return message
-    return f"{lines[0].rstrip(':')} (rerun with --debug for details)"
 
 
 class _Main(click.Group):
@@ -189,25 +163,6 @@ def _report_path(path: Path | None) -> Path | None:
 REPORT: Any = report_option(_report_path)
 
 
-def _write_report(path: Path, results: list[FileResult], options: MarkdownOptions) -> None:
-    markdown = path.suffix.lower() == ".md"
-    text = scrub(markdown_report(results, options) if markdown
-                 else json_report(results, options=options))  # no path of this machine
-    # a file name that is not valid UTF-8 reaches us as lone surrogates (caf\udce9.py), which
-    # UTF-8 cannot encode: written as the text \udce9, which in JSON is the escape of that
-    # very surrogate (json.load and os.fsencode give back the file's real bytes)
-    text = text.encode("utf-8", "backslashreplace").decode("utf-8")
-    if str(path) == "-":
-        click.echo(text, nl=False)
-        return
-    try:
-        path.write_text(text, encoding="utf-8")
-    except OSError as error:
-        click.echo(f"ezmigrate: error: cannot write the report {printable(str(path))}: "
-                   f"{error.strerror or error}", err=True)
-        sys.exit(EXIT_ERROR)
-
-
 @click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, "-V", "--version", prog_name="ezmigrate")
 def main() -> None:
@@ -255,6 +210,10 @@ def rewrite(**given: Any) -> None:
     if args.reads_stdin:
         _rewrite_stdin(args, start, options)
     from ..project.session import RewriteOptions, run_rewrite  # heavy (libcst): after the handlers
+    from ..project.target import robot_python, target_for, verified_with
+    from ..report.reports import MarkdownOptions, newer_python_lines
+    from ..verify.interpreters import version_of
+    from .rewrite_output import finish, print_result, results_as_written, show_manifests
 
     index, ontology_files, used = _load_index(args.ontology, start, args.paths, options)
     robot = target_for(args.paths, options.target_version,
@@ -276,16 +235,16 @@ def rewrite(**given: Any) -> None:
     for note in outcome.notes:
         click.echo(f"ezmigrate: {printable(note)}", err=True)
     # earlier runs' descriptions count too: stderr and the report say one count of the tree
-    results = _as_written(outcome.migrated, whole_tree(outcome.migrated))
+    results = results_as_written(outcome.migrated, whole_tree(outcome.migrated))
     for item, result in zip(outcome.migrated, results, strict=True):  # unchanged: bytes stay
         if result.error or result.changed or any(
                 s.status in ("skipped", "failed") for s in result.skills):  # else nothing to say
-            _print_result(shown_path(item.candidate.path),
+            print_result(shown_path(item.candidate.path),
                           from_repository(item.candidate.path, item.candidate.relative),
                           item.original if result.changed else b"", result, args)
     for refused in outcome.refused:
         click.echo(f"ezmigrate: {printable(refused)}", err=True)
-    declared = _show_manifests(outcome, request, args.color)
+    declared = show_manifests(outcome, request, args.color)
     newer = newer_python_lines(results, python, version_of(python)) if args.verify else []
     for line in newer:
         click.echo(f"ezmigrate: {printable(line)}", err=True)
@@ -301,7 +260,7 @@ def rewrite(**given: Any) -> None:
             CheckSettings(exclude=options.exclude, skill_libraries=options.skill_libraries),
             args.paths)
         scenes = scene_report(args.paths, options.exclude, index)
-    _finish(args, results, outcome.refused,
+    finish(args, results, outcome.refused,
             MarkdownOptions(args.verify, args.ignore_order, args.ignore_labels, ontology=used,
                             compounds=compounds, verifier=verifier, scenes=scenes,
                             notes=[*newer, *declared]),
@@ -312,7 +271,10 @@ def _rewrite_stdin(args: RewriteArguments, start: Path, options: Options) -> NoR
     """``rewrite -``: stdin's file migrated (and verified) to stdout, whole whatever
     happened, problems and the summary on stderr as for a file."""
     from ..project.stdin import rewrite_stdin, stdin_roots
+    from ..report.reports import MarkdownOptions
+    from ..report.written_lines import as_written
     from ..verify.verdicts import Comparison
+    from .rewrite_output import finish, print_result
 
     index, ontology_files, used = _load_index(args.ontology, start,
                                               stdin_roots(args.stdin_filename), options)
@@ -321,23 +283,12 @@ def _rewrite_stdin(args: RewriteArguments, start: Path, options: Options) -> NoR
                            Comparison(args.ignore_order, args.ignore_labels) if args.verify
                            else None, args.stdin_filename)
     shown = str(args.stdin_filename) if args.stdin_filename else "-"
-    _print_result(shown, shown, data, result, args)
+    print_result(shown, shown, data, result, args)
     if args.writes:  # whatever happened, stdout gets a whole file
         new = result.new_source
         sys.stdout.buffer.write(new if isinstance(new, bytes) else data)
-    _finish(args, [as_written(replace(result, path=in_report(result.path)), data)], [],
+    finish(args, [as_written(replace(result, path=in_report(result.path)), data)], [],
             MarkdownOptions(args.verify, args.ignore_order, args.ignore_labels, ontology=used))
-
-
-def _as_written(migrated: Sequence[Any],
-                results: Sequence[FileResult] | None = None) -> list[FileResult]:
-    """Each file's result (``results``, one per file, else its own) as stderr and the
-    report show it: named relative to the working directory (no absolute path in a
-    report), lines those of the file written, with the legacy line beside them
-    (``written_lines``)."""
-    return [as_written(replace(r, path=in_report(m.candidate.path, m.candidate.relative)),
-                       m.original)
-            for m, r in zip(migrated, results or [m.result for m in migrated], strict=True)]
 
 
 def _cache_dir(paths: Sequence[Path], options: Options, named: Path | None) -> Path:
@@ -354,62 +305,6 @@ def _cache_dir(paths: Sequence[Path], options: Options, named: Path | None) -> P
     return project_folder(cache_root(named), base)
 
 
-def _show_manifests(outcome: Any, request: Any, color: bool | None) -> list[str]:
-    """Say what became of each package.xml the run declares the runtime in (``session``
-    decided and wrote them): a diff with --dry-run, ``would rewrite`` with --check, one
-    stderr line each; and one line each for the report."""
-    from ..files.package_xml import runtime_depend
-
-    lines = []
-    for manifest in outcome.manifests:
-        shown = shown_path(manifest.path)
-        element = runtime_depend(manifest.old)
-        if request.dry_run:  # applies from the repository root, as the files' diffs do
-            diff = unified_diff(printable(from_repository(manifest.path, shown)),
-                                manifest.old, manifest.new)
-            echo_diff(diff, color)
-        elif request.check:
-            click.echo(f"would rewrite {printable(shown)}")
-        lines.append(f"`{shown}`: declares the runtime, `{element}`"
-                     + ("" if request.writes else " (would)"))
-        click.echo(f"ezmigrate: {printable(shown)}: {element} "
-                   + ("added" if request.writes else "would be added"), err=True)
-    return lines
-
-
-def _print_result(shown: str, relative: str, original: bytes, result: FileResult,
-                  args: RewriteArguments) -> None:
-    """One file's problems on stderr; its diff (``--dry-run``) or name (``--check``)."""
-    if result.error:
-        click.echo(f"{printable(shown, path=True)}: {_said(result.error, args.debug)}",
-                   err=True)
-    for skill in result.skills:
-        if skill.status in ("skipped", "failed"):
-            reason = (skill.reason or "").splitlines()[0] if skill.reason else ""
-            click.echo(f"{printable(shown, path=True)}:{skill.line}: {printable(skill.name)}: "
-                       f"{skill.status}: {printable(reason)}", err=True)
-    if result.changed and args.dry_run:
-        assert isinstance(result.new_source, bytes)
-        diff = unified_diff(printable(relative), original, result.new_source,
-                            written_diff(result))
-        echo_diff(diff, args.color)
-    elif result.changed and args.check:
-        click.echo(f"would rewrite {printable(shown)}")
-
-
-def _finish(args: RewriteArguments, results: list[FileResult], refused: list[str],
-            options: MarkdownOptions, reported: list[FileResult] | None = None) -> NoReturn:
-    """The report (of ``reported``, the whole tree, when given), the summary line, and the
-    exit code every ``rewrite`` ends with."""
-    if args.report is not None:
-        _write_report(args.report, results if reported is None else reported, options)
-    from ..project.session import exit_code
-
-    summary = Summary.of(results)
-    click.echo(f"ezmigrate: {summary.line(dry=not args.writes)}", err=True)
-    sys.exit(exit_code(summary, args.check, args.strict, refused))
-
-
 @main.command()
 @click.argument("before", type=click.Path(path_type=Path, exists=True))
 @click.argument("after", type=click.Path(path_type=Path, exists=True))
@@ -424,7 +319,10 @@ def _finish(args: RewriteArguments, results: list[FileResult], refused: list[str
 @DEBUG
 def verify(**given: Any) -> None:
     """Prove AFTER means what BEFORE meant (two files, or two folders by relative path)."""
+    from ..project.target import robot_python, target_for, verified_with
+    from ..report.reports import MarkdownOptions, relaxed
     from ..verify.command import PathsMismatch, VerifyOptions, run_verify
+    from .rewrite_output import said, write_report
 
     args = VerifyArguments(**given)
     options = _options(args.before, args.command_line(), (args.after,))
@@ -444,13 +342,13 @@ def verify(**given: Any) -> None:
     for result in results:
         where = printable(result.path, path=True)
         if result.error:
-            click.echo(f"{where}: {_said(result.error, args.debug)}", err=True)
+            click.echo(f"{where}: {said(result.error, args.debug)}", err=True)
         for note in result.notes:  # an unchanged file that cannot load; captured output
-            click.echo(f"{where}: {_said(note, args.debug)}", err=True)
+            click.echo(f"{where}: {said(note, args.debug)}", err=True)
         for skill in result.skills:
             if skill.status == "failed":
                 click.echo(f"{where}:{skill.line}: {printable(skill.name)}: "
-                           f"{_said(skill.reason or '', args.debug)}", err=True)
+                           f"{said(skill.reason or '', args.debug)}", err=True)
                 for d in skill.diff or ():
                     click.echo(f"    {d['where']}: {d['message']}", err=True)
                     if d.get("before") is not None:
@@ -458,7 +356,7 @@ def verify(**given: Any) -> None:
                     if d.get("after") is not None:
                         click.echo(f"      + {d['after']}", err=True)
     if args.report is not None:
-        _write_report(args.report, results,
+        write_report(args.report, results,
                       MarkdownOptions(True, args.ignore_order, args.ignore_labels,
                                       ontology=used, verifier=verifier))
     total = sum(len(r.skills) for r in results)
