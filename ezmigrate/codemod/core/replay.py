@@ -94,7 +94,7 @@ def checked_model(name: str, operations: list[Operation], params: list[ParamOp])
     """
     legacy = replay(name, operations)
     conditions = [op for op in operations if isinstance(op, AddCondition)]
-    ordered = [*params, *conditions]
+    ordered: list[Operation] = [*params, *conditions]
     if len(ordered) == len(operations) \
             and all(a is b for a, b in zip(ordered, operations, strict=True)):
         return legacy  # the very calls in the same order: the same model (most skills)
