@@ -28,12 +28,12 @@ from .terminal import echo_diff
 
 
 def said(message: str, debug: bool) -> str:
-    """``short``, printable (``output_formats.printable``): a path inside the message
+    """``_short``, printable (``output_formats.printable``): a path inside the message
     starts no line. ``--debug`` prints a traceback whole, as Python wrote it."""
-    return short(message, debug) if debug else printable(short(message, debug))
+    return _short(message, debug) if debug else printable(_short(message, debug))
 
 
-def short(message: str, debug: bool) -> str:
+def _short(message: str, debug: bool) -> str:
     """A message for stderr: its first line, unless ``--debug`` asks for all of it."""
     lines = message.splitlines() or [""]
     if debug or len(lines) == 1:
@@ -42,6 +42,7 @@ def short(message: str, debug: bool) -> str:
 
 
 def write_report(path: Path, results: list[FileResult], options: MarkdownOptions) -> None:
+    """The report of ``results`` to ``path`` (``-``: stdout), Markdown or JSON by its name."""
     markdown = path.suffix.lower() == ".md"
     text = scrub(markdown_report(results, options) if markdown
                  else json_report(results, options=options))  # no path of this machine
