@@ -27,7 +27,7 @@ from ..files.discover import Candidate
 from ..files.package_xml import ros_flavour
 from ..report.once import once_per_cause
 from ..report.results import FileResult
-from ..verify.pool import PoolConfig
+from ..verify.pool_config import PoolConfig
 from ..verify.protocol import LoadOutcome
 from .markers import READ_WHEN, ROS1_IMPORT, ROS2_IMPORT
 from .repository import Recovered, RepositoryScan, description_of
@@ -41,7 +41,6 @@ from .static import (
     read_compounds,
     undescribed,
 )
-from .tracing import trace_all, trace_job
 
 if TYPE_CHECKING:
     from ezskiros_runtime.ontology.index import OntologyIndex
@@ -185,6 +184,8 @@ def _trace(trees: Trees, pool: PoolConfig) -> None:
                     unread.implementation, f"{unread.reason}, and check runs no repository "
                     "code to trace it (check --trace does, in the sandbox)", unread.line)))
         return
+    from .tracing import trace_all, trace_job  # --trace only: the sandboxed pool
+
     order = list(trees.traced.values())
     outcomes = trace_all([trace_job(c, pending) for c, pending in order], pool)
     for (candidate, pending), found in zip(order, outcomes, strict=True):

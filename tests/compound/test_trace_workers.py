@@ -12,7 +12,7 @@ import pytest
 
 from ezmigrate.checking.pipeline import run_check
 from ezmigrate.checking.run import CheckSettings
-from ezmigrate.compound import analysis, tracing
+from ezmigrate.compound import tracing
 from ezmigrate.compound.tracing import TRACED_PER_WORKER, trace_workers
 from ezmigrate.verify import pool as pool_module
 from ezmigrate.verify.pool import PoolConfig
@@ -83,7 +83,7 @@ def test_the_trees_to_trace_are_traced_in_one_go(tmp_path: Path, monkeypatch):
         asked.append(sorted(Path(job.path).name for job in jobs))
         return real(jobs, *rest, **named)  # type: ignore[arg-type]
 
-    monkeypatch.setattr(analysis, "trace_all", noted)
+    monkeypatch.setattr(tracing, "trace_all", noted)
     outcome = run_check([tmp_path], None, PoolConfig(workers=2), CheckSettings(trace=True))
     assert asked == [["task0.py", "task1.py", "task2.py"]]
     traced = sorted(Path(d.path).name for d in outcome.diagnostics if d.code == "EZ309")
