@@ -19,10 +19,11 @@ a read of the changed file. A change that moves a line or a declaration: every s
 It does not apply, and the run goes through every stage, when a file was added or removed
 or anything but Python files changed (scenes, launch file, manifests, ontology, settings:
 all in the key), under ``--trace``, when the trees are not read (the judgements then parse
-implementations themselves), or when a changed file is an EzSkiROS file (its findings
-quote its text), one the codemod reads (``Declined``), one the read stage does not parse
-(its bytes are its artifact), or one whose bytes another file's reading took (a star
-import's module, a possible base of a file the codemod read: ``CheckRun.shared``).
+implementations themselves), or when a changed file is one the codemod reads
+(``Declined``), an EzSkiROS file that is not ASCII (the world stage reads its lines from
+its text), one the read stage does not parse (its bytes are its artifact, and for a star
+import's module its code), or one whose bytes another file's reading may take (a module a
+declined file's foreign bases name: ``CheckRun.shared``).
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ from ..cache.facts_cache import FactsCache
 from ..cache.outcome_cache import OutcomeCache, content_digest
 from ..compound.markers import ROS1_IMPORT, ROS2_IMPORT, SCAN_WHEN
 from ..files.discover import Candidate
+from ..lint.diagnostic import Diagnostic
 from ..project.cross_file import RUNTIME_MARKER
 from .run import CheckOutcome, CheckRun, text_of
 
@@ -135,15 +137,11 @@ def recall(run: CheckRun, data: dict[str, bytes], digests: dict[str, str]
     if kept is None or cache is None:
         return None
     run.facts_cache = cache  # the read stage takes what this reads
-    for candidate in changed:
-        path = str(candidate.path)
-        lines = {found.line for found in kept["diagnostics"] if found.path == path}
-        before = memo["files"][path]
-        if _artifact(run, cache, candidate, data[path], memo) != before[1] \
-                or lines_digest(text_of(data[path]), lines) != before[2]:
-            cache.save()
-            return None
+    same = all(_reads_as_before(run, cache, c, data[str(c.path)], memo, kept["diagnostics"])
+               for c in changed)
     cache.save()
+    if not same:
+        return None
     for candidate in changed:
         memo["files"][str(candidate.path)][0] = digests[str(candidate.path)]
     assert store is not None and run.kept_key is not None
@@ -153,6 +151,17 @@ def recall(run: CheckRun, data: dict[str, bytes], digests: dict[str, str]
     store.write(f"{MEMOS}/{run.cutoff_key}.json", json.dumps(memo).encode("utf-8"))
     return CheckOutcome(files=kept["files"], skills=kept["skills"],
                         diagnostics=kept["diagnostics"], notes=kept["notes"])
+
+
+def _reads_as_before(run: CheckRun, cache: FactsCache, candidate: Candidate, data: bytes,
+                     memo: dict[str, Any], kept: Iterable[Diagnostic]) -> bool:
+    """Whether a changed file's artifact and the lines its kept findings stand on are the
+    kept run's."""
+    path = str(candidate.path)
+    before = memo["files"][path]
+    lines = {found.line for found in kept if found.path == path}
+    return _artifact(run, cache, candidate, data, memo) == before[1] \
+        and lines_digest(text_of(data), lines) == before[2]
 
 
 def _artifact(run: CheckRun, cache: FactsCache, candidate: Candidate, data: bytes,

@@ -24,7 +24,7 @@ from ..codemod.core.python2 import python2_refusal
 from ..compound.analysis import TreeFacts, tree_facts
 from ..compound.markers import READ_WHEN, SCAN_WHEN
 from ..compound.repository import Recovered, recover_classes
-from ..compound.static import NeedsTrace
+from ..compound.static import NeedsTrace, module_tree
 from ..files.discover import Candidate
 from ..files.prefilter import marker_is_identifier
 from ..lint.ezskiros_reader import read_ezskiros
@@ -204,8 +204,9 @@ def code_digest(path: str) -> str | None:
 def code_digest_of(data: bytes) -> str:
     """``code_digest`` of a module's bytes. Kept by content: the modules a lab star-imports
     are imported by many of its files, each asking for their digest (``_depends``, and
-    ``still_read`` on every run that takes a kept reading)."""
-    tree = parse(data)
+    ``still_read`` on every run that takes a kept reading); parsed once with the star
+    imports' reading of it (``static.module_tree``)."""
+    tree = module_tree(data)
     if tree is None:
         return "bytes:" + hashlib.sha256(data).hexdigest()
     return hashlib.sha256(ast.dump(tree, include_attributes=False).encode()).hexdigest()

@@ -81,7 +81,6 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
             readings.keys[str(candidate.path)] = key
         found = None if cache is None or key is None else cache.get(key)
         if isinstance(found, FileFacts) and still_read(found):
-            readings.star_sources.update(path for path, _ in found.depends)
             facts[candidate.path] = found
             if found.settled is not None:
                 readings.alone[str(candidate.path)] = (data, found.settled)
@@ -92,7 +91,6 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
     made = reader.read_files(items, compounds, statically) if reader is not None \
         else [(file_facts(c, d, compounds, v, statically), None) for c, d, v in items]
     for (candidate, data, _, key), (found, own) in zip(missing, made, strict=True):
-        readings.star_sources.update(path for path, _ in found.depends)
         facts[candidate.path] = found
         taken = own if own is not None else found.settled
         if taken is not None:
@@ -100,6 +98,7 @@ def read_facts(candidates: list[Candidate], compounds: bool, cache: FactsCache |
         if cache is not None and key is not None:
             cache.put(key, found)
     readings.files = [(c, data, facts.get(c.path)) for c, data in read]
+    readings.star_sources = {path for found in facts.values() for path, _ in found.depends}
     return readings
 
 

@@ -195,7 +195,7 @@ def _exports(path: str, seen: frozenset[str], read: list[str] | None = None
     if path in seen or len(seen) > 8:
         return None
     try:
-        tree = _exporting_tree(Path(path).read_bytes())
+        tree = module_tree(Path(path).read_bytes())
     except OSError:
         return None
     if tree is None:
@@ -213,13 +213,13 @@ def _exports(path: str, seen: frozenset[str], read: list[str] | None = None
 
 
 @functools.lru_cache(maxsize=32)
-def _exporting_tree(data: bytes) -> ast.Module | None:
+def module_tree(data: bytes) -> ast.Module | None:
     """The syntax tree of a star-imported module, or None when ``ast`` cannot read it.
-    Kept by content (and only read): the modules a lab star-imports are imported by many
-    of its files."""
+    Kept by content, and only read: the modules a lab star-imports are imported by many of
+    its files, and their code digest (``file_facts.code_digest_of``) reads the same tree."""
     try:
         return ast.parse(data)
-    except (SyntaxError, ValueError, MemoryError, RecursionError):
+    except (SyntaxError, ValueError, LookupError, MemoryError, RecursionError):
         return None
 
 

@@ -259,18 +259,25 @@ def _property_class_clashes(declared: Sequence[tuple[Path, tuple[list[Triple], s
     for path, (_triples, classes, _properties) in declared:
         for cls in classes:
             class_at.setdefault(cls, path)
+    texts: dict[Path, str] = {}  # each file read once, and only for a clash
+
+    def text(path: Path) -> str:
+        if path not in texts:
+            texts[path] = _text(path)
+        return texts[path]
+
     found = []
     for path, (_triples, _classes, properties) in declared:
         for iri in sorted(properties):
             home = class_at.get(iri)
             if home is None and not index.is_class(iri):
                 continue
-            where = f"{home.name}:{_line_of(_text(home), iri)}" if home is not None \
+            where = f"{home.name}:{_line_of(text(home), iri)}" if home is not None \
                 else "the loaded ontology"
             name = index.compact(iri)
             found.append(finding(
                 "ontology-property-is-class", str(path),
-                _line_of(_text(path), iri, declaring=True),
+                _line_of(text(path), iri, declaring=True),
                 f"{name} is declared a property here and a class in {where}: SkiROS2 then "
                 f"answers for both under one IRI (elements typed {name} and values of the "
                 "property mix in the world model; SkiROS2 pull request #114)", iri,
