@@ -2,8 +2,7 @@
 whether the outcome cache answers the run whole.
 
 Then the run is set up for reading: the compound pass's ``Trees`` (when an EZ3 code is
-selected), the facts cache and the reading pool. The pool forks its workers when the files
-are read, before any thread starts.
+selected), the facts cache and the reading pool, whose worker starts on the scenes at once.
 """
 
 from __future__ import annotations
@@ -90,7 +89,7 @@ def _kept(run: CheckRun) -> None:
 
 def _prepare(run: CheckRun) -> None:
     """The compound pass's ``Trees``, the facts cache and the reading pool of a run the
-    cache did not answer."""
+    cache did not answer; the pool parses the scenes the facts cache lacks from now on."""
     from ..codemod.settings import Settings
     from ..compound.analysis import Trees
     from .reading_pool import ReadingPool
@@ -113,6 +112,7 @@ def _prepare(run: CheckRun) -> None:
         if run.facts_cache is not None:
             run.scenes_cached = seed_scenes(run.facts_cache, run.world.scenes)
     run.reader = ReadingPool(run.pool.workers, Settings(index=run.index))
+    run.reader.parse_scenes([s for s in run.world.scenes if s not in run.scenes_cached])
 
 
 def run(run: CheckRun) -> None:

@@ -315,8 +315,6 @@ def run(run: CheckRun) -> None:
 
     line = Progress.for_stream(len(run.candidates), skills_label="skills found") \
         if run.settings.progress else Progress(len(run.candidates), active=False)
-    if run.reader is not None:
-        run.reader.parse_scenes([s for s in run.world.scenes if s not in run.scenes_cached])
     readings = read_facts(run.candidates, run.trees is not None, run.facts_cache, run.reader,
                           run.settings.overlay, static_against(run))
     run.fact_keys, run.star_sources = readings.keys, readings.star_sources

@@ -1,16 +1,16 @@
-"""The second core during ``check``'s reading: scenes and file readings in forked workers.
+"""The second core during ``check``'s reading: scenes and file readings in a forked worker.
 
-Before this, the main process parsed every skill file and every scene one after the
-other while the other core idled (its workers run only for the files the codemod reads
-and for tracing). Parsing a file or a scene needs nothing but its path and bytes and gives
-a picklable reading (``file_facts.FileFacts``, ``world.scene.Scene``), so both go to a
-pool forked at the start of the run, before any thread exists: the files' readings are
-split into small chunks once the misses of the cache are known, the workers taking them
-from the start and the main process from the end until they meet (so a chunk of costly
-files slows nobody more than its share); the scenes follow, and parse while the main
+Parsing a file or a scene needs nothing but its path and bytes and gives a picklable
+reading (``file_facts.FileFacts``, ``world.scene.Scene``), so both go to one worker,
+forked as soon as the run knows it must read (``parse_scenes``, before the files' bytes
+are read). The scenes come first, while the main process still reads bytes and sets up;
+the files' readings, split into small chunks once the misses of the cache are known, take
+over as soon as they are handed over: the worker takes chunks from the start and the main
+process from the end until they meet (``worker_channel.Claims``: a chunk of costly files
+slows nobody more than its share); the worker then parses the scenes left while the main
 process goes on with the files' findings. Results are taken in the order they were asked
-for, so a run reports the same bytes as one without the pool (``--jobs 1``, or too little
-to share).
+for, so a run reports the same bytes as one without the worker (``--jobs 1``, or too little
+to share). ``worker_channel`` says why there is no executor between the two.
 
 A file the plain reader declines is read by the codemod (``runner.own_reading``) in the
 same turn, by the main process when it read the file; a worker leaves its first such files
@@ -26,18 +26,19 @@ import functools
 import multiprocessing
 import os
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
-from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..lint.plain_reader import Declined
 from ..project.lifetime import exit_with_parent
 from ..project.runner import own_reading
 from ..report.results import FileResult
 from .file_facts import FileFacts, file_facts
+from .worker_channel import Channel, Claims
 
 if TYPE_CHECKING:
+    from multiprocessing.process import BaseProcess
+
     from ezskiros_runtime.world.scene import Scene
 
     from ..codemod.settings import Settings
@@ -78,9 +79,9 @@ _READS = False  # this worker reads declined files itself now
 
 
 def _init_worker(settings: Settings | None, parent: int | None = None) -> None:
-    """A worker's start: the codemod's settings, inherited (the index is never pickled),
-    its index the active ontology (``FileFacts.loaded`` is checked against it), and its
-    end with the run's (``lifetime.exit_with_parent``)."""
+    """A worker's start: the codemod's settings, inherited (forked, never pickled), its
+    index the active ontology (``FileFacts.loaded`` is checked against it), and its end
+    with the run's (``lifetime.exit_with_parent``)."""
     global _SETTINGS
     exit_with_parent(parent)
     _SETTINGS = settings
@@ -144,64 +145,135 @@ def _read_in_worker(items: list[tuple[Candidate, bytes, bool | None]], compounds
     return found, caught_up
 
 
+SCENES, FILES = 0, 1
+"""The worker's two task lists (``Claims``): the run's scenes, and the chunks of the batch
+of files at hand."""
+
+
+def _serve(channel: Channel, claims: Claims, scenes: list[str], settings: Settings | None,
+           parent: int) -> None:
+    """The worker: the chunks of the batch at hand first (the run waits for them), scenes
+    otherwise; it ends when the main process closes the channel. A task that fails is
+    recorded as None: the main process then does it itself, and says why if it fails."""
+    channel.as_worker()
+    _init_worker(settings, parent)
+    try:
+        _take_tasks(channel, claims, scenes)
+    except (OSError, EOFError):  # the main process has gone, or closed the channel
+        return
+
+
+def _take_tasks(channel: Channel, claims: Claims, scenes: list[str]) -> None:
+    """``_serve``'s loop, until the main process closes the channel."""
+    batch: tuple[list[tuple[Candidate, bytes, bool | None]], bool, bool, int] | None = None
+    number = -1
+    scenes_left = bool(scenes)
+    while True:
+        if batch is None:
+            batch = channel.next_batch(block=not scenes_left)
+            number += 0 if batch is None else 1
+        if batch is not None:
+            chunk = claims.front(FILES)
+            if chunk is None:
+                channel.say(b"f")
+                batch = None
+                continue
+            items, compounds, statically, size = batch
+            channel.record(FILES, number, chunk, _attempt(
+                _read_in_worker, items[chunk * size:(chunk + 1) * size], compounds,
+                statically))
+            continue
+        scene = claims.front(SCENES)
+        if scene is None:
+            channel.say(b"s")
+            scenes_left = False
+            continue
+        channel.record(SCENES, 0, scene, _attempt(_parse_scene, scenes[scene]))
+
+
+def _attempt(task: Callable[..., Any], *args: Any) -> Any:
+    """``task(*args)``, or None when it raises (the main process does it again)."""
+    try:
+        return task(*args)
+    except Exception:  # the main process's own attempt reports it
+        return None
+
+
 class ReadingPool:
-    """Forked readers for one run: ``workers`` processes read, the main one among them
-    (so one fewer is forked; ``workers`` under two: none, the main reads alone). ``settings``:
-    what the codemod reads declined files with (None: they are left to ``settle``)."""
+    """The forked reader of one run: ``workers`` processes read, the main one among them (so
+    one is forked, as the run needs it; ``workers`` under two: none, the main reads alone).
+    ``settings``: what the codemod reads declined files with (None: they are left to
+    ``settle``)."""
 
     def __init__(self, workers: int, settings: Settings | None = None) -> None:
         self.workers = workers
         self.settings = settings
-        self._pool: ProcessPoolExecutor | None = None
-        self._scenes: list[tuple[Path, Future[tuple[str, Scene] | None]]] = []
-        self._waiting: list[Path] = []
+        self._worker: BaseProcess | None = None
+        self._channel: Channel | None = None
+        self._claims: Claims | None = None
+        self._scenes: list[Path] = []
+        self._parsed: dict[int, tuple[str, Scene] | None] = {}
+        self._batches = 0
 
-    def _executor(self) -> ProcessPoolExecutor | None:
+    def _start(self, scenes: Sequence[Path]) -> bool:
+        """Fork the worker, given ``scenes`` to parse, unless it runs already; False when
+        the run reads alone (one worker asked for, no ``fork``, or the worker has ended)."""
+        if self._channel is not None:
+            return not self._channel.gone
         if self.workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
-            return None
-        if self._pool is None:  # forked: the settings' index is inherited, never pickled
-            self._pool = ProcessPoolExecutor(max_workers=max(1, self.workers - 1),
-                                             mp_context=multiprocessing.get_context("fork"),
-                                             initializer=_init_worker,
-                                             initargs=(self.settings, os.getpid()))
-        return self._pool
+            return False
+        if scenes:  # the parser, imported once for both processes (the run needs it too)
+            import ezskiros_runtime.world.scene  # noqa: F401
+        context = multiprocessing.get_context("fork")
+        self._claims = Claims(2, context.Lock())
+        self._claims.open(SCENES, len(scenes))
+        self._channel = Channel()
+        self._scenes = list(scenes)
+        self._worker = context.Process(  # forked: the arguments are inherited, not pickled
+            target=_serve, name="ezmigrate-reader", daemon=True,
+            args=(self._channel, self._claims, [str(p) for p in scenes], self.settings,
+                  os.getpid()))
+        try:
+            self._worker.start()
+        except OSError:  # no process to be had (a limit on processes, on memory)
+            self._channel.gone, self._worker = True, None
+            return False
+        finally:
+            self._channel.as_main()
+        return True
 
     def parse_scenes(self, paths: Sequence[Path]) -> None:
-        """Parse ``paths`` in the workers (``seed_scenes`` hands the parses to
-        ``read_scene``): they start after the files' readings, which the run needs first."""
-        self._waiting += paths
-
-    def _start_scenes(self) -> None:
-        pool = self._executor() if self._waiting else None
-        if pool is not None:
-            self._scenes += [(path, pool.submit(_parse_scene, str(path)))
-                             for path in self._waiting]
-        self._waiting = []
+        """Parse ``paths`` in the worker, forked now (``seed_scenes`` hands the parses to
+        ``read_scene``). Scenes named after the worker started are parsed where they are
+        asked for."""
+        if paths and self._channel is None:
+            self._start(paths)
 
     def seed_scenes(self) -> None:
-        """Hand ``read_scene`` every scene parsed in the workers. The main process, done
-        with its own work by now, parses from the end the scenes no worker has started
-        (as it does the files' chunks): it does its share instead of waiting for the
-        workers' last ones."""
+        """Hand ``read_scene`` every scene the worker parsed, once it has parsed them all
+        (those it could not, or could not finish, ``read_scene`` parses when asked)."""
         from ezskiros_runtime.world.scene import seed_scene
 
-        self._start_scenes()
-        for path, future in reversed(self._scenes):
-            if not future.cancel():
-                break
-            parsed = _parse_scene(str(path))
-            if parsed is not None:
-                seed_scene(path, *parsed)
-        for path, future in self._scenes:
-            if future.cancelled():
-                continue
-            try:
-                parsed = future.result()
-            except (BrokenProcessPool, OSError):  # read_scene parses it when asked
-                continue
+        if self._channel is None or not self._scenes:
+            return
+        self._channel.wait(b"s")
+        self._take_records()
+        for index, path in enumerate(self._scenes):
+            parsed = self._parsed.get(index)
             if parsed is not None:
                 seed_scene(path, *parsed)
         self._scenes = []
+
+    def _take_records(self, batch: int = -1) -> dict[int, Any]:
+        """The worker's records so far: its scenes kept, its chunks of ``batch`` returned."""
+        assert self._channel is not None
+        chunks: dict[int, Any] = {}
+        for kind, number, index, value in self._channel.records():
+            if kind == SCENES:
+                self._parsed[index] = value
+            elif number == batch and value is not None:
+                chunks[index] = value
+        return chunks
 
     def read_files(self, items: list[tuple[Candidate, bytes, bool | None]], compounds: bool,
                    statically: bool = False) -> list[Reading]:
@@ -241,44 +313,44 @@ class ReadingPool:
                   statically: bool) -> list[Reading]:
         """``read_files`` of files whose bytes all differ."""
         here = None if self.settings is None else functools.partial(_here, self.settings)
-        pool = self._executor() if len(items) >= SHARED_FROM else None
-        if pool is None:
-            self._start_scenes()
+        if len(items) < SHARED_FROM or not self._start(()):
             return _read_files(items, compounds, here, statically)
+        assert self._channel is not None and self._claims is not None
         size = max(4, len(items) // (self.workers * 12))
-        starts = list(range(0, len(items), size))
-        futures = {start: pool.submit(_read_in_worker, items[start:start + size], compounds,
-                                      statically)
-                   for start in starts}
-        self._start_scenes()
+        chunks = -(-len(items) // size)
+        number, self._batches = self._batches, self._batches + 1
+        self._claims.open(FILES, chunks)
+        self._channel.send((items, compounds, statically, size))
         mine: dict[int, list[Reading]] = {}
-        for start in reversed(starts):  # the main takes chunks from the end, while no
-            if not futures[start].cancel():  # worker has started them: the share each
-                break  # does is what it gets through, whatever a chunk costs
-            mine[start] = _read_files(items[start:start + size], compounds, here, statically)
-        theirs: dict[int, list[Reading]] = {}
+        while (chunk := self._claims.back(FILES)) is not None:  # from the end, until the
+            mine[chunk] = _read_files(items[chunk * size:(chunk + 1) * size], compounds,
+                                      here, statically)  # worker's share meets this one
+        self._channel.wait(b"f")
+        theirs = self._take_records(number)
         caught_up: dict[str, FileResult] = {}
-        for start in starts:
-            if start in mine:
-                continue
-            try:
-                theirs[start], late = futures[start].result()
-                caught_up.update(late)
-            except (BrokenProcessPool, OSError):  # a worker died: read here what it had
-                mine[start] = _read_files(items[start:start + size], compounds, here, statically)
+        for _, late in theirs.values():
+            caught_up.update(late)
         found: list[Reading] = []
-        for start in starts:
-            if start in mine:
-                found += mine[start]
-                continue
-            for (candidate, data, _), (facts, own) in zip(items[start:start + size],
-                                                         theirs[start], strict=True):
-                if own is None and here is not None and _declined(facts):
-                    own = caught_up.get(str(candidate.path)) or here(candidate, data)
-                found.append((facts, own))
+        for chunk in range(chunks):
+            part = items[chunk * size:(chunk + 1) * size]
+            if chunk in mine:
+                found += mine[chunk]
+            elif chunk not in theirs:  # the worker ended, or failed on it: read it here
+                found += _read_files(part, compounds, here, statically)
+            else:
+                for (candidate, data, _), (facts, own) in zip(part, theirs[chunk][0],
+                                                             strict=True):
+                    if own is None and here is not None and _declined(facts):
+                        own = caught_up.get(str(candidate.path)) or here(candidate, data)
+                    found.append((facts, own))
         return found
 
     def close(self) -> None:
-        if self._pool is not None:
-            self._pool.shutdown(wait=True, cancel_futures=True)
-            self._pool = None
+        """End the worker (whatever it was doing: the run needs nothing more of it)."""
+        if self._worker is not None:
+            self._worker.kill()
+            self._worker.join()
+            self._worker = None
+        if self._channel is not None:
+            self._channel.close()
+            self._channel = None

@@ -7,7 +7,9 @@ from __future__ import annotations
 
 import os
 import subprocess
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 from bench_generator import generator
@@ -104,9 +106,9 @@ def test_a_worker_that_meets_many_declined_files_takes_them_on(
 
 def test_each_file_is_read_once_by_whoever_takes_its_chunk(
         tree: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    """The main process takes chunks from the end of the list while no worker has started
-    them (a cancelled future is never run): each file is read exactly once, by one process,
-    and the readings come back in order (the findings are one process's)."""
+    """The main process takes chunks from the end of the list and the worker from the start
+    (``worker_channel.Claims``): each file is read exactly once, by one process, and the
+    readings come back in order (the findings are one process's)."""
     log = tmp_path / "read.log"
     log_calls(monkeypatch, reading_pool, "file_facts", log,
               lambda candidate, *_: candidate.relative)
@@ -122,6 +124,69 @@ def test_too_few_files_are_read_in_the_main_process(tmp_path: Path) -> None:
     pool = reading_pool.ReadingPool(2)
     try:
         assert pool.read_files([], compounds=True) == []
-        assert pool._pool is None  # nothing to share: nothing forked
+        assert pool._worker is None  # nothing to share: nothing forked
     finally:
         pool.close()
+
+
+def _held_until_the_worker_reads(monkeypatch: pytest.MonkeyPatch,
+                                 in_worker: Callable[[int], None]) -> None:
+    """The worker's chunk reader replaced by ``in_worker(pipe)`` (which writes a byte to the
+    pipe), and the main process's first chunk held until that byte comes: the worker is
+    sure to take a chunk, however fast either process is."""
+    ready, said = os.pipe()
+    real = reading_pool._read_files
+    held = [True]
+
+    def main_reads(*args: Any) -> Any:
+        if held[0]:
+            held[0] = False
+            os.read(ready, 1)
+        return real(*args)
+
+    monkeypatch.setattr(reading_pool, "_read_in_worker", lambda *_: in_worker(said))
+    monkeypatch.setattr(reading_pool, "_read_files", main_reads)
+
+
+def test_a_worker_that_dies_leaves_its_share_to_the_main_process(
+        tree: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The worker ends at its first chunk of files (``os._exit``, as a kill would end it):
+    the main process reads every chunk the worker took, and the run finds what one
+    process finds."""
+    alone = _findings(tree, 1)
+
+    def dies(said: int) -> None:
+        os.write(said, b"x")
+        os._exit(3)
+
+    _held_until_the_worker_reads(monkeypatch, dies)
+    assert _findings(tree, 2) == alone
+
+
+def test_a_task_that_fails_in_the_worker_is_done_again_here(
+        tree: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A chunk whose reading raises in the worker is read again by the main process (and
+    would raise here, as in one process); the worker goes on with the next."""
+    alone = _findings(tree, 1)
+
+    def fails(said: int) -> None:
+        os.write(said, b"x")
+        raise RuntimeError("a bug of ours, in the worker only")
+
+    _held_until_the_worker_reads(monkeypatch, fails)
+    assert _findings(tree, 2) == alone
+
+
+def test_the_claims_give_each_task_once_from_either_end() -> None:
+    import multiprocessing
+
+    from ezmigrate.checking.worker_channel import Claims
+
+    claims = Claims(2, multiprocessing.get_context("fork").Lock())
+    claims.open(1, 5)
+    assert claims.front(0) is None  # a list never opened has nothing to take
+    taken = [claims.front(1), claims.back(1), claims.front(1), claims.back(1),
+             claims.front(1), claims.back(1), claims.front(1)]
+    assert taken == [0, 4, 1, 3, 2, None, None]
+    claims.open(1, 2)  # the next batch starts afresh
+    assert [claims.back(1), claims.back(1), claims.front(1)] == [1, 0, None]
