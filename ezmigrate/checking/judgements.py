@@ -77,7 +77,7 @@ def _implementations(run: CheckRun, implementing: list[tuple[Candidate, ModuleFa
     classes = {*(index.compact(c) for c in index.classes), *typed} if index else set(typed)
     made = set().union(*(facts.sets for _, facts in implementing))
     for scene in readable_scenes(run.world.scenes):
-        made |= {scene.compact(v.property) for v in scene.values}
+        made |= {scene.compact(p) for p in {v.property for v in scene.values}}
 
     def known(name: str) -> bool:
         iri = to_iri(index, name) if index is not None else None

@@ -38,9 +38,8 @@ def scene_classes(scenes: Iterable[Path]) -> set[str]:
     (``lab:Widget``) and as full IRIs."""
     found: set[str] = set()
     for scene in readable_scenes(scenes):
-        for element in scene.elements.values():
-            for kind in element.types:
-                found |= {kind, scene.compact(kind)}
+        kinds = {kind for element in scene.elements.values() for kind in element.types}
+        found |= kinds | {scene.compact(kind) for kind in kinds}
     return found
 
 
