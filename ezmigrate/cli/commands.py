@@ -13,7 +13,6 @@ import contextlib
 import os
 import sys
 import threading
-import traceback
 from collections.abc import Sequence
 from dataclasses import replace
 from pathlib import Path
@@ -59,6 +58,8 @@ EXIT_BROKEN_PIPE = 128 + 13  # as a shell reports a process ended by SIGPIPE
 def _fail(message: str, debug: bool) -> NoReturn:
     click.echo(f"ezmigrate: error: {printable(message)}", err=True)
     if debug:
+        import traceback
+
         traceback.print_exc()
     else:
         click.echo("ezmigrate: rerun with --debug for details", err=True)
@@ -110,6 +111,8 @@ def _thread_failed(args: Any, debug: bool) -> None:
     click.echo(f"ezmigrate: internal error in a worker thread: {args.exc_type.__name__}: "
                f"{args.exc_value}", err=True)
     if debug:
+        import traceback
+
         traceback.print_exception(args.exc_type, args.exc_value, args.exc_traceback)
     else:
         click.echo("ezmigrate: rerun with --debug for details", err=True)

@@ -26,7 +26,6 @@ from typing import Any
 from ezskiros_runtime.pyproject import PyprojectError, find_pyproject, find_tool_table
 
 from ..files.paths import shown
-from ..project.target import parse_target
 
 __all__ = ["KEYS", "ConfigError", "ProjectConfig", "find_pyproject", "load_project_config"]
 
@@ -125,7 +124,11 @@ def _project_config(path: Path, section: dict[str, Any]) -> ProjectConfig:
         raise ConfigError(f"{path}: [tool.ezmigrate] skill-libraries must be a list of "
                           f"folders, not {libraries!r}")
     target = section.get("target-version")
-    target_version = None if target is None else parse_target(target)
+    target_version = None
+    if target is not None:
+        from ..project.target import parse_target  # (rewrite's: not imported for every run)
+
+        target_version = parse_target(target)
     if target is not None and target_version is None:
         raise ConfigError(f"{path}: [tool.ezmigrate] target-version must be a Python version "
                           f"as ruff spells it, py38 or newer (\"py38\"), not {target!r}")

@@ -24,25 +24,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, TypeVar
+from typing import TypeVar
 
 from ..verify.interpreters import resolve
+from ..verify.pool_config import PoolConfig, default_jobs
 from .config import ConfigError, ProjectConfig
-
-if TYPE_CHECKING:
-    from ..verify.pool_config import PoolConfig
 
 DEFAULT_TIMEOUT = 20.0
 """Seconds a file may take to load when verifying, when nobody says otherwise."""
 
 _T = TypeVar("_T")
-
-
-def _default_jobs() -> int:
-    """One worker per CPU this process may use (imported late: the runner is not light)."""
-    from ..project.runner import default_jobs
-
-    return default_jobs()
 
 
 @dataclass(frozen=True)
@@ -65,7 +56,7 @@ class Options:
 
     exclude: tuple[str, ...] = ()
     """Globs of paths to skip: the command line's, then the project's."""
-    jobs: int = field(default_factory=_default_jobs)
+    jobs: int = field(default_factory=default_jobs)
     """Parallel workers."""
     timeout: float = DEFAULT_TIMEOUT
     """Seconds per file when a file is loaded (verification, tracing)."""
@@ -92,8 +83,6 @@ class Options:
     def pool(self, ontology: tuple[str, ...], workers: int | None = None) -> PoolConfig:
         """The sandbox's settings for these options, loading ``ontology`` (resolved files;
         empty: the bundled default) with ``workers`` workers (default: ``jobs``)."""
-        from ..verify.pool_config import PoolConfig
-
         return PoolConfig(workers=self.jobs if workers is None else workers,
                           timeout=self.timeout, ontology=ontology, python=self.python,
                           python_given=self.python is not None)
@@ -109,7 +98,7 @@ class Options:
         jobs = _first(None, cli.jobs, pyproject.jobs)
         return cls(
             exclude=(*cli.exclude, *pyproject.exclude),
-            jobs=jobs if jobs is not None else _default_jobs(),
+            jobs=jobs if jobs is not None else default_jobs(),
             timeout=_first(DEFAULT_TIMEOUT, cli.timeout, pyproject.timeout),
             python=_interpreter(cli.python, pyproject),
             select=cli.select if replaced else pyproject.select,

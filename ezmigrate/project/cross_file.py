@@ -17,10 +17,10 @@ from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING
 
 from ..codemod.settings import RUNTIME_ROOT, Settings
-from .runner import Migrated
 
 if TYPE_CHECKING:
     from ..codemod.core.ir import Operation
+    from .runner import Migrated
 
 MAX_ROUNDS = 4
 RUNTIME_MARKER = RUNTIME_ROOT.encode()

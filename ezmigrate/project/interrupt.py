@@ -19,7 +19,6 @@ ignored when the handlers are installed (``nohup``, a background job) stays igno
 
 from __future__ import annotations
 
-import multiprocessing
 import os
 import signal
 import threading
@@ -114,6 +113,8 @@ def _handler(signum: int, frame: FrameType | None) -> None:
 
 def _stop_workers(signum: int) -> None:
     """Pass the signal on to forked workers (they leave at once, see ``_handler``)."""
+    import multiprocessing  # (imported by then wherever a worker was forked)
+
     try:
         children = multiprocessing.active_children()
     except Exception:  # stopping must never fail

@@ -157,14 +157,6 @@ def own_reading(relative: str, data: bytes, settings: Settings) -> FileResult:
     return migrate_file(relative, data, settings)
 
 
-def default_jobs() -> int:
-    """One worker per CPU this process may use."""
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except AttributeError:  # not on Linux
-        return max(1, os.cpu_count() or 1)
-
-
 def read_candidates(candidates: Sequence[Candidate]) -> Iterator[tuple[Candidate, bytes | None,
                                                                        str | None]]:
     """Each candidate with its bytes, or an error message when it cannot be read."""

@@ -22,11 +22,12 @@ from ..files.discover import Candidate, discover
 from ..files.package_xml import ManifestRefused, packages_of, with_runtime_depend
 from ..files.writing import WriteRefused, atomic_write, digest, remove_stale_temporary
 from ..report.reports import Summary
+from ..verify.pool_config import default_jobs
 from ..verify.verdicts import Comparison
 from . import holdpoint, interrupt
 from .exit_codes import EXIT_ATTENTION, EXIT_OK
 from .progress import Progress
-from .runner import Extras, Migrated, default_jobs
+from .runner import Extras, Migrated
 from .settle import Checks, Settling, settle
 
 if TYPE_CHECKING:

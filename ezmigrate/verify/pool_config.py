@@ -5,7 +5,16 @@ would run."""
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
+
+
+def default_jobs() -> int:
+    """One worker per CPU this process may use (every command's default ``--jobs``)."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
 
 
 @dataclass(frozen=True)

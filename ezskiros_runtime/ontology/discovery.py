@@ -97,18 +97,31 @@ def discover(root: Path, skip: Callable[[Path], bool] | None = None) -> Discover
 
 def _owl_files(root: Path, skip: Callable[[Path], bool]) -> Iterable[tuple[Path, bool]]:
     """The ontology files below ``root``, each with whether it lies in a vendored SkiROS2
-    package (``vendored.VendoredRule``, with ``root`` as the repository outside git)."""
+    package (``vendored.VendoredRule``, with ``root`` as the repository outside git).
+
+    Which folders lie in a vendored package, and which at or below an ``owl/`` folder, is
+    carried down from each folder to the ones it holds (a folder's path is made once)."""
     is_vendored = vendored_skip(root)
     upstream: set[str] = set()  # the folders of vendored packages met so far
+    owl: set[str] = set()  # the folders at or below an owl/ folder under root
     for folder, dirs, names in walk(root):
         here = Path(folder)
-        inside = folder in upstream
-        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in NOT_SEARCHED
-                         and not skip(here / d))
-        for d in dirs:
-            if inside or is_vendored(here / d):
-                upstream.add(os.path.join(folder, d))
-        if OWL_FOLDER not in here.relative_to(root).parts:
+        inside, in_owl = folder in upstream, folder in owl
+        kept = []
+        for name in sorted(dirs):
+            if name.startswith(".") or name in NOT_SEARCHED:
+                continue
+            below = here / name
+            if skip(below):
+                continue
+            kept.append(name)
+            path = os.path.join(folder, name)
+            if inside or is_vendored(below):
+                upstream.add(path)
+            if in_owl or name == OWL_FOLDER:
+                owl.add(path)
+        dirs[:] = kept
+        if not in_owl:
             continue
         for name in names:
             if (name.lower().endswith(SUFFIXES) and not skip(here / name)

@@ -104,7 +104,7 @@ class VendoredRule:
     def package(self, folder: Path) -> str | None:
         """The SkiROS2 package ``folder`` is a vendored copy of, or None (not SkiROS2's,
         or SkiROS2's in SkiROS2's own repository)."""
-        key = str(folder)
+        key = os.path.abspath(folder)  # the walks name a folder relatively or absolutely
         if key not in self._answers:
             self._answers[key] = self._package(folder)
         return self._answers[key]

@@ -15,7 +15,7 @@ import pytest
 
 from ezmigrate.cli.config import ConfigError, ProjectConfig, load_project_config
 from ezmigrate.cli.options import DEFAULT_TIMEOUT, CommandLine, Options
-from ezmigrate.project.runner import default_jobs
+from ezmigrate.verify.pool_config import default_jobs
 from ezskiros_runtime.ontology.config import find_tool_config, resolve_ontology_paths
 from ezskiros_runtime.ontology.errors import OntologyConfigError
 from ezskiros_runtime.pyproject import find_tool_table
