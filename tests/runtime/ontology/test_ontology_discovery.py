@@ -149,3 +149,18 @@ def test_the_project_excludes_are_not_searched(tmp_path):
     line = next(x for x in run.stderr.splitlines() if x.startswith("ezmigrate: ontology"))
     assert line.endswith("owl/ folders of " + str((tmp_path / "repo").resolve())
                          + ": owl/lab.ttl"), line
+
+
+def test_only_files_at_or_below_an_owl_folder_of_the_repository_count(tmp_path):
+    """``owl/`` at any depth below the searched folder, and every folder below it; the
+    searched folder's own name does not count (a repository called ``owl``)."""
+    from ezskiros_runtime.ontology.discovery import discover
+
+    root = tmp_path / "owl"
+    for relative in ("top.ttl", "docs/loose.owl", "owl/a.ttl", "owl/sub/deep/b.owl",
+                     "pkg/owl/c.rdf", "pkg/owlish/d.ttl", "pkg/owl/.hidden/e.ttl"):
+        (root / relative).parent.mkdir(parents=True, exist_ok=True)
+        (root / relative).write_text(PROJECT, encoding="utf-8")
+    found = discover(root)
+    assert [p.relative_to(root).as_posix() for p in found.files] == [
+        "owl/a.ttl", "owl/sub/deep/b.owl", "pkg/owl/c.rdf"]
