@@ -225,9 +225,13 @@ class ReadingPool:
         if scenes:  # the parser, imported once for both processes (the run needs it too)
             import ezskiros_runtime.world.scene  # noqa: F401
         context = multiprocessing.get_context("fork")
-        self._claims = Claims(2, context.Lock())
+        try:
+            self._claims = Claims(2, context.Lock())
+            self._channel = Channel()
+        except (OSError, ImportError):  # no shared semaphore, no temporary folder, no pipe:
+            self.workers = 1  # the run reads alone, as with --jobs 1
+            return False
         self._claims.open(SCENES, len(scenes))
-        self._channel = Channel()
         self._scenes = list(scenes)
         self._worker = context.Process(  # forked: the arguments are inherited, not pickled
             target=_serve, name="ezmigrate-reader", daemon=True,

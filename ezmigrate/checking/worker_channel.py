@@ -83,7 +83,11 @@ class Channel:
 
     def __init__(self) -> None:
         self._batches = _unlinked_file()
-        self._records = _unlinked_file()
+        try:
+            self._records = _unlinked_file()
+        except OSError:
+            os.close(self._batches)
+            raise
         self._batch_end = 0
         self._read_to = 0
         self._commands_r, self._commands_w = os.pipe()

@@ -177,6 +177,30 @@ def test_a_task_that_fails_in_the_worker_is_done_again_here(
     assert _findings(tree, 2) == alone
 
 
+def test_without_a_temporary_folder_the_run_reads_alone(
+        tree: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The worker's files cannot be made (a read-only temporary folder, no descriptors
+    left): the run reads in the main process and finds what one process finds."""
+    import tempfile
+
+    alone = _findings(tree, 1)
+
+    def refused(*_: object, **__: object) -> None:
+        raise PermissionError(13, "Permission denied", "/tmp")
+
+    monkeypatch.setattr(tempfile, "mkstemp", refused)
+    started: list[bool] = []
+    real = reading_pool.ReadingPool._start
+
+    def start(pool: reading_pool.ReadingPool, scenes: Any) -> bool:
+        started.append(real(pool, scenes))
+        return started[-1]
+
+    monkeypatch.setattr(reading_pool.ReadingPool, "_start", start)
+    assert _findings(tree, 2) == alone
+    assert started and not any(started)  # asked to fork, and read alone instead
+
+
 def test_the_claims_give_each_task_once_from_either_end() -> None:
     import multiprocessing
 
