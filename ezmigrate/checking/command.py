@@ -18,7 +18,7 @@ from ..files.paths import shown as shown_path
 from ..lint.diagnostic import Diagnostic
 from ..lint.select import Selection, apply
 from ..project.exit_codes import EXIT_ATTENTION, EXIT_OK
-from ..report.reports import counted
+from ..report.wording import counted
 from .run import CheckOutcome
 
 FixMode = Literal["fix", "diff"]

@@ -17,7 +17,6 @@ from typing import TYPE_CHECKING
 from ..files.discover import Candidate, Discovery
 from ..lint.diagnostic import Diagnostic
 from ..lint.scene_search import WorldRun
-from ..report.results import FileResult
 
 if TYPE_CHECKING:
     from ezskiros_runtime.compound.library import SkillIndex
@@ -29,6 +28,7 @@ if TYPE_CHECKING:
     from ..checking.reading_pool import ReadingPool
     from ..compound.analysis import CompoundRun, Trees
     from ..compound.repository import RepositoryScan
+    from ..report.results import FileResult
     from ..verify.pool_config import PoolConfig
     from ..verify.protocol import LoadOutcome
     from .implementation_code import ModuleFacts

@@ -4,8 +4,8 @@
 converted, skipped, failed or unchanged) and `static_facts` what a legacy description
 declares; `findings` the notes migration keeps for the reviewer; `diffs` the unified
 diffs; `written_lines` the line numbers as the written file has them; `reports` the
-one-line summary and the JSON and Markdown reports; `once` keeps the findings of one cause
-once, with their count. Every other room builds on these
-types. May import only the runtime: the results must unpickle in any process, whatever it
-imported.
+one-line summary and the JSON and Markdown reports (`wording`: how a count reads in
+it); `once` keeps the findings of one cause once, with their count. Every other room
+builds on these types. May import only the runtime: the results must unpickle in any
+process, whatever it imported.
 """

@@ -13,6 +13,7 @@ from typing import Any
 from ezskiros_runtime.diagnostics import Finding
 
 from .results import FileResult, SkillResult
+from .wording import counted
 
 SCHEMA_VERSION = 1
 
@@ -58,11 +59,6 @@ class Summary:
         could not be processed. A skill skipped with a reason is the run doing its work
         (the reason is printed and reported), so it counts only with ``--strict``."""
         return bool(self.failed or self.file_errors or (strict and self.skipped))
-
-
-def counted(number: int, noun: str) -> str:
-    """``1 file``, ``2 files``: the summary reads as English."""
-    return f"{number} {noun}" + ("" if number == 1 else "s")
 
 
 def newer_python_lines(results: Sequence[FileResult], run_python: str | None,
