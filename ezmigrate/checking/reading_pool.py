@@ -2,8 +2,9 @@
 
 Parsing a file or a scene needs nothing but its path and bytes and gives a picklable
 reading (``file_facts.FileFacts``, ``world.scene.Scene``), so both go to one worker,
-forked as soon as the run knows it must read (``parse_scenes``, before the files' bytes
-are read). The scenes come first, while the main process still reads bytes and sets up;
+forked when the run first has work for it: its scenes, as soon as the run knows it must
+read (``parse_scenes``, before the files' bytes are read), else its files. The scenes
+come first, while the main process still reads bytes and sets up;
 the files' readings, split into small chunks once the misses of the cache are known, take
 over as soon as they are handed over: the worker takes chunks from the start and the main
 process from the end until they meet (``worker_channel.Claims``: a chunk of costly files
@@ -283,7 +284,7 @@ class ReadingPool:
                    statically: bool = False) -> list[Reading]:
         """``file_facts`` of each ``(candidate, bytes, the prefilter's text verdict)``, and
         the codemod's reading of those the plain reader declines (``_read_files``), in
-        order: in the workers when there are enough.
+        order: shared with the worker when there are enough.
 
         Files of the same bytes are read once (a workspace keeps a fork beside its
         upstream, a vendored copy of a package): the copies' facts are moved from the

@@ -82,16 +82,21 @@ class Channel:
     (each side then closes the ends it does not use: ``as_worker``, ``as_main``)."""
 
     def __init__(self) -> None:
-        self._batches = _unlinked_file()
+        made: list[int] = []  # closed again when the next one cannot be made
         try:
+            self._batches = _unlinked_file()
+            made.append(self._batches)
             self._records = _unlinked_file()
+            made.append(self._records)
+            self._commands_r, self._commands_w = os.pipe()
+            made += (self._commands_r, self._commands_w)
+            self._status_r, self._status_w = os.pipe()
         except OSError:
-            os.close(self._batches)
+            for handle in made:
+                os.close(handle)
             raise
         self._batch_end = 0
         self._read_to = 0
-        self._commands_r, self._commands_w = os.pipe()
-        self._status_r, self._status_w = os.pipe()
         self._said: list[bytes] = []
         self.gone = False
         """The worker has ended (its end of the status pipe closed)."""
