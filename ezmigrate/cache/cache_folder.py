@@ -23,7 +23,6 @@ import contextlib
 import hashlib
 import hmac
 import os
-import secrets
 import tempfile
 import time
 from collections.abc import Iterable
@@ -203,7 +202,7 @@ def user_key(root: Path) -> bytes | None:
 
 
 def _new_key(path: Path) -> bytes:
-    key = secrets.token_hex(32)
+    key = os.urandom(32).hex()  # (as secrets.token_hex, without its imports)
     handle = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
     with os.fdopen(handle, "w", encoding="ascii") as stream:
         stream.write(key)

@@ -16,6 +16,7 @@ and checks that depend on it say so rather than guess.
 from __future__ import annotations
 
 import ast
+import os
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, replace
@@ -26,7 +27,6 @@ from ezskiros_runtime.ontology.listing import walk
 from ezskiros_runtime.ontology.vendored import package_name, vendored_skip
 
 from ..files.discover import ALWAYS_EXCLUDED
-from ..files.package_xml import manifests_below
 from ..lint.scene_search import WorldRun
 
 KEYS = ("workspace_dir", "init_scene", "libraries_list", "skill_list")
@@ -114,16 +114,17 @@ def _walk(root: Path) -> Iterator[Path]:
         return
     vendored = vendored_skip(root)
     for folder, dirs, names in walk(root):
-        here = Path(folder)
         dirs[:] = [d for d in dirs if d not in ALWAYS_EXCLUDED and not d.startswith(".")
-                   and not vendored(here / d)]
+                   and not vendored(os.path.join(folder, d))]
         for name in names:
-            if ".launch" in name and name.endswith(SUFFIXES) and (here / name).is_file():
-                yield here / name
+            if ".launch" in name and name.endswith(SUFFIXES) and Path(folder, name).is_file():
+                yield Path(folder, name)
 
 
 def ros_packages(root: Path) -> dict[str, Path]:
     """``{name: folder}`` of the ``package.xml`` files under ``root``."""
+    from ..files.package_xml import manifests_below  # (a run the cache answers needs none)
+
     found: dict[str, Path] = {}
     for manifest in manifests_below(root):
         name = package_name(manifest)
@@ -207,17 +208,23 @@ def project_launch(root: Path, chosen: Path | None = None) -> tuple[Launch | Non
     """The launch file a run uses, and a note when it had to choose: ``chosen``
     (``--launch``), else the only one under ``root`` that sets a SkiROS2 key; with several
     and none chosen, none is used and the note says so."""
-    packages = ros_packages(root.resolve()) if root.is_dir() else {}
     if chosen is not None:
-        return read_launch(chosen, packages), None
+        return read_launch(chosen, _packages(root)), None
     files = launch_files(root)
     if len(files) == 1:
-        return read_launch(files[0], packages), None
+        return read_launch(files[0], _packages(root)), None
     if files:
         names = ", ".join(str(f.relative_to(root)) for f in files)
         return None, (f"{len(files)} SkiROS2 launch files ({names}): pick the one the robot "
                       "starts with --launch FILE to check against it")
     return None, None
+
+
+def _packages(root: Path) -> dict[str, Path]:
+    """The ROS packages of the repository at ``root`` (``ros_packages``), for the launch
+    file a run uses: searched only once there is one (a workspace of several launch files,
+    or none, uses none)."""
+    return ros_packages(root.resolve()) if root.is_dir() else {}
 
 
 def with_init_scene(world: WorldRun, launch: Launch | None) -> WorldRun:

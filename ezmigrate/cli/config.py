@@ -18,7 +18,6 @@ TOML, unreadable, ``[tool.ezmigrate]`` not a table) is a ``ConfigError``, never 
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
@@ -77,8 +76,13 @@ def unknown_keys(path: Path, section: dict[str, Any]) -> tuple[str, ...]:
     """A warning naming ``path`` for each key of ``section`` that is not one of ``KEYS``,
     with the known key it most resembles, as ruff says of its own table. A warning, not an
     error: a newer ezmigrate's key in a shared ``pyproject.toml`` must not stop an older one."""
+    unknown = sorted(k for k in section if k not in KEYS)
+    if not unknown:
+        return ()
+    import difflib  # (for a key that is not ours only)
+
     found = []
-    for key in sorted(k for k in section if k not in KEYS):
+    for key in unknown:
         close = difflib.get_close_matches(key.replace("_", "-").lower(), KEYS, n=1)
         hint = f"; did you mean '{close[0]}'?" if close else ""
         found.append(f"warning: {shown(path)}: unknown key '{key}' in [tool.ezmigrate], "

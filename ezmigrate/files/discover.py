@@ -234,16 +234,16 @@ def _temporaries_of(file: Path) -> list[Path]:
         return []
 
 
-def _note_vendored(notes: list[str], given: Path) -> Callable[[Path], bool]:
+def _note_vendored(notes: list[str], given: Path) -> Callable[[str], bool]:
     """Whether to pass over a folder below the ``given`` path: a vendored SkiROS2 package
     (``VendoredRule``, with ``given`` as the repository outside git), said once in
     ``notes``."""
     rule = rule_for(given)
 
-    def skip(folder: Path) -> bool:
+    def skip(folder: str) -> bool:
         package = rule.package(folder)
         if package is not None:
-            notes.append(f"{folder}: a vendored copy of SkiROS2's {package}, not the lab's "
+            notes.append(f"{Path(folder)}: a vendored copy of SkiROS2's {package}, not the lab's "
                          "code: skipped (name it, or pass --include-vendored, to include it)")
         return package is not None
     return skip
@@ -259,57 +259,80 @@ def _catkin_toplevel(folder: Path, name: str) -> bool:
 
 def _walk(top: Path, roots: list[str], notes: list[str],
           stale: list[Path] | None = None,
-          vendored: Callable[[Path], bool] | None = None) -> Iterator[tuple[Path, str]]:
+          vendored: Callable[[str], bool] | None = None) -> Iterator[tuple[Path, str]]:
     """``.py`` files under ``top`` with their real paths (depth first, names sorted), and
     our temporary files into ``stale`` when it is given; folders ``vendored`` says are
-    SkiROS2's own are not entered."""
+    SkiROS2's own are not entered.
+
+    A folder is listed when its parent's walk meets it, not when it is entered: its ROS
+    ignore markers are then read from its own listing (no system call per marker), and the
+    listing waits on the stack for its turn. Paths are strings until a file is yielded
+    (``pathlib`` costs more than the system calls on a tree of small folders)."""
     seen: set[str] = set()
-    stack = [(top, os.path.realpath(top))]  # each folder with its real path
+    first = str(top)
+    stack = [(first, os.path.realpath(top), _listed(first))]  # folder, real path, listing
     while stack:
-        folder, real = stack.pop()
+        folder, real, listed = stack.pop()
         if real in seen:
-            notes.append(f"{folder}: symlink loop, not followed again")
+            notes.append(f"{Path(folder)}: symlink loop, not followed again")
             continue
         seen.add(real)
-        try:
-            with os.scandir(folder) as listing:
-                entries = list(listing)
-        except OSError as error:
-            notes.append(f"{folder}: cannot list ({error.strerror})")
+        if isinstance(listed, OSError):
+            notes.append(f"{Path(folder)}: cannot list ({listed.strerror})")
             continue
-        remember(folder, entries)  # the searches after this one list it no more
-        entries.sort(key=lambda e: e.name)
-        for entry in entries:
-            if entry.name in ALWAYS_EXCLUDED:
+        remember(folder, listed)  # the searches after this one list it no more
+        for entry in sorted(listed, key=_name):
+            name = entry.name
+            if name in ALWAYS_EXCLUDED:
                 continue
-            if stale is not None and is_temporary_name(entry.name):
+            if stale is not None and is_temporary_name(name):
                 if not entry.is_symlink() and entry.is_file(follow_symlinks=False):
                     stale.append(Path(entry.path))
                 continue
             link = entry.is_symlink()
-            target = os.path.realpath(entry.path) if link else os.path.join(real, entry.name)
+            target = os.path.realpath(entry.path) if link else ""
             if link and not _inside(target, roots):
-                if not _catkin_toplevel(folder, entry.name):
+                if not _catkin_toplevel(Path(folder), name):
                     notes.append(f"{Path(entry.path)}: symlink leads outside the given "
                                  "paths, skipped")
                 continue
             try:
                 is_dir = entry.is_dir()
-                is_file = not is_dir and entry.name.endswith(".py") and entry.is_file()
+                is_file = not is_dir and name.endswith(".py") and entry.is_file()
             except OSError as error:  # a file symlink loop: ELOOP
                 reason = "symlink loop" if error.errno == errno.ELOOP else error.strerror
                 notes.append(f"{Path(entry.path)}: {reason}, skipped")
                 continue
-            if is_dir and _ros_ignored(entry.path):
-                notes.append(f"{Path(entry.path)}: skipped, its "
-                             f"{_ros_ignored(entry.path)} keeps it out of the ROS build")
-            elif is_dir and not (vendored is not None and vendored(Path(entry.path))):
-                stack.append((Path(entry.path), target))
-            elif is_file:
-                yield Path(entry.path), target
+            if is_file:
+                yield Path(entry.path), target or os.path.join(real, name)
+            elif is_dir:
+                child = _listed(entry.path)
+                marker = _ros_ignored(entry.path, child)
+                if marker is not None:
+                    notes.append(f"{Path(entry.path)}: skipped, its {marker} keeps it out "
+                                 "of the ROS build")
+                elif not (vendored is not None and vendored(entry.path)):
+                    stack.append((entry.path, target or os.path.join(real, name), child))
 
 
-def _ros_ignored(folder: str) -> str | None:
-    """The ROS ignore marker in ``folder`` (``CATKIN_IGNORE``...), or None."""
-    return next((m for m in ROS_IGNORE_MARKERS if os.path.lexists(os.path.join(folder, m))),
-                None)
+def _name(entry: os.DirEntry[str]) -> str:
+    return entry.name
+
+
+def _listed(folder: str) -> list[os.DirEntry[str]] | OSError:
+    """The entries of ``folder``, or why it cannot be listed."""
+    try:
+        with os.scandir(folder) as listing:
+            return list(listing)
+    except OSError as error:
+        return error
+
+
+def _ros_ignored(folder: str, listed: list[os.DirEntry[str]] | OSError) -> str | None:
+    """The ROS ignore marker in ``folder`` (``CATKIN_IGNORE``...), or None: read from its
+    listing, or asked of the system when it cannot be listed."""
+    if isinstance(listed, OSError):
+        return next((m for m in ROS_IGNORE_MARKERS
+                     if os.path.lexists(os.path.join(folder, m))), None)
+    names = {entry.name for entry in listed}
+    return next((m for m in ROS_IGNORE_MARKERS if m in names), None)

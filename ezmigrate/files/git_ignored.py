@@ -27,7 +27,6 @@ import tempfile
 import time
 import weakref
 from collections.abc import Callable
-from concurrent.futures import ThreadPoolExecutor
 from typing import TypeVar
 
 _T = TypeVar("_T")
@@ -140,6 +139,8 @@ def _each(ask: Callable[[_T], _R], items: list[_T]) -> list[_R]:
     worker is forked."""
     if len(items) <= 1:
         return [ask(item) for item in items]
+    from concurrent.futures import ThreadPoolExecutor  # (the shell asks, where there is one)
+
     with ThreadPoolExecutor(max_workers=min(8, len(items))) as threads:
         return list(threads.map(ask, items))
 

@@ -4,6 +4,7 @@ checks (``world_model`` has them)."""
 
 from __future__ import annotations
 
+import os
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -32,13 +33,13 @@ def scene_files(paths: Sequence[Path], exclude: Sequence[str] = ()) -> list[Path
         skip = excluded_under(given, exclude)
         vendored = vendored_skip(given)
         for folder, dirs, names in walk(given):
-            here = Path(folder)
             dirs[:] = sorted(d for d in dirs if d not in ALWAYS_EXCLUDED
-                             and not d.startswith(".") and not skip(here / d)
-                             and not vendored(here / d))
-            for name in sorted(names):
-                if name.endswith(SCENE_SUFFIX) and not skip(here / name):
-                    found.setdefault(str((here / name).resolve()), here / name)
+                             and not d.startswith(".") and not skip(Path(folder, d))
+                             and not vendored(os.path.join(folder, d)))
+            for name in sorted(n for n in names if n.endswith(SCENE_SUFFIX)):
+                scene = Path(folder, name)
+                if not skip(scene):
+                    found.setdefault(str(scene.resolve()), scene)
     return sorted(found.values())
 
 

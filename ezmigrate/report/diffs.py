@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import difflib
 import io
 import tokenize
 
@@ -26,6 +25,8 @@ def unified_diff(path: str, before: bytes, after: bytes, body: str | None = None
 def diff_body(before: bytes, after: bytes) -> str:
     """The hunks of ``unified_diff``, without the two lines naming the file: what a
     migration's worker can make without knowing how the file will be named."""
+    import difflib  # (the terminal's colours import this module for ``colour`` alone)
+
     old = decode(before).splitlines(keepends=True)
     new = decode(after).splitlines(keepends=True)
     out = []

@@ -116,7 +116,7 @@ def _owl_files(root: Path, skip: Callable[[Path], bool]) -> Iterable[tuple[Path,
                 continue
             kept.append(name)
             path = os.path.join(folder, name)
-            if inside or is_vendored(below):
+            if inside or is_vendored(path):
                 upstream.add(path)
             if in_owl or name == OWL_FOLDER:
                 owl.add(path)

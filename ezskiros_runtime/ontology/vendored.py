@@ -91,6 +91,15 @@ def repository_of(folder: Path, fallback: Path) -> Path:
     return git_top(folder) or fallback
 
 
+def _may_be_upstream(folder: str | os.PathLike[str]) -> bool:
+    """Whether ``upstream_package`` can name ``folder``: its name is one of SkiROS2's, or
+    it holds a ``package.xml`` (the question for the many folders that are neither, asked
+    of a string: no ``Path`` is made)."""
+    path = os.fspath(folder)
+    return os.path.basename(os.path.normpath(path)) in UPSTREAM_PACKAGES \
+        or os.path.isfile(os.path.join(path, PACKAGE_XML))
+
+
 class VendoredRule:
     """Answers "is this folder a vendored SkiROS2 package?" for the folders of one walk,
     deciding each repository once (a walk meets many packages of the same one) and each
@@ -101,12 +110,15 @@ class VendoredRule:
         self._own: dict[Path, bool] = {}
         self._answers: dict[str, str | None] = {}
 
-    def package(self, folder: Path) -> str | None:
+    def package(self, folder: str | os.PathLike[str]) -> str | None:
         """The SkiROS2 package ``folder`` is a vendored copy of, or None (not SkiROS2's,
-        or SkiROS2's in SkiROS2's own repository)."""
+        or SkiROS2's in SkiROS2's own repository). The walks ask it of every folder they
+        meet, by the path they have (a string, mostly): a ``Path`` is made for the first
+        question about a folder only."""
         key = os.path.abspath(folder)  # the walks name a folder relatively or absolutely
         if key not in self._answers:
-            self._answers[key] = self._package(folder)
+            self._answers[key] = self._package(Path(folder)) if _may_be_upstream(folder) \
+                else None
         return self._answers[key]
 
     def _package(self, folder: Path) -> str | None:
@@ -148,7 +160,7 @@ def rule_for(fallback: Path) -> VendoredRule:
     return _shared[key]
 
 
-def vendored_skip(fallback: Path) -> Callable[[Path], bool]:
+def vendored_skip(fallback: Path) -> Callable[[str | os.PathLike[str]], bool]:
     """A folder predicate for walks that only need the yes or no of ``VendoredRule``."""
     rule = rule_for(fallback)
     return lambda folder: rule.package(folder) is not None
