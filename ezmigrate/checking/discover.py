@@ -61,7 +61,7 @@ def _kept(run: CheckRun) -> None:
         return
     files += [(str(c.path), data) for c, data in library_candidates(list(settings.skill_libraries))]
     inputs = {
-        "ontology": run.index.fingerprint if run.index is not None else "",
+        "ontology": run.fingerprint(),
         "interpreter": run.pool.python or "", "timeout": run.pool.timeout,
         "single_valued": list(world.single_valued) if world.single_valued is not None
         else None, "start_scene": str(world.start_scene or ""),
@@ -74,8 +74,10 @@ def _kept(run: CheckRun) -> None:
     run.cutoff_key = run_key([(p, "" if p in python else d) for p, d in digests.items()],
                              {**inputs, "early_cutoff": True})
     hit = OutcomeCache(settings.cache_dir).get(run.kept_key)
-    if hit is None:  # (a run the cache answers whole never imports the cutoff's readers)
-        from .early_cutoff import recall
+    if hit is None:  # (a run the cache answers whole never imports the cutoff's readers,
+        from .early_cutoff import recall  # nor decodes the ontology)
+
+        run.ontology_index()
     outcome = CheckOutcome(files=hit["files"], skills=hit["skills"],
                            diagnostics=hit["diagnostics"], notes=hit["notes"]) \
         if hit is not None else recall(run, dict(files), digests)
@@ -95,6 +97,7 @@ def _prepare(run: CheckRun) -> None:
     from .reading_pool import ReadingPool
 
     settings, launch = run.settings, run.settings.launch
+    run.ontology_index()
     run.say(f"checking {len(run.candidates)} files")
     if settings.compounds:
         listed = launch.listed("skill_list") if launch is not None else None

@@ -21,6 +21,7 @@ from ..lint.scene_search import WorldRun
 if TYPE_CHECKING:
     from ezskiros_runtime.compound.library import SkillIndex
     from ezskiros_runtime.compound.model import CompoundModel
+    from ezskiros_runtime.ontology.config import SettledSource
     from ezskiros_runtime.ontology.index import OntologyIndex
 
     from ..cache.facts_cache import FactsCache
@@ -72,6 +73,9 @@ class CheckSettings:
     overlay: Mapping[Path, bytes] = field(default_factory=dict)
     """Text that stands for a file's bytes on disk, by resolved path: an editor's unsaved
     buffer, checked as typed and never written. A run with one is never kept."""
+    ontology: SettledSource | None = None
+    """The ontology of a run given none loaded: its index is loaded when the run must read
+    (``CheckRun.ontology_index``), so a run the cache answers decodes none."""
 
 
 @dataclass
@@ -166,6 +170,20 @@ class CheckRun:
         if self.settings.progress:
             sys.stderr.write(f"ezmigrate: {line}\n")
             sys.stderr.flush()
+
+    def fingerprint(self) -> str:
+        """The fingerprint of the run's ontology ("" without one), without loading it."""
+        if self.index is not None:
+            return self.index.fingerprint
+        return self.settings.ontology.fingerprint if self.settings.ontology is not None \
+            else ""
+
+    def ontology_index(self) -> OntologyIndex | None:
+        """The run's index, loaded (``CheckSettings.ontology``) when the run first needs
+        it: a run that reads."""
+        if self.index is None and self.settings.ontology is not None:
+            self.index = self.settings.ontology.index()
+        return self.index
 
     def loadable_data(self) -> list[bytes]:
         """The bytes the run read of each EzSkiROS file, in ``loadable``'s order."""

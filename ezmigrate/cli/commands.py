@@ -47,6 +47,8 @@ from .shared_options import (
 from .terminal import coloured_text, echo_diff, wants_colour
 
 if TYPE_CHECKING:
+    from ezskiros_runtime.ontology.config import SettledSource
+
     from ..checking.command import Subject
     from ..checking.run import CheckSettings
     from ..files.discover import Discovery
@@ -132,24 +134,33 @@ def _options(start: Path, cli: CommandLine, checked: Sequence[Path] = ()) -> Opt
 def _load_index(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
                 options: Options) -> tuple[Any, tuple[str, ...], str]:
     """The ontology index by the configuration rules, the files it came from, and a line
-    saying which files and why.
+    saying which files and why (``_settle_ontology``, loaded)."""
+    settled, described = _settle_ontology(ontology, start, roots, options)
+    return settled.index(), tuple(str(p) for p in settled.source.paths), described
+
+
+def _settle_ontology(ontology: tuple[Path, ...], start: Path, roots: Sequence[Path],
+                     options: Options) -> tuple[Any, str]:
+    """The ontology by the configuration rules, its files known to load
+    (``SettledSource``: the index decoded when asked for), and a line saying which files
+    and why.
 
     Says once on stderr which files are used and why (the report header says it again):
     with nothing configured, the owl/ folders of the repository of ``roots`` count (less
     what ``options.exclude`` names, relative to the project)."""
-    from ezskiros_runtime.ontology.config import load_source, resolve_ontology_paths
+    from ezskiros_runtime.ontology.config import resolve_ontology_paths, settle_source
     from ezskiros_runtime.ontology.errors import OntologyError
 
     try:
         skip = excluded_under(options.project or Path.cwd(), options.exclude)
         source = resolve_ontology_paths(list(ontology) or None, start=start, roots=roots,
                                         skip=skip)
-        index, source = load_source(source)
-        for warning in source.warnings():  # paths relative, as the line after it gives them
+        settled = settle_source(source)
+        for warning in settled.source.warnings():  # paths relative, as the next line's
             click.echo(f"ezmigrate: {printable(scrub(warning, report=False))}", err=True)
-        described = scrub(source.describe(), report=False)  # paths as other lines give them
+        described = scrub(settled.source.describe(), report=False)  # as other lines say
         click.echo(f"ezmigrate: {printable(described)}", err=True)
-        return index, tuple(str(p) for p in source.paths), described
+        return settled, described
     except OntologyError as error:
         click.echo(f"ezmigrate: error: {printable(str(error))}", err=True)
         sys.exit(EXIT_ERROR)
@@ -443,9 +454,11 @@ def check(**given: Any) -> None:
     selection = _selection(options)
     with shared_rules():  # the four searches of the repository share their answers
         discovered = checked_files(list(of.paths), options.exclude, args.include_vendored)
-        index, ontology_files, _ = _load_index(args.ontology, of.anchor, of.roots, options)
-        outcome = run_check(list(of.paths), index, options.pool(ontology_files),
-                            _check_settings(args, of, options, selection, discovered))
+        ontology, _ = _settle_ontology(args.ontology, of.anchor, of.roots, options)
+        outcome = run_check(list(of.paths), None,
+                            options.pool(tuple(str(p) for p in ontology.source.paths)),
+                            _check_settings(args, of, options, selection, discovered,
+                                            ontology))
     done = conclude(outcome, of, Conclusion(
         selection, "diff" if args.show_diff else "fix" if args.fix else None, args.quiet,
         args.exit_zero))
@@ -461,10 +474,12 @@ def check(**given: Any) -> None:
 
 
 def _check_settings(args: CheckArguments, of: Subject, options: Options,
-                    selection: Selection, discovered: Discovery) -> CheckSettings:
+                    selection: Selection, discovered: Discovery,
+                    ontology: SettledSource) -> CheckSettings:
     """The ``CheckSettings`` of a ``check`` run, the one place its command line, the
     resolved ``options`` and the codes of ``selection`` become them; says the launch file
-    on stderr (``_launch``). ``discovered``: the paths' files, already being found."""
+    on stderr (``_launch``). ``discovered``: the paths' files, already being found;
+    ``ontology``: loaded when the run must read."""
     from ..checking.pipeline import needs_trees
     from ..checking.run import CheckSettings
 
@@ -476,7 +491,7 @@ def _check_settings(args: CheckArguments, of: Subject, options: Options,
         world=_world_run(of.paths, options, args.scene),
         launch=_launch(of.anchor, args.launch_file, args.quiet),
         progress=sys.stderr.isatty() and not args.quiet,
-        discovered=discovered)
+        discovered=discovered, ontology=ontology)
 
 
 def _selection(options: Options) -> Any:

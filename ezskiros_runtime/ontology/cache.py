@@ -30,9 +30,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .errors import OntologyLoadError
-from .index import OntologyIndex
 
 if TYPE_CHECKING:
+    from .index import OntologyIndex
     from .parsing import OntologyFile
 
 CACHE_FORMAT_VERSION = "4"  # 2: sub-properties add their parents' domains and ranges;

@@ -33,8 +33,8 @@ from .errors import OntologyConfigError, OntologyLoadError
 if TYPE_CHECKING:
     from .index import OntologyIndex
 
-__all__ = ["ENV_VAR", "TOOL_TABLE", "OntologySource", "find_tool_config", "load_source",
-           "resolve_ontology_paths"]
+__all__ = ["ENV_VAR", "TOOL_TABLE", "OntologySource", "SettledSource", "find_tool_config",
+           "load_source", "resolve_ontology_paths", "settle_source"]
 
 ENV_VAR = "EZSKIROS_ONTOLOGY"
 
@@ -130,8 +130,8 @@ def resolve_ontology_paths(
                 where = f"[tool.{TOOL_TABLE}] ontology in {pyproject}"
                 return OntologySource(_existing(paths, where), f"pyproject:{pyproject}")
     if roots:
+        from .bundled import bundled_ontology_path
         from .discovery import discover, repository_root
-        from .index import bundled_ontology_path
 
         root = repository_root(roots)
         if root is not None:
@@ -143,7 +143,33 @@ def resolve_ontology_paths(
 
 
 def load_source(source: OntologySource) -> tuple[OntologyIndex, OntologySource]:
-    """The index of ``source``, and the source as loaded.
+    """The index of ``source``, and the source as loaded (``settle_source``, loaded)."""
+    settled = settle_source(source)
+    return settled.index(), settled.source
+
+
+@dataclass
+class SettledSource:
+    """An ontology source whose files are known to load (those that do not left out), with
+    the fingerprint of their index: what a run the outcome cache may answer needs, before
+    it knows whether it needs the index itself (``index``)."""
+
+    source: OntologySource
+    fingerprint: str
+    loaded: OntologyIndex | None = None
+
+    def index(self) -> OntologyIndex:
+        """The index, loaded once (from the cache, as a rule)."""
+        if self.loaded is None:
+            from .load import load_index
+
+            self.loaded = load_index(list(self.source.paths) or None)
+        return self.loaded
+
+
+def settle_source(source: OntologySource) -> SettledSource:
+    """Which of ``source``'s files load, and the fingerprint of their index; the index is
+    decoded only when it is asked for (``SettledSource.index``).
 
     A file that discovery found (an ``owl/`` folder nobody named) and that cannot be read
     or parsed, such as an empty ``lth.owl`` committed by mistake, is left out: the source
@@ -151,14 +177,14 @@ def load_source(source: OntologySource) -> tuple[OntologyIndex, OntologySource]:
     runs. A file someone named (``--ontology``, ``EZSKIROS_ONTOLOGY``, pyproject) is the
     user's choice: its error is raised (``OntologyLoadError``), as is any error of the core.
     """
-    from .load import load_index
+    from .load import probe_index
 
     paths: list[Path] = list(source.paths)
     broken: list[tuple[Path, str]] = []
     discovered = source.origin.startswith("discovered:")
     while True:
         try:
-            index = load_index(paths or None)
+            fingerprint, built = probe_index(paths or None)
         except OntologyLoadError as error:
             bad = _named_by(error, paths[1:]) if discovered else None
             if bad is None:
@@ -166,7 +192,8 @@ def load_source(source: OntologySource) -> tuple[OntologyIndex, OntologySource]:
             paths.remove(bad)
             broken.append((bad, str(error)))
             continue
-        return index, replace(source, paths=tuple(paths), broken=tuple(broken))
+        return SettledSource(replace(source, paths=tuple(paths), broken=tuple(broken)),
+                             fingerprint, built)
 
 
 def _named_by(error: OntologyLoadError, paths: Sequence[Path]) -> Path | None:

@@ -16,8 +16,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
-from pathlib import Path
 
+from .bundled import bundled_ontology_path
 from .closure import Hierarchy
 from .expressions import (
     ClassExpr,
@@ -32,14 +32,6 @@ from .naming import DEFAULT_PREFIX, OWL, local_name, looks_like_iri, split_iri
 OWL_THING = OWL + "Thing"
 PROPERTY_KINDS = ("object", "data", "annotation")
 NAME_KINDS = ("class", *PROPERTY_KINDS)
-
-_DATA_DIR = Path(__file__).resolve().parent / "data"
-
-
-def bundled_ontology_path() -> Path:
-    """The vocabulary shipped with the package, used when nothing else is configured."""
-    return _DATA_DIR / "skiros-core.ttl"
-
 
 @dataclass(frozen=True)
 class PropertyInfo:

@@ -10,8 +10,12 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from .index import OntologyIndex, bundled_ontology_path
+from .bundled import bundled_ontology_path
+
+if TYPE_CHECKING:
+    from .index import OntologyIndex
 
 
 def _as_path_list(
@@ -41,9 +45,36 @@ def load_index(
     ontologies (an empty `lth.owl`, which discovery then leaves out) does not import
     rdflib and parse on every run to hear it again.
     """
+    _, index = _load(paths, cache, cache_dir, decode=True)
+    assert index is not None  # (read from the cache, or built)
+    return index
+
+
+def probe_index(
+    paths: Sequence[str | os.PathLike[str]] | None = None,
+    *,
+    cache: bool = True,
+    cache_dir: Path | None = None,
+) -> tuple[str, OntologyIndex | None]:
+    """The fingerprint `load_index(paths)` would give its index, and the index when
+    finding out took building it; raises what `load_index` raises.
+
+    An index the cache holds is not decoded, nor its modules imported: a `check` the
+    outcome cache answers needs the fingerprint alone (`config.settle_source`)."""
+    return _load(paths, cache, cache_dir, decode=False)
+
+
+def _load(
+    paths: Sequence[str | os.PathLike[str]] | None,
+    cache: bool,
+    cache_dir: Path | None,
+    decode: bool,
+) -> tuple[str, OntologyIndex | None]:
+    """`load_index`, or (``decode`` False) `probe_index`."""
     # Imported here, not at module level: the index module stays cheap to import for code
     # that only handles indexes, and `from .x import y` avoids the package's __getattr__.
     from .cache import (
+        cache_path,
         default_cache_dir,
         read_cached_index,
         read_cached_refusal,
@@ -60,9 +91,12 @@ def load_index(
     fingerprint = content_fingerprint(files)
     directory = (cache_dir or default_cache_dir()) if cache else None
     if directory is not None:
-        cached = read_cached_index(directory, fingerprint)
+        if not decode and cache_path(directory, fingerprint).is_file():
+            return fingerprint, None  # (decoded, or rebuilt if unreadable, when loaded)
+        cached = read_cached_index(directory, fingerprint) if decode else None
         if cached is not None:
-            return cached if cached.sources == sources else cached.with_sources(sources)
+            return fingerprint, \
+                cached if cached.sources == sources else cached.with_sources(sources)
         refused = read_cached_refusal(directory, fingerprint, sources)
         if refused is not None:  # a file that did not parse does not parse now either
             raise refused
@@ -76,4 +110,4 @@ def load_index(
         raise
     if directory is not None:
         write_cached_index(directory, index)
-    return index
+    return fingerprint, index

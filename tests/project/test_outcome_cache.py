@@ -126,3 +126,64 @@ def test_the_package_manifests_are_part_of_the_key(tmp_path: Path) -> None:
     manifest.write_text(MANIFEST.format(tool="ament_cmake"), encoding="utf-8")
     assert not answered_whole()
     assert answered_whole()
+
+
+UNKNOWN_CLASS = '''\
+from skiros2_common.core.abstract_skill import SkillDescription
+from skiros2_common.core.params import ParamTypes
+from skiros2_common.core.world_element import Element
+
+
+class Fetch(SkillDescription):
+    def createDescription(self):
+        self.addParam("Thing", Element("skiros:Gadget"), ParamTypes.Required)
+'''
+
+GADGET = """\
+@prefix owl: <http://www.w3.org/2002/07/owl#> .
+@prefix rdfs: <http://www.w3.org/2000/01/rdf-schema#> .
+@prefix skiros: <http://rvmi.aau.dk/ontologies/skiros.owl#> .
+skiros:Gadget a owl:Class ; rdfs:subClassOf skiros:Product .
+"""
+
+# ``check`` as ``check_json`` runs it, saying on stderr's last line whether the run
+# imported the ontology's index (the module a run needs to decode it).
+INDEX_IMPORTED = """\
+import sys
+sys.argv = ["ezmigrate", *sys.argv[1:]]
+from ezmigrate.__main__ import main
+try:
+    main()
+finally:
+    sys.stderr.write(f"index imported: {'ezskiros_runtime.ontology.index' in sys.modules}\\n")
+"""
+
+
+def test_a_run_the_cache_answers_decodes_no_ontology(tmp_path: Path) -> None:
+    """The outcome's key takes the ontology's fingerprint, known from the files before the
+    index is decoded (``settle_source``): the index is loaded only by a run that reads. A
+    change of the repository's ``owl/`` files is a miss all the same."""
+    repo = tmp_path / "repo"
+    (repo / "pkg").mkdir(parents=True)
+    (repo / "pkg" / "skill.py").write_text(UNKNOWN_CLASS, encoding="utf-8")
+    subprocess.run(["git", "init", "-q", str(repo)], check=True)
+
+    def run() -> tuple[str, str, str]:
+        done = subprocess.run([sys.executable, "-c", INDEX_IMPORTED, "check", "--exit-zero",
+                               "--output-format", "json", "--cache-dir",
+                               str(tmp_path / "user-cache"), "."], cwd=repo,
+                              capture_output=True, text=True, timeout=600, check=True)
+        *said, imported = done.stderr.splitlines()
+        return done.stdout, "\n".join(said), imported
+
+    unknown, _, imported = run()
+    assert "EZ209" in unknown and imported == "index imported: True"
+    again = run()
+    assert again[0] == unknown and again[2] == "index imported: False"
+    (repo / "owl").mkdir()
+    (repo / "owl" / "lab.ttl").write_text(GADGET, encoding="utf-8")
+    known, said, imported = run()
+    assert "EZ209" not in known and imported == "index imported: True"
+    assert "owl/lab.ttl" in said
+    assert run() == (known, said, "index imported: False")
+    assert check_json(repo, "--no-cache").stdout == known
