@@ -20,7 +20,6 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .dtd_guard import refusal
 from .errors import OntologyLimitError, OntologyLoadError
 from .limits import MAX_BYTES, ParseBudget, refuse
 
@@ -204,6 +203,8 @@ def _limit_error_inside(error: BaseException) -> OntologyLimitError | None:
 
 def _refuse_unsafe_dtd(entry: OntologyFile) -> None:
     """Raise when the file's DTD may not reach rdflib (``dtd_guard`` says why and where)."""
+    from .dtd_guard import refusal  # (a load the cache answers parses nothing)
+
     found = refusal(entry.data)
     if found is not None and found.limit is not None:
         raise refuse(entry.path, found.reason, found.limit, line=found.line)
