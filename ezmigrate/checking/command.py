@@ -78,9 +78,8 @@ class Concluded:
 def conclude(outcome: CheckOutcome, of: Subject, how: Conclusion) -> Concluded:
     """Select, show, fix and judge the findings of ``outcome``."""
     done = Concluded([], messages=list(outcome.notes))
-    seen: dict[str, str] = {}  # each file's path as the working directory sees it, once
-    for path in {d.path for d in outcome.diagnostics}:
-        seen[path] = of.shown_as.get(path) or shown_path(path)
+    seen = {path: of.shown_as.get(path) or shown_path(path)  # as cwd sees it, once a file
+            for path in {d.path for d in outcome.diagnostics}}
     found = [replace(d, path=seen.get(d.path) or shown_path(d.path))
              for d in apply(outcome.diagnostics, outcome.sources, how.selection)]
     if how.fix is not None:

@@ -74,10 +74,8 @@ def _kept(run: CheckRun) -> None:
     run.cutoff_key = run_key([(p, "" if p in python else d) for p, d in digests.items()],
                              {**inputs, "early_cutoff": True})
     hit = OutcomeCache(settings.cache_dir).get(run.kept_key)
-    if hit is None:  # (a run the cache answers whole never imports the cutoff's readers,
-        from .early_cutoff import recall  # nor decodes the ontology)
-
-        run.ontology_index()
+    if hit is None:  # (a run the cache answers whole never imports the cutoff's readers)
+        from .early_cutoff import recall
     outcome = CheckOutcome(files=hit["files"], skills=hit["skills"],
                            diagnostics=hit["diagnostics"], notes=hit["notes"]) \
         if hit is not None else recall(run, dict(files), digests)
@@ -97,7 +95,7 @@ def _prepare(run: CheckRun) -> None:
     from .reading_pool import ReadingPool
 
     settings, launch = run.settings, run.settings.launch
-    run.ontology_index()
+    run.ontology_index()  # the reading pool's worker inherits it
     run.say(f"checking {len(run.candidates)} files")
     if settings.compounds:
         listed = launch.listed("skill_list") if launch is not None else None

@@ -109,12 +109,13 @@ def static_against(run: CheckRun) -> str | None:
     read before this (a changed file early cutoff reads) would be read against another."""
     if run.settings.trace:
         return None
-    if run.index is None:
+    index = run.ontology_index()
+    if index is None:
         return ""
     from ezskiros_runtime.ontology import use_ontology
 
-    use_ontology(run.index)
-    return run.index.fingerprint
+    use_ontology(index)
+    return index.fingerprint
 
 
 def never_parsed(data: bytes, verdict: bool | None, compounds: bool) -> bool:

@@ -60,21 +60,23 @@ class Claims:
 
     def front(self, kind: int) -> int | None:
         """The first task of ``kind`` nobody took, now taken; None when all are."""
-        with self._lock:
-            first, end = _COUNTERS.unpack_from(self._memory, _COUNTERS.size * kind)
-            if first >= end:
-                return None
-            _COUNTERS.pack_into(self._memory, _COUNTERS.size * kind, first + 1, end)
-            return int(first)
+        return self._take(kind, from_front=True)
 
     def back(self, kind: int) -> int | None:
         """The last task of ``kind`` nobody took, now taken; None when all are."""
+        return self._take(kind, from_front=False)
+
+    def _take(self, kind: int, from_front: bool) -> int | None:
         with self._lock:
             first, end = _COUNTERS.unpack_from(self._memory, _COUNTERS.size * kind)
             if first >= end:
                 return None
-            _COUNTERS.pack_into(self._memory, _COUNTERS.size * kind, first, end - 1)
-            return int(end - 1)
+            if from_front:
+                taken, first = first, first + 1
+            else:
+                taken = end = end - 1
+            _COUNTERS.pack_into(self._memory, _COUNTERS.size * kind, first, end)
+            return int(taken)
 
 
 class Channel:

@@ -303,16 +303,19 @@ def _walk(top: Path, roots: list[str], notes: list[str],
                 reason = "symlink loop" if error.errno == errno.ELOOP else error.strerror
                 notes.append(f"{Path(entry.path)}: {reason}, skipped")
                 continue
+            if not (is_file or is_dir):
+                continue
+            target = target or os.path.join(real, name)
             if is_file:
-                yield Path(entry.path), target or os.path.join(real, name)
-            elif is_dir:
-                child = _listed(entry.path)
-                marker = _ros_ignored(entry.path, child)
-                if marker is not None:
-                    notes.append(f"{Path(entry.path)}: skipped, its {marker} keeps it out "
-                                 "of the ROS build")
-                elif not (vendored is not None and vendored(entry.path)):
-                    stack.append((entry.path, target or os.path.join(real, name), child))
+                yield Path(entry.path), target
+                continue
+            child = _listed(entry.path)
+            marker = _ros_ignored(entry.path, child)
+            if marker is not None:
+                notes.append(f"{Path(entry.path)}: skipped, its {marker} keeps it out of the "
+                             "ROS build")
+            elif not (vendored is not None and vendored(entry.path)):
+                stack.append((entry.path, target, child))
 
 
 def _name(entry: os.DirEntry[str]) -> str:

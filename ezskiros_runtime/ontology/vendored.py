@@ -56,14 +56,17 @@ def git_top(folder: Path) -> Path | None:
                  if (candidate / ".git").exists()), None)
 
 
-def upstream_package(folder: Path) -> str | None:
+def upstream_package(folder: str | os.PathLike[str]) -> str | None:
     """The SkiROS2 package ``folder`` is (by its name, or the name its ``package.xml``
-    gives), or None."""
-    if folder.name in UPSTREAM_PACKAGES:
-        return folder.name
-    manifest = folder / PACKAGE_XML
-    name = package_name(manifest) if manifest.is_file() else None
-    return name if name in UPSTREAM_PACKAGES else None
+    gives), or None. The walks ask it of every folder they meet, by the path they have (a
+    string, mostly): a ``Path`` is made only for a manifest to parse."""
+    path = os.fspath(folder)
+    name = os.path.basename(os.path.normpath(path))
+    if name in UPSTREAM_PACKAGES:
+        return name
+    manifest = os.path.join(path, PACKAGE_XML)
+    given = package_name(Path(manifest)) if os.path.isfile(manifest) else None
+    return given if given in UPSTREAM_PACKAGES else None
 
 
 def holds_only_skiros2(root: Path) -> bool:
@@ -91,15 +94,6 @@ def repository_of(folder: Path, fallback: Path) -> Path:
     return git_top(folder) or fallback
 
 
-def _may_be_upstream(folder: str | os.PathLike[str]) -> bool:
-    """Whether ``upstream_package`` can name ``folder``: its name is one of SkiROS2's, or
-    it holds a ``package.xml`` (the question for the many folders that are neither, asked
-    of a string: no ``Path`` is made)."""
-    path = os.fspath(folder)
-    return os.path.basename(os.path.normpath(path)) in UPSTREAM_PACKAGES \
-        or os.path.isfile(os.path.join(path, PACKAGE_XML))
-
-
 class VendoredRule:
     """Answers "is this folder a vendored SkiROS2 package?" for the folders of one walk,
     deciding each repository once (a walk meets many packages of the same one) and each
@@ -112,20 +106,17 @@ class VendoredRule:
 
     def package(self, folder: str | os.PathLike[str]) -> str | None:
         """The SkiROS2 package ``folder`` is a vendored copy of, or None (not SkiROS2's,
-        or SkiROS2's in SkiROS2's own repository). The walks ask it of every folder they
-        meet, by the path they have (a string, mostly): a ``Path`` is made for the first
-        question about a folder only."""
+        or SkiROS2's in SkiROS2's own repository)."""
         key = os.path.abspath(folder)  # the walks name a folder relatively or absolutely
         if key not in self._answers:
-            self._answers[key] = self._package(Path(folder)) if _may_be_upstream(folder) \
-                else None
+            self._answers[key] = self._package(folder)
         return self._answers[key]
 
-    def _package(self, folder: Path) -> str | None:
+    def _package(self, folder: str | os.PathLike[str]) -> str | None:
         package = upstream_package(folder)
         if package is None:
             return None
-        repository = repository_of(folder.resolve(), self._fallback)
+        repository = repository_of(Path(folder).resolve(), self._fallback)
         if repository not in self._own:
             self._own[repository] = holds_only_skiros2(repository)
         return None if self._own[repository] else package
